@@ -1,0 +1,159 @@
+package glint.app;
+
+import glint.config.Config;
+import glint.config.ConfigLoader;
+import glint.config.Shading;
+import glint.input.InputException;
+import glint.input.Suggestions;
+import java.io.PrintWriter;
+import java.nio.file.Files;
+import java.nio.file.Path;
+import java.util.List;
+import java.util.concurrent.Callable;
+import picocli.CommandLine;
+import picocli.CommandLine.Command;
+import picocli.CommandLine.Option;
+
+/** The command line of SPEC section 6: parses arguments, loads the config, hands over to a mode. */
+@Command(name = "glint", mixinStandardHelpOptions = true, version = "Glint 0.1.0",
+        description = "Interactive Whitted ray tracer for spheres and planes.%n"
+                + "Without --output or --bench, opens the window on the scene.",
+        sortOptions = false)
+public final class Main implements Callable<Integer> {
+
+    public static final int OK = 0;
+    public static final int FAILURE = 1;
+    public static final int BAD_INPUT = 2;
+
+    @Option(names = "--scene", paramLabel = "FILE", description = "scene file (default: the config's 'scene')")
+    Path scene;
+
+    @Option(names = "--config", paramLabel = "FILE", description = "config file (default: ./config.properties)")
+    Path config;
+
+    @Option(names = "--output", paramLabel = "FILE", description = "render one frame headless to FILE.png or FILE.pfm")
+    Path output;
+
+    @Option(names = "--width", paramLabel = "W", description = "image width in pixels")
+    Integer width;
+
+    @Option(names = "--height", paramLabel = "H", description = "image height in pixels")
+    Integer height;
+
+    @Option(names = "--spp", paramLabel = "N", description = "samples per pixel: 1, 4, 9, 16, ...")
+    Integer spp;
+
+    @Option(names = "--threads", paramLabel = "T", description = "render threads, 0 = one per core")
+    Integer threads;
+
+    @Option(names = "--depth", paramLabel = "D", description = "recursion_max: surface hits along a path")
+    Integer depth;
+
+    @Option(names = "--shading", paramLabel = "MODEL", description = "cook-torrance or phong")
+    String shading;
+
+    @Option(names = "--bench", paramLabel = "N", description = "render N frames of the still camera headless and time them")
+    Integer bench;
+
+    public static void main(String[] args) {
+        System.exit(run(args, new PrintWriter(System.out, true), new PrintWriter(System.err, true)));
+    }
+
+    /** Runs the program and returns its exit status; nothing is written but to out and err. */
+    public static int run(String[] args, PrintWriter out, PrintWriter err) {
+        CommandLine cli = new CommandLine(new Main());
+        cli.setOut(out);
+        cli.setErr(err);
+        cli.setParameterExceptionHandler((e, a) -> {
+            err.println("glint: " + e.getMessage());
+            err.println("Try 'java -jar target/glint.jar --help' for the options.");
+            return BAD_INPUT;
+        });
+        cli.setExecutionExceptionHandler((e, c, p) -> {
+            if (e instanceof InputException bad) {
+                err.println(bad.getMessage());
+                return BAD_INPUT;
+            }
+            err.println("glint: " + e);
+            return FAILURE;
+        });
+        return cli.execute(args);
+    }
+
+    @Override
+    public Integer call() throws Exception {
+        Config settings = overrides(loadConfig());
+        Path scenePath = scene != null ? scene : sceneFromConfig(settings);
+        if (output != null && bench != null) {
+            throw new InputException("arguments", 0, 0, "--output and --bench cannot be used together");
+        }
+        if (output != null) {
+            return Headless.renderStill(scenePath, settings, output);
+        }
+        if (bench != null) {
+            if (bench < 1) {
+                throw new InputException("arguments", 0, 0, "--bench: expected a number of frames >= 1, got " + bench);
+            }
+            return Headless.bench(scenePath, settings, bench);
+        }
+        return WindowLauncher.open(scenePath, settings);
+    }
+
+    private Config loadConfig() throws InputException {
+        if (config != null) {
+            return ConfigLoader.load(config);
+        }
+        Path fallback = Path.of("config.properties");
+        return Files.exists(fallback) ? ConfigLoader.load(fallback) : Config.defaults();
+    }
+
+    /** The config's scene, relative to the folder of the config file. */
+    private Path sceneFromConfig(Config settings) {
+        Path configured = Path.of(settings.scene());
+        if (configured.isAbsolute() || config == null || config.getParent() == null) {
+            return configured;
+        }
+        return config.getParent().resolve(configured);
+    }
+
+    private Config overrides(Config c) throws InputException {
+        if (width != null || height != null) {
+            int w = width != null ? width : c.displayWidth();
+            int h = height != null ? height : c.displayHeight();
+            checkRange("--width", w, 1, 16384);
+            checkRange("--height", h, 1, 16384);
+            c = c.withSize(w, h);
+        }
+        if (spp != null) {
+            if (!Config.isPerfectSquare(spp) || spp > 4096) {
+                throw new InputException("arguments", 0, 0,
+                        "--spp: expected a perfect square from 1 to 4096 (1, 4, 9, 16, ...), got " + spp);
+            }
+            c = c.withSamples(spp);
+        }
+        if (threads != null) {
+            checkRange("--threads", threads, 0, 1024);
+            c = c.withThreads(threads);
+        }
+        if (depth != null) {
+            checkRange("--depth", depth, 1, 64);
+            c = c.withRecursionMax(depth);
+        }
+        if (shading != null) {
+            Shading model = Shading.byKey(shading);
+            if (model == null) {
+                throw new InputException("arguments", 0, 0, "--shading: unknown model '" + shading + "'"
+                        + Suggestions.hint(shading, List.of("cook-torrance", "phong")));
+            }
+            c = c.withShading(model);
+        }
+        return c;
+    }
+
+    private static void checkRange(String option, int value, int min, int max) throws InputException {
+        if (value < min || value > max) {
+            throw new InputException("arguments", 0, 0,
+                    option + ": expected a whole number from " + min + " to " + max + ", got " + value);
+        }
+    }
+}

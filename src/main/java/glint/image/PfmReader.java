@@ -1,0 +1,48 @@
+package glint.image;
+
+import glint.render.FrameBuffer;
+import java.io.IOException;
+import java.nio.ByteBuffer;
+import java.nio.ByteOrder;
+import java.nio.file.Files;
+import java.nio.file.Path;
+
+/** Reads a colour Portable Float Map ("PF") into a frame buffer (rows top to bottom). */
+public final class PfmReader {
+
+    private PfmReader() {
+    }
+
+    public static FrameBuffer read(Path path) throws IOException {
+        byte[] bytes = Files.readAllBytes(path);
+        int[] pos = {0};
+        String magic = token(bytes, pos);
+        if (!magic.equals("PF")) {
+            throw new IOException(path + ": not a colour PFM (magic '" + magic + "')");
+        }
+        int w = Integer.parseInt(token(bytes, pos));
+        int h = Integer.parseInt(token(bytes, pos));
+        double scale = Double.parseDouble(token(bytes, pos));
+        pos[0]++; // the single whitespace after the scale
+        ByteBuffer body = ByteBuffer.wrap(bytes, pos[0], bytes.length - pos[0])
+                .order(scale < 0 ? ByteOrder.LITTLE_ENDIAN : ByteOrder.BIG_ENDIAN);
+        FrameBuffer frame = new FrameBuffer(w, h);
+        for (int y = h - 1; y >= 0; y--) {
+            for (int x = 0; x < w; x++) {
+                frame.set(x, y, body.getFloat(), body.getFloat(), body.getFloat());
+            }
+        }
+        return frame;
+    }
+
+    private static String token(byte[] bytes, int[] pos) {
+        while (Character.isWhitespace(bytes[pos[0]])) {
+            pos[0]++;
+        }
+        int start = pos[0];
+        while (!Character.isWhitespace(bytes[pos[0]])) {
+            pos[0]++;
+        }
+        return new String(bytes, start, pos[0] - start, java.nio.charset.StandardCharsets.US_ASCII);
+    }
+}

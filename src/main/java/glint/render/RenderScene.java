@@ -1,0 +1,184 @@
+package glint.render;
+
+import glint.math.Quaternion;
+import glint.math.Vector3d;
+import glint.scene.Camera;
+import glint.scene.Light;
+import glint.scene.Material;
+import glint.scene.Plane;
+import glint.scene.Scene;
+import glint.scene.SceneObject;
+import glint.scene.Sphere;
+import java.util.ArrayList;
+import java.util.List;
+
+/**
+ * A scene compiled for tracing: shapes, materials and lights in flat primitive arrays (world
+ * space), the camera as a basis, and the settings. Immutable after construction; shared by all
+ * workers.
+ */
+public final class RenderScene {
+
+    static final int MATTE = 0;
+    static final int METAL = 1;
+    static final int GLASS = 2;
+
+    /** Smallest GGX alpha used for a highlight; keeps D(h) finite as roughness -> 0. */
+    static final double MIN_ALPHA = 1e-4;
+
+    final RenderSettings settings;
+
+    // spheres: centre x, y, z and radius, 4 doubles each
+    final int sphereCount;
+    final double[] spheres;
+    final int[] sphereMaterial;
+
+    // planes: unit normal x, y, z and offset n.p, 4 doubles each
+    final int planeCount;
+    final double[] planes;
+    final int[] planeMaterial;
+
+    // materials, indexed by material id
+    final int[] materialType;
+    final double[] materialColor; // 3 per material, linear RGB
+    final double[] kd;
+    final double[] ks;
+    final double[] kt;
+    final double[] shininess;
+    final double[] ior;
+    final double[] alpha; // roughness^2; 0 = no highlight
+
+    // lights: for a point light its position, for a directional one the unit direction towards it
+    final int lightCount;
+    final boolean[] lightIsPoint;
+    final double[] lightVector; // 3 per light
+    final double[] lightPower;  // 3 per light: color x intensity
+
+    final double backgroundR, backgroundG, backgroundB;
+    final double ambientR, ambientG, ambientB;
+
+    // camera basis, world space
+    final double eyeX, eyeY, eyeZ;
+    final double rightX, rightY, rightZ;
+    final double upX, upY, upZ;
+    final double forwardX, forwardY, forwardZ;
+    final double tanHalfFov;
+
+    private RenderScene(Scene scene, RenderSettings settings) {
+        this.settings = settings;
+        List<Material> materials = new ArrayList<>();
+        List<SceneObject> sphereObjects = new ArrayList<>();
+        List<SceneObject> planeObjects = new ArrayList<>();
+        for (SceneObject o : scene.objects()) {
+            (o.shape() instanceof Sphere ? sphereObjects : planeObjects).add(o);
+        }
+        sphereCount = sphereObjects.size();
+        spheres = new double[4 * sphereCount];
+        sphereMaterial = new int[sphereCount];
+        for (int i = 0; i < sphereCount; i++) {
+            Sphere s = (Sphere) sphereObjects.get(i).shape();
+            put4(spheres, i, s.center(), s.radius());
+            sphereMaterial[i] = indexOf(materials, sphereObjects.get(i).material());
+        }
+        planeCount = planeObjects.size();
+        planes = new double[4 * planeCount];
+        planeMaterial = new int[planeCount];
+        for (int i = 0; i < planeCount; i++) {
+            Plane p = (Plane) planeObjects.get(i).shape();
+            put4(planes, i, p.normal(), p.normal().dot(p.point()));
+            planeMaterial[i] = indexOf(materials, planeObjects.get(i).material());
+        }
+
+        int m = materials.size();
+        materialType = new int[m];
+        materialColor = new double[3 * m];
+        kd = new double[m];
+        ks = new double[m];
+        kt = new double[m];
+        shininess = new double[m];
+        ior = new double[m];
+        alpha = new double[m];
+        for (int i = 0; i < m; i++) {
+            Material mat = materials.get(i);
+            materialType[i] = mat.type().ordinal();
+            put3(materialColor, i, mat.color());
+            kd[i] = mat.kd();
+            ks[i] = mat.ks();
+            kt[i] = mat.kt();
+            shininess[i] = mat.shininess();
+            ior[i] = mat.ior();
+            double a = mat.roughness() * mat.roughness();
+            alpha[i] = mat.roughness() > 0 ? Math.max(a, MIN_ALPHA) : 0;
+        }
+
+        lightCount = scene.lights().size();
+        lightIsPoint = new boolean[lightCount];
+        lightVector = new double[3 * lightCount];
+        lightPower = new double[3 * lightCount];
+        for (int i = 0; i < lightCount; i++) {
+            Light light = scene.lights().get(i);
+            if (light instanceof Light.Point p) {
+                lightIsPoint[i] = true;
+                put3(lightVector, i, p.position());
+            } else {
+                put3(lightVector, i, ((Light.Directional) light).direction().scale(-1));
+            }
+            put3(lightPower, i, light.color().scale(light.intensity()));
+        }
+
+        backgroundR = scene.background().x();
+        backgroundG = scene.background().y();
+        backgroundB = scene.background().z();
+        ambientR = scene.ambient().x();
+        ambientG = scene.ambient().y();
+        ambientB = scene.ambient().z();
+
+        Camera camera = scene.camera();
+        Quaternion q = camera.orientation();
+        Vector3d right = q.right(), up = q.up(), forward = q.forward();
+        eyeX = camera.position().x();
+        eyeY = camera.position().y();
+        eyeZ = camera.position().z();
+        rightX = right.x();
+        rightY = right.y();
+        rightZ = right.z();
+        upX = up.x();
+        upY = up.y();
+        upZ = up.z();
+        forwardX = forward.x();
+        forwardY = forward.y();
+        forwardZ = forward.z();
+        tanHalfFov = Math.tan(Math.toRadians(camera.fovDegrees()) / 2);
+    }
+
+    /** Compiles an immutable scene with the given settings. */
+    public static RenderScene compile(Scene scene, RenderSettings settings) {
+        return new RenderScene(scene, settings);
+    }
+
+    public RenderSettings settings() {
+        return settings;
+    }
+
+    private static int indexOf(List<Material> materials, Material material) {
+        int i = materials.indexOf(material);
+        if (i >= 0) {
+            return i;
+        }
+        materials.add(material);
+        return materials.size() - 1;
+    }
+
+    private static void put3(double[] array, int index, Vector3d v) {
+        array[3 * index] = v.x();
+        array[3 * index + 1] = v.y();
+        array[3 * index + 2] = v.z();
+    }
+
+    private static void put4(double[] array, int index, Vector3d v, double w) {
+        array[4 * index] = v.x();
+        array[4 * index + 1] = v.y();
+        array[4 * index + 2] = v.z();
+        array[4 * index + 3] = w;
+    }
+}

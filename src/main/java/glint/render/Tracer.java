@@ -1,0 +1,104 @@
+package glint.render;
+
+import java.util.concurrent.ExecutorService;
+import java.util.concurrent.Executors;
+import java.util.concurrent.Phaser;
+import java.util.concurrent.ThreadFactory;
+import java.util.concurrent.atomic.AtomicInteger;
+import java.util.concurrent.atomic.AtomicReference;
+
+/**
+ * Renders frames with a persistent pool of {@link TracerWorker}s. A frame is split into
+ * divider x divider tiles that the workers take in turn; every pixel is computed from its own
+ * coordinates alone, so the image does not depend on the thread or tile count.
+ */
+public final class Tracer implements AutoCloseable {
+
+    private final int threads;
+    private final TracerWorker[] workers;
+    private final ExecutorService pool;
+    private final AtomicInteger nextTile = new AtomicInteger();
+    private final AtomicReference<Throwable> failure = new AtomicReference<>();
+
+    // the frame being rendered; written before the workers start, read by them
+    private volatile RenderScene scene;
+    private volatile FrameBuffer frame;
+    private volatile int samples;
+    private volatile int frameIndex;
+    private volatile int divider;
+
+    public Tracer(int threads) {
+        if (threads < 1) {
+            throw new IllegalArgumentException("threads must be >= 1, got " + threads);
+        }
+        this.threads = threads;
+        this.workers = new TracerWorker[threads];
+        for (int i = 0; i < threads; i++) {
+            workers[i] = new TracerWorker();
+        }
+        AtomicInteger count = new AtomicInteger();
+        ThreadFactory factory = r -> {
+            Thread t = new Thread(r, "glint-tracer-" + count.incrementAndGet());
+            t.setDaemon(true);
+            return t;
+        };
+        this.pool = Executors.newFixedThreadPool(threads, factory);
+    }
+
+    public int threads() {
+        return threads;
+    }
+
+    /**
+     * Renders one frame into {@code target} and returns when every pixel is written.
+     *
+     * @param samples    samples per pixel, a perfect square
+     * @param frameIndex seeds the sample jitter (the same index gives the same image)
+     * @param divider    the frame is split into divider x divider tiles
+     */
+    public void render(RenderScene renderScene, FrameBuffer target, int samples, int frameIndex, int divider) {
+        this.scene = renderScene;
+        this.frame = target;
+        this.samples = samples;
+        this.frameIndex = frameIndex;
+        this.divider = Math.max(1, Math.min(divider, Math.min(target.width(), target.height())));
+        nextTile.set(0);
+        failure.set(null);
+        Phaser done = new Phaser(threads + 1);
+        for (TracerWorker worker : workers) {
+            pool.execute(() -> runWorker(worker, done));
+        }
+        done.arriveAndAwaitAdvance();
+        Throwable error = failure.get();
+        if (error != null) {
+            throw new RenderException("a render worker failed: " + error, error);
+        }
+    }
+
+    private void runWorker(TracerWorker worker, Phaser done) {
+        try {
+            int tiles = divider * divider;
+            for (int tile = nextTile.getAndIncrement(); tile < tiles; tile = nextTile.getAndIncrement()) {
+                renderTile(worker, tile);
+            }
+        } catch (Throwable t) {
+            failure.compareAndSet(null, t);
+        } finally {
+            done.arrive();
+        }
+    }
+
+    private void renderTile(TracerWorker worker, int tile) {
+        FrameBuffer f = frame;
+        int d = divider;
+        int column = tile % d, row = tile / d;
+        int x0 = column * f.width() / d, x1 = (column + 1) * f.width() / d;
+        int y0 = row * f.height() / d, y1 = (row + 1) * f.height() / d;
+        worker.renderTile(scene, f, samples, frameIndex, x0, y0, x1, y1);
+    }
+
+    @Override
+    public void close() {
+        pool.shutdownNow();
+    }
+}

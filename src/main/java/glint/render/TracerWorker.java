@@ -1,0 +1,428 @@
+package glint.render;
+
+import glint.config.Shading;
+
+/**
+ * One render thread's tracer and scratch state: traces the pixels of the tiles it is handed.
+ * Everything it writes between calls lives in its own fields, so the per-pixel path allocates
+ * nothing. All vectors are world space; directions are unit length.
+ */
+final class TracerWorker {
+
+    private static final double INV_PI = 1 / Math.PI;
+
+    private RenderScene scene;
+
+    // nearest hit of the last ray
+    private double hitT;
+    private int hitSphere;
+    private int hitPlane;
+
+    // radiance returned by trace()
+    private double outR, outG, outB;
+
+    // light sample of lightAt(): unit direction to the light, irradiance on a facing surface, distance
+    private double toLightX, toLightY, toLightZ;
+    private double irradianceR, irradianceG, irradianceB;
+    private double lightDistance;
+
+    /** Renders pixels [x0, x1) x [y0, y1) of the frame with {@code samples} samples each. */
+    void renderTile(RenderScene renderScene, FrameBuffer frame, int samples, int frameIndex,
+                    int x0, int y0, int x1, int y1) {
+        this.scene = renderScene;
+        int side = (int) Math.round(Math.sqrt(samples));
+        for (int y = y0; y < y1; y++) {
+            for (int x = x0; x < x1; x++) {
+                renderPixel(frame, x, y, side, frameIndex);
+            }
+        }
+    }
+
+    private void renderPixel(FrameBuffer frame, int x, int y, int side, int frameIndex) {
+        if (side == 1) {
+            cameraSample(frame, x + 0.5, y + 0.5);
+            frame.set(x, y, outR, outG, outB);
+            return;
+        }
+        double sumR = 0, sumG = 0, sumB = 0;
+        int pixelIndex = y * frame.width() + x;
+        for (int cellY = 0; cellY < side; cellY++) {
+            for (int cellX = 0; cellX < side; cellX++) {
+                long h = SamplePattern.hash(pixelIndex, frameIndex, cellY * side + cellX);
+                cameraSample(frame, x + (cellX + SamplePattern.jitterU(h)) / side,
+                        y + (cellY + SamplePattern.jitterV(h)) / side);
+                sumR += outR;
+                sumG += outG;
+                sumB += outB;
+            }
+        }
+        double inv = 1.0 / (side * side);
+        frame.set(x, y, sumR * inv, sumG * inv, sumB * inv);
+    }
+
+    /** Traces the camera ray through image point (px, py) in pixels from the top-left corner. */
+    private void cameraSample(FrameBuffer frame, double px, double py) {
+        RenderScene s = scene;
+        double screenX = (2 * px / frame.width() - 1) * s.tanHalfFov;
+        double screenY = (1 - 2 * py / frame.height()) * s.tanHalfFov * frame.height() / frame.width();
+        double dx = s.forwardX + screenX * s.rightX + screenY * s.upX;
+        double dy = s.forwardY + screenX * s.rightY + screenY * s.upY;
+        double dz = s.forwardZ + screenX * s.rightZ + screenY * s.upZ;
+        double inv = 1 / Math.sqrt(dx * dx + dy * dy + dz * dz);
+        trace(s.eyeX, s.eyeY, s.eyeZ, dx * inv, dy * inv, dz * inv, s.settings.recursionMax(), 1);
+    }
+
+    /**
+     * Radiance arriving at the ray's origin along -d, into outR/G/B. {@code hitsLeft} is how many
+     * surface hits this path may still shade; {@code weight} is the path's throughput so far.
+     */
+    void trace(double ox, double oy, double oz, double dx, double dy, double dz, int hitsLeft, double weight) {
+        RenderScene s = scene;
+        if (!nearest(ox, oy, oz, dx, dy, dz)) {
+            outR = s.backgroundR;
+            outG = s.backgroundG;
+            outB = s.backgroundB;
+            return;
+        }
+        double t = hitT;
+        double px = ox + t * dx, py = oy + t * dy, pz = oz + t * dz;
+        double nx, ny, nz;
+        int material;
+        if (hitSphere >= 0) {
+            int i = 4 * hitSphere;
+            double cx = s.spheres[i], cy = s.spheres[i + 1], cz = s.spheres[i + 2], radius = s.spheres[i + 3];
+            double ex = px - cx, ey = py - cy, ez = pz - cz;
+            double inv = 1 / Math.sqrt(ex * ex + ey * ey + ez * ez);
+            nx = ex * inv;
+            ny = ey * inv;
+            nz = ez * inv;
+            // re-project onto the surface: removes the error t carries into p
+            px = cx + radius * nx;
+            py = cy + radius * ny;
+            pz = cz + radius * nz;
+            material = s.sphereMaterial[hitSphere];
+        } else {
+            int i = 4 * hitPlane;
+            nx = s.planes[i];
+            ny = s.planes[i + 1];
+            nz = s.planes[i + 2];
+            double off = nx * px + ny * py + nz * pz - s.planes[i + 3];
+            px -= off * nx;
+            py -= off * ny;
+            pz -= off * nz;
+            material = s.planeMaterial[hitPlane];
+        }
+        double offset = s.settings.epsilon() * Math.max(1, Math.sqrt(px * px + py * py + pz * pz));
+        double cosIncident = -(dx * nx + dy * ny + dz * nz); // > 0 when the ray meets the front side
+        boolean entering = cosIncident >= 0;
+        if (!entering) {
+            // from here on n faces the side the ray came from
+            nx = -nx;
+            ny = -ny;
+            nz = -nz;
+            cosIncident = -cosIncident;
+        }
+        if (s.settings.shading() == Shading.PHONG) {
+            shadePhong(material, px, py, pz, nx, ny, nz, dx, dy, dz, cosIncident, entering, offset, hitsLeft, weight);
+            return;
+        }
+        switch (s.materialType[material]) {
+            case RenderScene.MATTE -> shadeMatte(material, px, py, pz, nx, ny, nz, offset);
+            case RenderScene.METAL -> shadeMetal(material, px, py, pz, nx, ny, nz, dx, dy, dz, cosIncident, offset,
+                    hitsLeft, weight);
+            default -> shadeGlass(material, px, py, pz, nx, ny, nz, dx, dy, dz, cosIncident, entering, offset,
+                    hitsLeft, weight);
+        }
+    }
+
+    // ---- cook-torrance ------------------------------------------------------------------------
+
+    /** Lambert: color / pi x E x cos for each unshadowed light, plus ambient x color. */
+    private void shadeMatte(int m, double px, double py, double pz, double nx, double ny, double nz, double offset) {
+        RenderScene s = scene;
+        double sumR = 0, sumG = 0, sumB = 0;
+        double ox = px + offset * nx, oy = py + offset * ny, oz = pz + offset * nz;
+        for (int light = 0; light < s.lightCount; light++) {
+            double cosLight = lightAt(light, ox, oy, oz, nx, ny, nz);
+            if (cosLight > 0 && !occluded(ox, oy, oz, toLightX, toLightY, toLightZ, lightDistance)) {
+                sumR += irradianceR * cosLight;
+                sumG += irradianceG * cosLight;
+                sumB += irradianceB * cosLight;
+            }
+        }
+        int c = 3 * m;
+        outR = s.materialColor[c] * (sumR * INV_PI + s.ambientR);
+        outG = s.materialColor[c + 1] * (sumG * INV_PI + s.ambientG);
+        outB = s.materialColor[c + 2] * (sumB * INV_PI + s.ambientB);
+    }
+
+    /** A mirror weighted by Schlick's Fresnel (F0 = color), plus a GGX highlight when rough. */
+    private void shadeMetal(int m, double px, double py, double pz, double nx, double ny, double nz,
+                            double dx, double dy, double dz, double cosView, double offset, int hitsLeft, double weight) {
+        RenderScene s = scene;
+        int c = 3 * m;
+        double f0R = s.materialColor[c], f0G = s.materialColor[c + 1], f0B = s.materialColor[c + 2];
+        double ox = px + offset * nx, oy = py + offset * ny, oz = pz + offset * nz;
+        double sumR = 0, sumG = 0, sumB = 0;
+        double alpha = s.alpha[m];
+        if (alpha > 0 && cosView > 0) {
+            for (int light = 0; light < s.lightCount; light++) {
+                double cosLight = lightAt(light, ox, oy, oz, nx, ny, nz);
+                if (cosLight <= 0 || occluded(ox, oy, oz, toLightX, toLightY, toLightZ, lightDistance)) {
+                    continue;
+                }
+                double hx = toLightX - dx, hy = toLightY - dy, hz = toLightZ - dz;
+                double inv = 1 / Math.sqrt(hx * hx + hy * hy + hz * hz);
+                double cosHalf = (hx * nx + hy * ny + hz * nz) * inv;
+                double cosViewHalf = Math.max(0, -(hx * dx + hy * dy + hz * dz) * inv);
+                double specular = Optics.ggx(cosHalf, alpha) * Optics.smithVisibility(cosLight, cosView, alpha) * cosLight;
+                sumR += specular * Optics.schlick(f0R, cosViewHalf) * irradianceR;
+                sumG += specular * Optics.schlick(f0G, cosViewHalf) * irradianceG;
+                sumB += specular * Optics.schlick(f0B, cosViewHalf) * irradianceB;
+            }
+        }
+        if (hitsLeft > 1) {
+            double fR = Optics.schlick(f0R, cosView), fG = Optics.schlick(f0G, cosView), fB = Optics.schlick(f0B, cosView);
+            double childWeight = weight * Math.max(fR, Math.max(fG, fB));
+            if (childWeight >= s.settings.minWeight()) {
+                double k = 2 * cosView;
+                trace(ox, oy, oz, dx + k * nx, dy + k * ny, dz + k * nz, hitsLeft - 1, childWeight);
+                sumR += fR * outR;
+                sumG += fG * outG;
+                sumB += fB * outB;
+            }
+        }
+        outR = sumR;
+        outG = sumG;
+        outB = sumB;
+    }
+
+    /** A smooth dielectric: reflection and refraction weighted by the exact Fresnel equations. */
+    private void shadeGlass(int m, double px, double py, double pz, double nx, double ny, double nz,
+                            double dx, double dy, double dz, double cosIncident, boolean entering, double offset,
+                            int hitsLeft, double weight) {
+        RenderScene s = scene;
+        double sumR = 0, sumG = 0, sumB = 0;
+        if (hitsLeft > 1) {
+            double eta = entering ? 1 / s.ior[m] : s.ior[m];
+            double reflectance = Optics.fresnelDielectric(cosIncident, eta);
+            double minWeight = s.settings.minWeight();
+            if (weight * reflectance >= minWeight) {
+                double k = 2 * cosIncident;
+                trace(px + offset * nx, py + offset * ny, pz + offset * nz,
+                        dx + k * nx, dy + k * ny, dz + k * nz, hitsLeft - 1, weight * reflectance);
+                sumR += reflectance * outR;
+                sumG += reflectance * outG;
+                sumB += reflectance * outB;
+            }
+            int c = 3 * m;
+            double tR = (1 - reflectance) * s.materialColor[c];
+            double tG = (1 - reflectance) * s.materialColor[c + 1];
+            double tB = (1 - reflectance) * s.materialColor[c + 2];
+            double childWeight = weight * Math.max(tR, Math.max(tG, tB));
+            if (reflectance < 1 && childWeight >= minWeight) {
+                traceRefracted(px, py, pz, nx, ny, nz, dx, dy, dz, cosIncident, eta, offset, hitsLeft, childWeight);
+                sumR += tR * outR;
+                sumG += tG * outG;
+                sumB += tB * outB;
+            }
+        }
+        outR = sumR;
+        outG = sumG;
+        outB = sumB;
+    }
+
+    /**
+     * Traces the refracted ray through the boundary (n faces the incident side, eta = n_incident /
+     * n_transmitted, below the critical angle); its origin is offset to the far side.
+     */
+    private void traceRefracted(double px, double py, double pz, double nx, double ny, double nz,
+                                double dx, double dy, double dz, double cosIncident, double eta, double offset,
+                                int hitsLeft, double weight) {
+        double sin2Transmitted = eta * eta * Math.max(0, 1 - cosIncident * cosIncident);
+        double cosTransmitted = Math.sqrt(Math.max(0, 1 - sin2Transmitted));
+        double k = eta * cosIncident - cosTransmitted;
+        double tx = eta * dx + k * nx, ty = eta * dy + k * ny, tz = eta * dz + k * nz;
+        double inv = 1 / Math.sqrt(tx * tx + ty * ty + tz * tz);
+        trace(px - offset * nx, py - offset * ny, pz - offset * nz, tx * inv, ty * inv, tz * inv, hitsLeft - 1, weight);
+    }
+
+    // ---- phong --------------------------------------------------------------------------------
+
+    /**
+     * The seed's model: ka ambient color + sum over lights (kd color E n.l + ks E (r.v)^shininess)
+     * + ks I_reflected + kt color I_transmitted, with ka = kd. Glass occluders pass kt of the light.
+     */
+    private void shadePhong(int m, double px, double py, double pz, double nx, double ny, double nz,
+                            double dx, double dy, double dz, double cosIncident, boolean entering, double offset,
+                            int hitsLeft, double weight) {
+        RenderScene s = scene;
+        int c = 3 * m;
+        double colorR = s.materialColor[c], colorG = s.materialColor[c + 1], colorB = s.materialColor[c + 2];
+        double kd = s.kd[m], ks = s.ks[m], kt = s.kt[m];
+        double ox = px + offset * nx, oy = py + offset * ny, oz = pz + offset * nz;
+        double diffuseR = s.ambientR, diffuseG = s.ambientG, diffuseB = s.ambientB;
+        double specR = 0, specG = 0, specB = 0;
+        for (int light = 0; light < s.lightCount; light++) {
+            double cosLight = lightAt(light, ox, oy, oz, nx, ny, nz);
+            if (cosLight <= 0) {
+                continue;
+            }
+            double pass = phongTransmittance(ox, oy, oz, toLightX, toLightY, toLightZ, lightDistance);
+            if (pass == 0) {
+                continue;
+            }
+            diffuseR += pass * irradianceR * cosLight;
+            diffuseG += pass * irradianceG * cosLight;
+            diffuseB += pass * irradianceB * cosLight;
+            // r = reflection of the light direction about n; v = -d
+            double k = 2 * cosLight;
+            double cosReflectView = -((k * nx - toLightX) * dx + (k * ny - toLightY) * dy + (k * nz - toLightZ) * dz);
+            if (cosReflectView > 0) {
+                double highlight = pass * Math.pow(cosReflectView, s.shininess[m]);
+                specR += highlight * irradianceR;
+                specG += highlight * irradianceG;
+                specB += highlight * irradianceB;
+            }
+        }
+        double sumR = kd * colorR * diffuseR + ks * specR;
+        double sumG = kd * colorG * diffuseG + ks * specG;
+        double sumB = kd * colorB * diffuseB + ks * specB;
+        if (hitsLeft > 1) {
+            double minWeight = s.settings.minWeight();
+            double k = 2 * cosIncident;
+            double rx = dx + k * nx, ry = dy + k * ny, rz = dz + k * nz;
+            if (weight * ks >= minWeight) {
+                trace(ox, oy, oz, rx, ry, rz, hitsLeft - 1, weight * ks);
+                sumR += ks * outR;
+                sumG += ks * outG;
+                sumB += ks * outB;
+            }
+            double childWeight = weight * kt * Math.max(colorR, Math.max(colorG, colorB));
+            if (childWeight >= minWeight && childWeight > 0) {
+                double eta = entering ? 1 / s.ior[m] : s.ior[m];
+                if (eta * eta * (1 - cosIncident * cosIncident) < 1) {
+                    traceRefracted(px, py, pz, nx, ny, nz, dx, dy, dz, cosIncident, eta, offset, hitsLeft, childWeight);
+                } else {
+                    trace(ox, oy, oz, rx, ry, rz, hitsLeft - 1, childWeight); // total internal reflection
+                }
+                sumR += kt * colorR * outR;
+                sumG += kt * colorG * outG;
+                sumB += kt * colorB * outB;
+            }
+        }
+        outR = sumR;
+        outG = sumG;
+        outB = sumB;
+    }
+
+    // ---- lights and visibility ----------------------------------------------------------------
+
+    /**
+     * Samples light {@code i} from point o: sets toLight, irradiance on a surface facing the light
+     * and lightDistance; returns n.l (the cosine at a surface of normal n).
+     */
+    private double lightAt(int i, double ox, double oy, double oz, double nx, double ny, double nz) {
+        RenderScene s = scene;
+        int j = 3 * i;
+        double scale;
+        if (s.lightIsPoint[i]) {
+            double lx = s.lightVector[j] - ox, ly = s.lightVector[j + 1] - oy, lz = s.lightVector[j + 2] - oz;
+            double distance2 = lx * lx + ly * ly + lz * lz;
+            if (distance2 == 0) {
+                return 0;
+            }
+            lightDistance = Math.sqrt(distance2);
+            double inv = 1 / lightDistance;
+            toLightX = lx * inv;
+            toLightY = ly * inv;
+            toLightZ = lz * inv;
+            scale = 1 / distance2;
+        } else {
+            toLightX = s.lightVector[j];
+            toLightY = s.lightVector[j + 1];
+            toLightZ = s.lightVector[j + 2];
+            lightDistance = Double.POSITIVE_INFINITY;
+            scale = 1;
+        }
+        irradianceR = s.lightPower[j] * scale;
+        irradianceG = s.lightPower[j + 1] * scale;
+        irradianceB = s.lightPower[j + 2] * scale;
+        return toLightX * nx + toLightY * ny + toLightZ * nz;
+    }
+
+    /** Nearest hit along the ray; sets hitT and hitSphere or hitPlane (the other is -1). */
+    private boolean nearest(double ox, double oy, double oz, double dx, double dy, double dz) {
+        RenderScene s = scene;
+        double best = Intersect.MISS;
+        int sphere = -1, plane = -1;
+        double[] spheres = s.spheres;
+        for (int i = 0, n = s.sphereCount; i < n; i++) {
+            int k = 4 * i;
+            double t = Intersect.sphere(spheres[k], spheres[k + 1], spheres[k + 2], spheres[k + 3], ox, oy, oz, dx, dy, dz);
+            if (t < best) {
+                best = t;
+                sphere = i;
+            }
+        }
+        double[] planes = s.planes;
+        for (int i = 0, n = s.planeCount; i < n; i++) {
+            int k = 4 * i;
+            double t = Intersect.plane(planes[k], planes[k + 1], planes[k + 2], planes[k + 3], ox, oy, oz, dx, dy, dz);
+            if (t < best) {
+                best = t;
+                plane = i;
+                sphere = -1;
+            }
+        }
+        hitT = best;
+        hitSphere = sphere;
+        hitPlane = plane;
+        return best < Intersect.MISS;
+    }
+
+    /** True when anything lies on the ray before distance tMax (shadow rays: any hit, not nearest). */
+    private boolean occluded(double ox, double oy, double oz, double dx, double dy, double dz, double tMax) {
+        RenderScene s = scene;
+        double[] spheres = s.spheres;
+        for (int i = 0, n = s.sphereCount; i < n; i++) {
+            int k = 4 * i;
+            if (Intersect.sphere(spheres[k], spheres[k + 1], spheres[k + 2], spheres[k + 3], ox, oy, oz, dx, dy, dz) < tMax) {
+                return true;
+            }
+        }
+        double[] planes = s.planes;
+        for (int i = 0, n = s.planeCount; i < n; i++) {
+            int k = 4 * i;
+            if (Intersect.plane(planes[k], planes[k + 1], planes[k + 2], planes[k + 3], ox, oy, oz, dx, dy, dz) < tMax) {
+                return true;
+            }
+        }
+        return false;
+    }
+
+    /** Phong shadows: the fraction of light that passes to distance tMax, kt for each glass occluder. */
+    private double phongTransmittance(double ox, double oy, double oz, double dx, double dy, double dz, double tMax) {
+        RenderScene s = scene;
+        double pass = 1;
+        double[] spheres = s.spheres;
+        for (int i = 0, n = s.sphereCount; i < n && pass > 0; i++) {
+            int k = 4 * i;
+            if (Intersect.sphere(spheres[k], spheres[k + 1], spheres[k + 2], spheres[k + 3], ox, oy, oz, dx, dy, dz) < tMax) {
+                pass *= glassPass(s.sphereMaterial[i]);
+            }
+        }
+        double[] planes = s.planes;
+        for (int i = 0, n = s.planeCount; i < n && pass > 0; i++) {
+            int k = 4 * i;
+            if (Intersect.plane(planes[k], planes[k + 1], planes[k + 2], planes[k + 3], ox, oy, oz, dx, dy, dz) < tMax) {
+                pass *= glassPass(s.planeMaterial[i]);
+            }
+        }
+        return pass;
+    }
+
+    private double glassPass(int material) {
+        return scene.materialType[material] == RenderScene.GLASS ? scene.kt[material] : 0;
+    }
+}

@@ -1,0 +1,302 @@
+package glint.scene;
+
+import glint.input.InputException;
+import glint.input.Suggestions;
+import glint.math.Vector3d;
+import java.io.IOException;
+import java.nio.charset.CharacterCodingException;
+import java.nio.charset.CodingErrorAction;
+import java.nio.charset.StandardCharsets;
+import java.nio.file.Files;
+import java.nio.file.NoSuchFileException;
+import java.nio.file.Path;
+import java.nio.ByteBuffer;
+import java.util.ArrayList;
+import java.util.HashMap;
+import java.util.LinkedHashSet;
+import java.util.List;
+import java.util.Locale;
+import java.util.Map;
+import java.util.Optional;
+import java.util.Set;
+import org.snakeyaml.engine.v2.api.LoadSettings;
+import org.snakeyaml.engine.v2.api.lowlevel.Compose;
+import org.snakeyaml.engine.v2.exceptions.Mark;
+import org.snakeyaml.engine.v2.exceptions.MarkedYamlEngineException;
+import org.snakeyaml.engine.v2.exceptions.YamlEngineException;
+import org.snakeyaml.engine.v2.nodes.MappingNode;
+import org.snakeyaml.engine.v2.nodes.Node;
+import org.snakeyaml.engine.v2.nodes.ScalarNode;
+
+/** Reads a scene file (SPEC section 2) into an immutable {@link Scene}, or explains what is wrong. */
+public final class SceneLoader {
+
+    private static final Set<String> TOP_KEYS =
+            ordered("camera", "background", "ambient", "lights", "materials", "objects");
+    private static final Set<String> CAMERA_KEYS = ordered("position", "look_at", "up", "fov");
+    private static final Set<String> MATERIAL_KEYS =
+            ordered("type", "color", "kd", "ks", "kt", "shininess", "ior", "roughness");
+    private static final Set<String> SPHERE_KEYS = ordered("type", "center", "radius", "material");
+    private static final Set<String> PLANE_KEYS = ordered("type", "point", "normal", "material");
+    private static final Set<String> POINT_LIGHT_KEYS = ordered("type", "position", "color", "intensity");
+    private static final Set<String> DIRECTIONAL_LIGHT_KEYS = ordered("type", "direction", "color", "intensity");
+    private static final Set<String> OBJECT_TYPES = ordered("sphere", "plane");
+    private static final Set<String> LIGHT_TYPES = ordered("point", "directional");
+    private static final Set<String> MATERIAL_TYPES = ordered("matte", "metal", "glass");
+
+    private final YamlTree yaml;
+    private final Map<String, Material> materials = new HashMap<>();
+
+    private SceneLoader(String file) {
+        this.yaml = new YamlTree(file);
+        for (MaterialType type : MaterialType.values()) {
+            materials.put(type.key(), Material.preset(type));
+        }
+    }
+
+    /** Loads a scene file; {@code path} is also how the file is named in error messages. */
+    public static Scene load(Path path) throws InputException {
+        return parse(path.toString(), read(path));
+    }
+
+    /** Parses scene text; {@code file} names it in error messages. */
+    public static Scene parse(String file, String text) throws InputException {
+        return new SceneLoader(file).scene(compose(file, text));
+    }
+
+    static String read(Path path) throws InputException {
+        try {
+            byte[] bytes = Files.readAllBytes(path);
+            return StandardCharsets.UTF_8.newDecoder()
+                    .onMalformedInput(CodingErrorAction.REPORT)
+                    .decode(ByteBuffer.wrap(bytes)).toString();
+        } catch (NoSuchFileException e) {
+            throw new InputException(path.toString(), 0, 0, "no such file");
+        } catch (CharacterCodingException e) {
+            throw new InputException(path.toString(), 0, 0, "not a text file (expected UTF-8 YAML)");
+        } catch (IOException e) {
+            throw new InputException(path.toString(), 0, 0, "cannot read: " + e.getMessage());
+        }
+    }
+
+    private static Node compose(String file, String text) throws InputException {
+        LoadSettings settings = LoadSettings.builder()
+                .setLabel(file)
+                .setAllowDuplicateKeys(true) // reported by YamlTree with a position
+                .setMaxAliasesForCollections(50)
+                .setUseMarks(true)
+                .build();
+        Optional<Node> root;
+        try {
+            root = new Compose(settings).composeString(text);
+        } catch (MarkedYamlEngineException e) {
+            Mark mark = e.getProblemMark().or(e::getContextMark).orElse(null);
+            String problem = "YAML syntax error: " + e.getProblem()
+                    + (e.getContext() != null ? " (" + e.getContext() + ")" : "");
+            throw mark == null
+                    ? new InputException(file, 0, 0, problem)
+                    : new InputException(file, mark.getLine() + 1, mark.getColumn() + 1, problem);
+        } catch (YamlEngineException e) {
+            throw new InputException(file, 0, 0, "YAML error: " + e.getMessage());
+        }
+        if (root.isEmpty() || YamlTree.isNull(root.get())) {
+            throw new InputException(file, 1, 1,
+                    "the scene is empty (expected a mapping with keys such as camera, lights, objects)");
+        }
+        return root.get();
+    }
+
+    private Scene scene(Node root) throws InputException {
+        Map<String, Node> top = yaml.mapping(root, "the scene", TOP_KEYS);
+        if (top.containsKey("materials")) {
+            namedMaterials(top.get("materials"));
+        }
+        Camera camera = top.containsKey("camera") ? camera(top.get("camera")) : Camera.defaults();
+        Vector3d background = top.containsKey("background")
+                ? yaml.color(top.get("background"), "background") : Vector3d.ZERO;
+        Vector3d ambient = top.containsKey("ambient") ? yaml.color(top.get("ambient"), "ambient") : Vector3d.ZERO;
+        List<Light> lights = new ArrayList<>();
+        if (top.containsKey("lights")) {
+            for (Node item : yaml.sequence(top.get("lights"), "lights")) {
+                lights.add(light(item));
+            }
+        }
+        List<SceneObject> objects = new ArrayList<>();
+        if (top.containsKey("objects")) {
+            for (Node item : yaml.sequence(top.get("objects"), "objects")) {
+                objects.add(object(item));
+            }
+        }
+        return new Scene(camera, background, ambient, lights, objects);
+    }
+
+    private Camera camera(Node node) throws InputException {
+        Map<String, Node> m = yaml.mapping(node, "camera", CAMERA_KEYS);
+        Vector3d position = m.containsKey("position") ? yaml.vector(m.get("position"), "position")
+                : new Vector3d(0, 1, -5);
+        Vector3d lookAt = m.containsKey("look_at") ? yaml.vector(m.get("look_at"), "look_at")
+                : position.add(Vector3d.UNIT_Z);
+        Vector3d up = m.containsKey("up") ? yaml.vector(m.get("up"), "up") : Vector3d.UNIT_Y;
+        double fov = m.containsKey("fov") ? yaml.number(m.get("fov"), "fov") : Camera.DEFAULT_FOV;
+        if (!(fov > 0 && fov < 180)) {
+            throw yaml.error(m.get("fov"), "fov must lie strictly between 0 and 180 degrees, got " + fov);
+        }
+        Vector3d view = lookAt.sub(position);
+        if (view.length() == 0) {
+            throw yaml.error(m.getOrDefault("look_at", node), "look_at must differ from the camera position");
+        }
+        if (up.length() == 0 || up.cross(view).length() <= 1e-12 * up.length() * view.length()) {
+            throw yaml.error(m.getOrDefault("up", node),
+                    "up must not be zero or parallel to the viewing direction (look_at - position)");
+        }
+        return Camera.lookAt(position, lookAt, up, fov);
+    }
+
+    private void namedMaterials(Node node) throws InputException {
+        if (YamlTree.isNull(node)) {
+            return;
+        }
+        if (!(node instanceof MappingNode map)) {
+            throw yaml.error(node, "expected a mapping of material names to materials, got " + YamlTree.describe(node));
+        }
+        Set<String> seen = new LinkedHashSet<>();
+        for (var tuple : map.getValue()) {
+            String name = yaml.string(tuple.getKeyNode(), "a material name");
+            if (MATERIAL_TYPES.contains(name)) {
+                throw yaml.error(tuple.getKeyNode(), "material name '" + name
+                        + "' is a preset and cannot be redefined (choose another name)");
+            }
+            if (!seen.add(name)) {
+                throw yaml.error(tuple.getKeyNode(), "duplicate material name '" + name + "'");
+            }
+            materials.put(name, materialMap(tuple.getValueNode(), "material '" + name + "'"));
+        }
+    }
+
+    private Material material(Node node) throws InputException {
+        if (node instanceof ScalarNode && !YamlTree.isNull(node)) {
+            String name = yaml.string(node, "material");
+            Material found = materials.get(name);
+            if (found == null) {
+                throw yaml.error(node, "unknown material '" + name + "'" + Suggestions.hint(name, materials.keySet()));
+            }
+            return found;
+        }
+        return materialMap(node, "material");
+    }
+
+    private Material materialMap(Node node, String what) throws InputException {
+        Map<String, Node> m = yaml.mapping(node, what, MATERIAL_KEYS);
+        Node typeNode = yaml.required(node, m, "type", what);
+        String typeName = yaml.string(typeNode, "material type");
+        if (!MATERIAL_TYPES.contains(typeName)) {
+            throw yaml.error(typeNode, "unknown material type '" + typeName + "'"
+                    + Suggestions.hint(typeName, MATERIAL_TYPES));
+        }
+        Material p = Material.preset(MaterialType.valueOf(typeName.toUpperCase(Locale.ROOT)));
+        Vector3d color = m.containsKey("color") ? yaml.color(m.get("color"), "color") : p.color();
+        double kd = atLeastZero(m, "kd", p.kd());
+        double ks = atLeastZero(m, "ks", p.ks());
+        double kt = atLeastZero(m, "kt", p.kt());
+        double shininess = atLeastZero(m, "shininess", p.shininess());
+        double ior = p.ior();
+        if (m.containsKey("ior")) {
+            ior = yaml.number(m.get("ior"), "ior");
+            if (!(ior > 0)) {
+                throw yaml.error(m.get("ior"), "ior must be > 0, got " + ior);
+            }
+        }
+        double roughness = p.roughness();
+        if (m.containsKey("roughness")) {
+            roughness = yaml.number(m.get("roughness"), "roughness");
+            if (roughness < 0 || roughness > 1) {
+                throw yaml.error(m.get("roughness"), "roughness must lie in [0, 1], got " + roughness);
+            }
+        }
+        return new Material(p.type(), color, kd, ks, kt, shininess, ior, roughness);
+    }
+
+    private double atLeastZero(Map<String, Node> m, String key, double fallback) throws InputException {
+        if (!m.containsKey(key)) {
+            return fallback;
+        }
+        double value = yaml.number(m.get(key), key);
+        if (value < 0) {
+            throw yaml.error(m.get(key), key + " must be >= 0, got " + value);
+        }
+        return value;
+    }
+
+    private SceneObject object(Node node) throws InputException {
+        String type = kind(node, "object", OBJECT_TYPES);
+        if (type.equals("sphere")) {
+            Map<String, Node> m = yaml.mapping(node, "sphere", SPHERE_KEYS);
+            Vector3d center = yaml.vector(yaml.required(node, m, "center", "sphere"), "center");
+            Node radiusNode = yaml.required(node, m, "radius", "sphere");
+            double radius = yaml.number(radiusNode, "radius");
+            if (!(radius > 0)) {
+                throw yaml.error(radiusNode, "radius must be > 0, got " + radius);
+            }
+            return new SceneObject(new Sphere(center, radius), materialOf(m));
+        }
+        Map<String, Node> m = yaml.mapping(node, "plane", PLANE_KEYS);
+        Vector3d point = yaml.vector(yaml.required(node, m, "point", "plane"), "point");
+        Node normalNode = yaml.required(node, m, "normal", "plane");
+        Vector3d normal = yaml.vector(normalNode, "normal");
+        if (normal.length() == 0) {
+            throw yaml.error(normalNode, "normal must not be the zero vector");
+        }
+        return new SceneObject(new Plane(point, normal.normalize()), materialOf(m));
+    }
+
+    private Material materialOf(Map<String, Node> m) throws InputException {
+        return m.containsKey("material") ? material(m.get("material")) : materials.get("matte");
+    }
+
+    private Light light(Node node) throws InputException {
+        String type = kind(node, "light", LIGHT_TYPES);
+        String what = type + " light";
+        Map<String, Node> m = yaml.mapping(node, what,
+                type.equals("point") ? POINT_LIGHT_KEYS : DIRECTIONAL_LIGHT_KEYS);
+        Vector3d color = m.containsKey("color") ? yaml.color(m.get("color"), "color") : Vector3d.ONE;
+        double intensity = 1;
+        if (m.containsKey("intensity")) {
+            intensity = yaml.number(m.get("intensity"), "intensity");
+            if (intensity < 0) {
+                throw yaml.error(m.get("intensity"), "intensity must be >= 0, got " + intensity);
+            }
+        }
+        if (type.equals("point")) {
+            Vector3d position = yaml.vector(yaml.required(node, m, "position", what), "position");
+            return new Light.Point(position, color, intensity);
+        }
+        Node directionNode = yaml.required(node, m, "direction", what);
+        Vector3d direction = yaml.vector(directionNode, "direction");
+        if (direction.length() == 0) {
+            throw yaml.error(directionNode, "direction must not be the zero vector");
+        }
+        return new Light.Directional(direction.normalize(), color, intensity);
+    }
+
+    /** The {@code type} of an object or light mapping, checked against the known types. */
+    private String kind(Node node, String what, Set<String> types) throws InputException {
+        if (!(node instanceof MappingNode map)) {
+            throw yaml.error(node, "expected a mapping for " + what + ", got " + YamlTree.describe(node));
+        }
+        for (var tuple : map.getValue()) {
+            if (tuple.getKeyNode() instanceof ScalarNode k && k.getValue().equals("type")) {
+                String type = yaml.string(tuple.getValueNode(), what + " type");
+                if (!types.contains(type)) {
+                    throw yaml.error(tuple.getValueNode(), "unknown " + what + " type '" + type + "'"
+                            + Suggestions.hint(type, types));
+                }
+                return type;
+            }
+        }
+        throw yaml.error(node, "missing required key 'type' in " + what + " (one of: " + String.join(", ", types) + ")");
+    }
+
+    private static Set<String> ordered(String... keys) {
+        return new LinkedHashSet<>(List.of(keys));
+    }
+}

@@ -1,0 +1,5 @@
+package glint.scene;
+
+/** The closed set of geometric shapes a scene can hold. */
+public sealed interface Shape permits Sphere, Plane {
+}
