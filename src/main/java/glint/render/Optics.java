@@ -22,6 +22,26 @@ public final class Optics {
         return 0.5 * (rs * rs + rp * rp);
     }
 
+    /**
+     * The refracted direction of unit direction d at a boundary with unit normal n facing the
+     * incident side ({@code cosIncident} = -d.n >= 0, eta = n_incident / n_transmitted), written to
+     * {@code out} as a unit vector. Returns false, leaving {@code out} alone, past the critical angle.
+     */
+    public static boolean refract(double dx, double dy, double dz, double nx, double ny, double nz,
+                                  double cosIncident, double eta, double[] out) {
+        double sin2Transmitted = eta * eta * Math.max(0, 1 - cosIncident * cosIncident);
+        if (sin2Transmitted >= 1) {
+            return false;
+        }
+        double k = eta * cosIncident - Math.sqrt(1 - sin2Transmitted);
+        double tx = eta * dx + k * nx, ty = eta * dy + k * ny, tz = eta * dz + k * nz;
+        double inv = 1 / Math.sqrt(tx * tx + ty * ty + tz * tz);
+        out[0] = tx * inv;
+        out[1] = ty * inv;
+        out[2] = tz * inv;
+        return true;
+    }
+
     /** Schlick's approximation F0 + (1 - F0)(1 - cos)^5, for one channel. */
     public static double schlick(double f0, double cosTheta) {
         double m = Math.min(1, Math.max(0, 1 - cosTheta));

@@ -26,6 +26,9 @@ final class TracerWorker {
     private double irradianceR, irradianceG, irradianceB;
     private double lightDistance;
 
+    // the direction Optics.refract writes
+    private final double[] refracted = new double[3];
+
     /** Renders pixels [x0, x1) x [y0, y1) of the frame with {@code samples} samples each. */
     void renderTile(RenderScene renderScene, FrameBuffer frame, int samples, int frameIndex,
                     int x0, int y0, int x1, int y1) {
@@ -234,17 +237,19 @@ final class TracerWorker {
 
     /**
      * Traces the refracted ray through the boundary (n faces the incident side, eta = n_incident /
-     * n_transmitted, below the critical angle); its origin is offset to the far side.
+     * n_transmitted), its origin offset to the far side; past the critical angle, the reflected one.
      */
     private void traceRefracted(double px, double py, double pz, double nx, double ny, double nz,
                                 double dx, double dy, double dz, double cosIncident, double eta, double offset,
                                 int hitsLeft, double weight) {
-        double sin2Transmitted = eta * eta * Math.max(0, 1 - cosIncident * cosIncident);
-        double cosTransmitted = Math.sqrt(Math.max(0, 1 - sin2Transmitted));
-        double k = eta * cosIncident - cosTransmitted;
-        double tx = eta * dx + k * nx, ty = eta * dy + k * ny, tz = eta * dz + k * nz;
-        double inv = 1 / Math.sqrt(tx * tx + ty * ty + tz * tz);
-        trace(px - offset * nx, py - offset * ny, pz - offset * nz, tx * inv, ty * inv, tz * inv, hitsLeft - 1, weight);
+        double[] t = refracted;
+        if (Optics.refract(dx, dy, dz, nx, ny, nz, cosIncident, eta, t)) {
+            trace(px - offset * nx, py - offset * ny, pz - offset * nz, t[0], t[1], t[2], hitsLeft - 1, weight);
+        } else {
+            double k = 2 * cosIncident;
+            trace(px + offset * nx, py + offset * ny, pz + offset * nz,
+                    dx + k * nx, dy + k * ny, dz + k * nz, hitsLeft - 1, weight);
+        }
     }
 
     // ---- phong --------------------------------------------------------------------------------
@@ -301,11 +306,7 @@ final class TracerWorker {
             double childWeight = weight * kt * Math.max(colorR, Math.max(colorG, colorB));
             if (childWeight >= minWeight && childWeight > 0) {
                 double eta = entering ? 1 / s.ior[m] : s.ior[m];
-                if (eta * eta * (1 - cosIncident * cosIncident) < 1) {
-                    traceRefracted(px, py, pz, nx, ny, nz, dx, dy, dz, cosIncident, eta, offset, hitsLeft, childWeight);
-                } else {
-                    trace(ox, oy, oz, rx, ry, rz, hitsLeft - 1, childWeight); // total internal reflection
-                }
+                traceRefracted(px, py, pz, nx, ny, nz, dx, dy, dz, cosIncident, eta, offset, hitsLeft, childWeight);
                 sumR += kt * colorR * outR;
                 sumG += kt * colorG * outG;
                 sumB += kt * colorB * outB;

@@ -1,0 +1,35 @@
+package glint.render;
+
+import static org.junit.jupiter.api.Assertions.assertArrayEquals;
+
+import glint.config.Shading;
+import glint.image.ImageWriter;
+import glint.scene.Scene;
+import glint.scene.SceneLoader;
+import java.io.ByteArrayOutputStream;
+import java.io.IOException;
+import java.nio.file.Path;
+import javax.imageio.ImageIO;
+import org.junit.jupiter.api.Test;
+
+/** The same settings give the same bytes for any thread or tile count (SPEC section 3). */
+class DeterminismTest {
+
+    @Test
+    void identicalPngBytesForAnyThreadAndTileCount() throws Exception {
+        Scene scene = SceneLoader.load(Path.of("scenes/default.yaml"));
+        byte[] reference = png(Renders.render(scene, 96, 72, 4, 5, Shading.COOK_TORRANCE, 1, 1));
+        for (int threads : new int[] {1, 2, 7}) {
+            for (int divider : new int[] {1, 8, 13}) {
+                byte[] bytes = png(Renders.render(scene, 96, 72, 4, 5, Shading.COOK_TORRANCE, threads, divider));
+                assertArrayEquals(reference, bytes, threads + " threads, divider " + divider);
+            }
+        }
+    }
+
+    private static byte[] png(FrameBuffer frame) throws IOException {
+        ByteArrayOutputStream out = new ByteArrayOutputStream();
+        ImageIO.write(ImageWriter.toImage(frame), "png", out);
+        return out.toByteArray();
+    }
+}
