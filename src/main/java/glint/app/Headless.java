@@ -10,6 +10,7 @@ import glint.render.Tracer;
 import glint.scene.Scene;
 import glint.scene.SceneLoader;
 import java.io.IOException;
+import java.io.PrintWriter;
 import java.nio.file.Files;
 import java.nio.file.Path;
 import java.util.Arrays;
@@ -21,14 +22,15 @@ final class Headless {
     private Headless() {
     }
 
-    static int renderStill(Path scenePath, Config config, Path output) throws InputException, IOException {
+    static int renderStill(Path scenePath, Config config, Path output, PrintWriter out)
+            throws InputException, IOException {
         if (!ImageWriter.isSupported(output)) {
-            throw new InputException("arguments", 0, 0,
+            throw new InputException("glint", 0, 0,
                     "--output: expected a file ending in .png or .pfm, got '" + output + "'");
         }
         Path folder = output.toAbsolutePath().getParent();
         if (folder != null && !Files.isDirectory(folder)) {
-            throw new InputException("arguments", 0, 0, "--output: no such folder '" + folder + "'");
+            throw new InputException("glint", 0, 0, "--output: no such folder '" + folder + "'");
         }
         Scene scene = SceneLoader.load(scenePath);
         RenderScene compiled = RenderScene.compile(scene, RenderSettings.of(config));
@@ -39,13 +41,13 @@ final class Headless {
         }
         long elapsed = System.nanoTime() - start;
         ImageWriter.write(frame, output);
-        System.out.printf(Locale.ROOT, "wrote %s (%dx%d, %d spp, %d threads, %s, depth %d) in %.1f ms%n",
+        out.printf(Locale.ROOT, "wrote %s (%dx%d, %d spp, %d threads, %s, depth %d) in %.1f ms%n",
                 output, frame.width(), frame.height(), config.samples(), config.effectiveThreads(),
                 config.shading().key(), config.recursionMax(), elapsed / 1e6);
         return Main.OK;
     }
 
-    static int bench(Path scenePath, Config config, int frames) throws InputException {
+    static int bench(Path scenePath, Config config, int frames, PrintWriter out) throws InputException {
         Scene scene = SceneLoader.load(scenePath);
         RenderScene compiled = RenderScene.compile(scene, RenderSettings.of(config));
         FrameBuffer frame = new FrameBuffer(config.displayWidth(), config.displayHeight());
@@ -55,7 +57,7 @@ final class Headless {
                 long start = System.nanoTime();
                 tracer.render(compiled, frame, config.samples(), 0, config.screenDivider());
                 millis[i] = (System.nanoTime() - start) / 1e6;
-                System.out.printf(Locale.ROOT, "frame %d: %.2f ms%n", i + 1, millis[i]);
+                out.printf(Locale.ROOT, "frame %d: %.2f ms%n", i + 1, millis[i]);
             }
         }
         double[] sorted = millis.clone();
@@ -63,7 +65,7 @@ final class Headless {
         double median = frames % 2 == 1 ? sorted[frames / 2] : (sorted[frames / 2 - 1] + sorted[frames / 2]) / 2;
         double p95 = sorted[(int) Math.ceil(0.95 * frames) - 1];
         double rays = (double) config.displayWidth() * config.displayHeight() * config.samples();
-        System.out.printf(Locale.ROOT, "bench: frames=%d median_ms=%.2f p95_ms=%.2f rays_per_s=%.0f%n",
+        out.printf(Locale.ROOT, "bench: frames=%d median_ms=%.2f p95_ms=%.2f rays_per_s=%.0f%n",
                 frames, median, p95, rays / (median / 1000));
         return Main.OK;
     }

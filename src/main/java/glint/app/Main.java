@@ -55,13 +55,20 @@ public final class Main implements Callable<Integer> {
     @Option(names = "--bench", paramLabel = "N", description = "render N frames of the still camera headless and time them")
     Integer bench;
 
+    /** Where the modes write their report lines and diagnostics; set by {@link #run}. */
+    private PrintWriter out = new PrintWriter(System.out, true);
+    private PrintWriter err = new PrintWriter(System.err, true);
+
     public static void main(String[] args) {
         System.exit(run(args, new PrintWriter(System.out, true), new PrintWriter(System.err, true)));
     }
 
     /** Runs the program and returns its exit status; nothing is written but to out and err. */
     public static int run(String[] args, PrintWriter out, PrintWriter err) {
-        CommandLine cli = new CommandLine(new Main());
+        Main main = new Main();
+        main.out = out;
+        main.err = err;
+        CommandLine cli = new CommandLine(main);
         cli.setOut(out);
         cli.setErr(err);
         cli.setParameterExceptionHandler((e, a) -> {
@@ -85,18 +92,18 @@ public final class Main implements Callable<Integer> {
         Config settings = overrides(loadConfig());
         Path scenePath = scene != null ? scene : sceneFromConfig(settings);
         if (output != null && bench != null) {
-            throw new InputException("arguments", 0, 0, "--output and --bench cannot be used together");
+            throw new InputException("glint", 0, 0, "--output and --bench cannot be used together");
         }
         if (output != null) {
-            return Headless.renderStill(scenePath, settings, output);
+            return Headless.renderStill(scenePath, settings, output, out);
         }
         if (bench != null) {
             if (bench < 1) {
-                throw new InputException("arguments", 0, 0, "--bench: expected a number of frames >= 1, got " + bench);
+                throw new InputException("glint", 0, 0, "--bench: expected a number of frames >= 1, got " + bench);
             }
-            return Headless.bench(scenePath, settings, bench);
+            return Headless.bench(scenePath, settings, bench, out);
         }
-        return WindowLauncher.open(scenePath, settings);
+        return WindowLauncher.open(scenePath, settings, err);
     }
 
     private Config loadConfig() throws InputException {
@@ -126,7 +133,7 @@ public final class Main implements Callable<Integer> {
         }
         if (spp != null) {
             if (!Config.isPerfectSquare(spp) || spp > 4096) {
-                throw new InputException("arguments", 0, 0,
+                throw new InputException("glint", 0, 0,
                         "--spp: expected a perfect square from 1 to 4096 (1, 4, 9, 16, ...), got " + spp);
             }
             c = c.withSamples(spp);
@@ -142,7 +149,7 @@ public final class Main implements Callable<Integer> {
         if (shading != null) {
             Shading model = Shading.byKey(shading);
             if (model == null) {
-                throw new InputException("arguments", 0, 0, "--shading: unknown model '" + shading + "'"
+                throw new InputException("glint", 0, 0, "--shading: unknown model '" + shading + "'"
                         + Suggestions.hint(shading, List.of("cook-torrance", "phong")));
             }
             c = c.withShading(model);
@@ -152,7 +159,7 @@ public final class Main implements Callable<Integer> {
 
     private static void checkRange(String option, int value, int min, int max) throws InputException {
         if (value < min || value > max) {
-            throw new InputException("arguments", 0, 0,
+            throw new InputException("glint", 0, 0,
                     option + ": expected a whole number from " + min + " to " + max + ", got " + value);
         }
     }

@@ -55,10 +55,17 @@ public final class ConfigLoader {
     }
 
     private Config config() throws InputException {
+        InputException unknown = null;
         for (String key : properties.stringPropertyNames()) {
             if (!KEYS.contains(key)) {
-                throw error(key, "unknown key '" + key + "'" + Suggestions.hint(key, KEYS));
+                InputException e = error(key, "unknown key '" + key + "'" + Suggestions.hint(key, KEYS));
+                if (unknown == null || e.line() < unknown.line()) { // report the first in the file
+                    unknown = e;
+                }
             }
+        }
+        if (unknown != null) {
+            throw unknown;
         }
         Config d = Config.defaults();
         boolean debug = bool("debug", d.debug());
@@ -163,9 +170,12 @@ public final class ConfigLoader {
         return n;
     }
 
-    /** An error at the line where {@code key} is set (line 0 when it cannot be found). */
+    /**
+     * An error at the line where {@code key} is set (line 0 when it cannot be found); when it is set
+     * more than once, the last line, whose value is the one that counts.
+     */
     private InputException error(String key, String problem) {
-        for (int i = 0; i < lines.size(); i++) {
+        for (int i = lines.size() - 1; i >= 0; i--) {
             String line = lines.get(i);
             String trimmed = line.stripLeading();
             if (trimmed.startsWith(key)) {

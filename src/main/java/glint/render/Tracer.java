@@ -24,6 +24,8 @@ public final class Tracer implements AutoCloseable {
     private volatile RenderScene scene;
     private volatile FrameBuffer frame;
     private volatile int samples;
+    private volatile int firstSample;
+    private volatile int sampleCount;
     private volatile int frameIndex;
     private volatile int divider;
 
@@ -57,9 +59,28 @@ public final class Tracer implements AutoCloseable {
      * @param divider    the frame is split into divider x divider tiles
      */
     public void render(RenderScene renderScene, FrameBuffer target, int samples, int frameIndex, int divider) {
+        run(renderScene, target, samples, 0, samples, frameIndex, divider);
+    }
+
+    /**
+     * Renders only sample {@code pass} (0 .. samples - 1) of each pixel's stratified pattern for
+     * frame index 0. The average of passes 0 .. samples - 1 equals {@code render(..., samples, 0, ...)}:
+     * the window refines progressively towards the still image.
+     */
+    public void renderPass(RenderScene renderScene, FrameBuffer target, int samples, int pass, int divider) {
+        if (pass < 0 || pass >= samples) {
+            throw new IllegalArgumentException("pass " + pass + " outside 0.." + (samples - 1));
+        }
+        run(renderScene, target, samples, pass, 1, 0, divider);
+    }
+
+    private void run(RenderScene renderScene, FrameBuffer target, int samples, int first, int count,
+                     int frameIndex, int divider) {
         this.scene = renderScene;
         this.frame = target;
         this.samples = samples;
+        this.firstSample = first;
+        this.sampleCount = count;
         this.frameIndex = frameIndex;
         this.divider = Math.max(1, Math.min(divider, Math.min(target.width(), target.height())));
         nextTile.set(0);
@@ -94,7 +115,7 @@ public final class Tracer implements AutoCloseable {
         int column = tile % d, row = tile / d;
         int x0 = column * f.width() / d, x1 = (column + 1) * f.width() / d;
         int y0 = row * f.height() / d, y1 = (row + 1) * f.height() / d;
-        worker.renderTile(scene, f, samples, frameIndex, x0, y0, x1, y1);
+        worker.renderTile(scene, f, samples, firstSample, sampleCount, frameIndex, x0, y0, x1, y1);
     }
 
     @Override

@@ -29,19 +29,23 @@ final class TracerWorker {
     // the direction Optics.refract writes
     private final double[] refracted = new double[3];
 
-    /** Renders pixels [x0, x1) x [y0, y1) of the frame with {@code samples} samples each. */
-    void renderTile(RenderScene renderScene, FrameBuffer frame, int samples, int frameIndex,
-                    int x0, int y0, int x1, int y1) {
+    /**
+     * Renders pixels [x0, x1) x [y0, y1): each pixel gets the average of samples
+     * [firstSample, firstSample + sampleCount) of its {@code samples}-sample stratified pattern.
+     */
+    void renderTile(RenderScene renderScene, FrameBuffer frame, int samples, int firstSample, int sampleCount,
+                    int frameIndex, int x0, int y0, int x1, int y1) {
         this.scene = renderScene;
         int side = (int) Math.round(Math.sqrt(samples));
         for (int y = y0; y < y1; y++) {
             for (int x = x0; x < x1; x++) {
-                renderPixel(frame, x, y, side, frameIndex);
+                renderPixel(frame, x, y, side, firstSample, sampleCount, frameIndex);
             }
         }
     }
 
-    private void renderPixel(FrameBuffer frame, int x, int y, int side, int frameIndex) {
+    private void renderPixel(FrameBuffer frame, int x, int y, int side, int firstSample, int sampleCount,
+                             int frameIndex) {
         if (side == 1) {
             cameraSample(frame, x + 0.5, y + 0.5);
             frame.set(x, y, outR, outG, outB);
@@ -49,17 +53,16 @@ final class TracerWorker {
         }
         double sumR = 0, sumG = 0, sumB = 0;
         int pixelIndex = y * frame.width() + x;
-        for (int cellY = 0; cellY < side; cellY++) {
-            for (int cellX = 0; cellX < side; cellX++) {
-                long h = SamplePattern.hash(pixelIndex, frameIndex, cellY * side + cellX);
-                cameraSample(frame, x + (cellX + SamplePattern.jitterU(h)) / side,
-                        y + (cellY + SamplePattern.jitterV(h)) / side);
-                sumR += outR;
-                sumG += outG;
-                sumB += outB;
-            }
+        for (int sample = firstSample, end = firstSample + sampleCount; sample < end; sample++) {
+            int cellX = sample % side, cellY = sample / side;
+            long h = SamplePattern.hash(pixelIndex, frameIndex, sample);
+            cameraSample(frame, x + (cellX + SamplePattern.jitterU(h)) / side,
+                    y + (cellY + SamplePattern.jitterV(h)) / side);
+            sumR += outR;
+            sumG += outG;
+            sumB += outB;
         }
-        double inv = 1.0 / (side * side);
+        double inv = 1.0 / sampleCount;
         frame.set(x, y, sumR * inv, sumG * inv, sumB * inv);
     }
 

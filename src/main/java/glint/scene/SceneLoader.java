@@ -12,7 +12,7 @@ import java.nio.file.NoSuchFileException;
 import java.nio.file.Path;
 import java.nio.ByteBuffer;
 import java.util.ArrayList;
-import java.util.HashMap;
+import java.util.LinkedHashMap;
 import java.util.LinkedHashSet;
 import java.util.List;
 import java.util.Locale;
@@ -45,7 +45,7 @@ public final class SceneLoader {
     private static final Set<String> MATERIAL_TYPES = ordered("matte", "metal", "glass");
 
     private final YamlTree yaml;
-    private final Map<String, Material> materials = new HashMap<>();
+    private final Map<String, Material> materials = new LinkedHashMap<>(); // presets first, for hints
 
     private SceneLoader(String file) {
         this.yaml = new YamlTree(file);
@@ -91,8 +91,10 @@ public final class SceneLoader {
             root = new Compose(settings).composeString(text);
         } catch (MarkedYamlEngineException e) {
             Mark mark = e.getProblemMark().or(e::getContextMark).orElse(null);
-            String problem = "YAML syntax error: " + e.getProblem()
-                    + (e.getContext() != null ? " (" + e.getContext() + ")" : "");
+            String what = e.getProblem() != null ? e.getProblem() : "malformed YAML";
+            String problem = "YAML syntax error: " + what
+                    + (e.getContext() != null ? " (" + e.getContext() + ")" : "")
+                    + (what.contains("<block end>") ? "; check the indentation" : "");
             throw mark == null
                     ? new InputException(file, 0, 0, problem)
                     : new InputException(file, mark.getLine() + 1, mark.getColumn() + 1, problem);
@@ -111,7 +113,9 @@ public final class SceneLoader {
         if (top.containsKey("materials")) {
             namedMaterials(top.get("materials"));
         }
-        Camera camera = top.containsKey("camera") ? camera(top.get("camera")) : Camera.defaults();
+        // "camera:" with nothing after it, like "camera: {}", keeps every default
+        Camera camera = top.containsKey("camera") && !YamlTree.isNull(top.get("camera"))
+                ? camera(top.get("camera")) : Camera.defaults();
         Vector3d background = top.containsKey("background")
                 ? yaml.color(top.get("background"), "background") : Vector3d.ZERO;
         Vector3d ambient = top.containsKey("ambient") ? yaml.color(top.get("ambient"), "ambient") : Vector3d.ZERO;
@@ -139,7 +143,8 @@ public final class SceneLoader {
         Vector3d up = m.containsKey("up") ? yaml.vector(m.get("up"), "up") : Vector3d.UNIT_Y;
         double fov = m.containsKey("fov") ? yaml.number(m.get("fov"), "fov") : Camera.DEFAULT_FOV;
         if (!(fov > 0 && fov < 180)) {
-            throw yaml.error(m.get("fov"), "fov must lie strictly between 0 and 180 degrees, got " + fov);
+            throw yaml.error(m.get("fov"), "fov must lie strictly between 0 and 180 degrees, got "
+                    + YamlTree.source(m.get("fov"), fov));
         }
         Vector3d view = lookAt.sub(position);
         if (view.length() == 0) {
@@ -187,7 +192,11 @@ public final class SceneLoader {
 
     private Material materialMap(Node node, String what) throws InputException {
         Map<String, Node> m = yaml.mapping(node, what, MATERIAL_KEYS);
-        Node typeNode = yaml.required(node, m, "type", what);
+        Node typeNode = m.get("type");
+        if (typeNode == null) {
+            throw yaml.error(node, "missing required key 'type' in " + what
+                    + " (one of: " + String.join(", ", MATERIAL_TYPES) + ")");
+        }
         String typeName = yaml.string(typeNode, "material type");
         if (!MATERIAL_TYPES.contains(typeName)) {
             throw yaml.error(typeNode, "unknown material type '" + typeName + "'"
@@ -203,14 +212,15 @@ public final class SceneLoader {
         if (m.containsKey("ior")) {
             ior = yaml.number(m.get("ior"), "ior");
             if (!(ior > 0)) {
-                throw yaml.error(m.get("ior"), "ior must be > 0, got " + ior);
+                throw yaml.error(m.get("ior"), "ior must be > 0, got " + YamlTree.source(m.get("ior"), ior));
             }
         }
         double roughness = p.roughness();
         if (m.containsKey("roughness")) {
             roughness = yaml.number(m.get("roughness"), "roughness");
             if (roughness < 0 || roughness > 1) {
-                throw yaml.error(m.get("roughness"), "roughness must lie in [0, 1], got " + roughness);
+                throw yaml.error(m.get("roughness"), "roughness must lie in [0, 1], got "
+                        + YamlTree.source(m.get("roughness"), roughness));
             }
         }
         return new Material(p.type(), color, kd, ks, kt, shininess, ior, roughness);
@@ -222,7 +232,7 @@ public final class SceneLoader {
         }
         double value = yaml.number(m.get(key), key);
         if (value < 0) {
-            throw yaml.error(m.get(key), key + " must be >= 0, got " + value);
+            throw yaml.error(m.get(key), key + " must be >= 0, got " + YamlTree.source(m.get(key), value));
         }
         return value;
     }
@@ -235,7 +245,7 @@ public final class SceneLoader {
             Node radiusNode = yaml.required(node, m, "radius", "sphere");
             double radius = yaml.number(radiusNode, "radius");
             if (!(radius > 0)) {
-                throw yaml.error(radiusNode, "radius must be > 0, got " + radius);
+                throw yaml.error(radiusNode, "radius must be > 0, got " + YamlTree.source(radiusNode, radius));
             }
             return new SceneObject(new Sphere(center, radius), materialOf(m));
         }
@@ -263,7 +273,8 @@ public final class SceneLoader {
         if (m.containsKey("intensity")) {
             intensity = yaml.number(m.get("intensity"), "intensity");
             if (intensity < 0) {
-                throw yaml.error(m.get("intensity"), "intensity must be >= 0, got " + intensity);
+                throw yaml.error(m.get("intensity"), "intensity must be >= 0, got "
+                        + YamlTree.source(m.get("intensity"), intensity));
             }
         }
         if (type.equals("point")) {

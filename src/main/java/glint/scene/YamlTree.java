@@ -135,6 +135,11 @@ final class YamlTree {
         return c;
     }
 
+    /** A number as the user wrote it (for range messages), e.g. "0" rather than "0.0". */
+    static String source(Node node, double value) {
+        return node instanceof ScalarNode s ? s.getValue().trim() : String.valueOf(value);
+    }
+
     static String describe(Node node) {
         if (isNull(node)) {
             return "nothing";

@@ -27,6 +27,29 @@ class DeterminismTest {
         }
     }
 
+    @Test
+    void progressivePassesAverageToTheStillImage() throws Exception {
+        Scene scene = SceneLoader.load(Path.of("scenes/default.yaml"));
+        RenderScene compiled = RenderScene.compile(scene, new RenderSettings(Shading.COOK_TORRANCE, 5, 1e-3, 1e-9));
+        int samples = 9;
+        FrameBuffer still = new FrameBuffer(40, 30);
+        FrameBuffer pass = new FrameBuffer(40, 30);
+        double[] sum = new double[still.rgb().length];
+        try (Tracer tracer = new Tracer(2)) {
+            tracer.render(compiled, still, samples, 0, 4);
+            for (int k = 0; k < samples; k++) {
+                tracer.renderPass(compiled, pass, samples, k, 3);
+                for (int i = 0; i < sum.length; i++) {
+                    sum[i] += pass.rgb()[i];
+                }
+            }
+        }
+        for (int i = 0; i < sum.length; i++) {
+            double expected = still.rgb()[i];
+            org.junit.jupiter.api.Assertions.assertEquals(expected, sum[i] / samples, 1e-6 * Math.max(1, expected));
+        }
+    }
+
     private static byte[] png(FrameBuffer frame) throws IOException {
         ByteArrayOutputStream out = new ByteArrayOutputStream();
         ImageIO.write(ImageWriter.toImage(frame), "png", out);

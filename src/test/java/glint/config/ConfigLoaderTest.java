@@ -1,0 +1,325 @@
+package glint.config;
+
+import static org.junit.jupiter.api.Assertions.assertEquals;
+import static org.junit.jupiter.api.Assertions.assertFalse;
+import static org.junit.jupiter.api.Assertions.assertThrows;
+import static org.junit.jupiter.api.Assertions.assertTrue;
+
+import glint.input.InputException;
+import java.io.IOException;
+import java.nio.file.Files;
+import java.nio.file.Path;
+import java.util.List;
+import org.junit.jupiter.api.Test;
+import org.junit.jupiter.api.io.TempDir;
+
+class ConfigLoaderTest {
+
+    private static final String FILE = "config.properties";
+
+    private static Config parse(String text) throws InputException {
+        return ConfigLoader.parse(FILE, text);
+    }
+
+    private static void assertError(String expected, String text) {
+        InputException e = assertThrows(InputException.class, () -> parse(text));
+        assertEquals(expected, e.getMessage());
+    }
+
+    // ---------------------------------------------------------------- defaults
+
+    @Test
+    void emptyFileGivesTheDefaults() throws InputException {
+        assertEquals(Config.defaults(), parse(""));
+        assertEquals(Config.defaults(), parse("# only comments\n! and these\n\n"));
+    }
+
+    @Test
+    void defaultValues() {
+        Config d = Config.defaults();
+        assertFalse(d.debug());
+        assertEquals(1e-9, d.epsilon());
+        assertEquals(2, d.displayScale());
+        assertEquals(8, d.screenDivider());
+        assertEquals(600, d.displayHeight());
+        assertEquals(5, d.recursionMax());
+        assertEquals(800, d.displayWidth());
+        assertEquals("Glint", d.name());
+        assertEquals("scenes/default.yaml", d.scene());
+        assertEquals(0, d.threads());
+        assertEquals(Shading.COOK_TORRANCE, d.shading());
+        assertEquals(4, d.samples());
+        assertEquals(1e-3, d.minWeight());
+        assertEquals(2.0, d.moveSpeed());
+        assertEquals(60, d.turnSpeed());
+        assertEquals(30, d.targetFps());
+    }
+
+    @Test
+    void missingKeysKeepTheirDefaults() throws InputException {
+        Config c = parse("threads=3\n");
+        assertEquals(Config.defaults().withThreads(3), c);
+    }
+
+    // ---------------------------------------------------------------- every key
+
+    @Test
+    void everyKeyIsParsed() throws InputException {
+        Config c = parse("""
+                debug=true
+                epsilon=1e-6
+                display_scale=1.5
+                screen_divider=4
+                display_height=480
+                recursion_max=7
+                display_width=640
+                name=My Glint
+                scene=scenes/other.yaml
+                threads=3
+                shading=phong
+                samples=16
+                min_weight=0.01
+                move_speed=3.5
+                turn_speed=90
+                target_fps=24
+                """);
+        assertEquals(new Config(true, 1e-6, 1.5, 4, 640, 480, 7, "My Glint", "scenes/other.yaml", 3,
+                Shading.PHONG, 16, 0.01, 3.5, 90, 24), c);
+    }
+
+    @Test
+    void everyKeyOfKeysIsTestedAbove() {
+        assertEquals(List.of("debug", "epsilon", "display_scale", "screen_divider", "display_height",
+                "recursion_max", "display_width", "name", "scene", "threads", "shading", "samples",
+                "min_weight", "move_speed", "turn_speed", "target_fps"), List.copyOf(ConfigLoader.KEYS));
+    }
+
+    @Test
+    void propertiesSyntaxVariants() throws InputException {
+        Config c = parse("""
+                  threads = 2
+                samples: 9
+                debug TRUE
+                shading=cook-torrance   \s
+                """);
+        assertEquals(2, c.threads());
+        assertEquals(9, c.samples());
+        assertTrue(c.debug());
+        assertEquals(Shading.COOK_TORRANCE, c.shading());
+    }
+
+    @Test
+    void rangeLimitsAreAccepted() throws InputException {
+        Config low = parse("display_scale=1\nscreen_divider=1\nrecursion_max=1\ndisplay_width=1\ndisplay_height=1\n"
+                + "threads=0\nsamples=1\nmin_weight=0\ntarget_fps=1\n");
+        assertEquals(1, low.displayScale());
+        assertEquals(1, low.samples());
+        assertEquals(0, low.minWeight());
+        Config high = parse("display_scale=64\nscreen_divider=256\nrecursion_max=64\ndisplay_width=16384\n"
+                + "display_height=16384\nthreads=1024\nsamples=4096\nmin_weight=1\ntarget_fps=1000\n");
+        assertEquals(16384, high.displayWidth());
+        assertEquals(4096, high.samples());
+    }
+
+    @Test
+    void theRepositoryConfigLoadsAndNamesAnExistingScene() throws InputException {
+        Path config = Path.of("config.properties");
+        Config c = ConfigLoader.load(config);
+        Path scene = config.toAbsolutePath().getParent().resolve(c.scene());
+        assertTrue(Files.isRegularFile(scene), () -> "missing " + scene);
+    }
+
+    // ---------------------------------------------------------------- unknown keys
+
+    @Test
+    void unknownKeyWithSuggestionAndLine() {
+        assertError("config.properties:3:1: unknown key 'threds' (did you mean 'threads'?)", """
+                # Glint settings
+                debug=false
+                threds=2
+                samples=4
+                """);
+    }
+
+    @Test
+    void unknownIndentedKeyHasItsColumn() {
+        assertError("config.properties:2:4: unknown key 'recurson_max' (did you mean 'recursion_max'?)", """
+                name=x
+                   recurson_max = 3
+                """);
+    }
+
+    @Test
+    void unknownKeyFarFromAnyListsTheKeys() {
+        assertError("config.properties:1:1: unknown key 'colour' (expected one of: debug, epsilon, display_scale, "
+                + "screen_divider, display_height, recursion_max, display_width, name, scene, threads, shading, "
+                + "samples, min_weight, move_speed, turn_speed, target_fps)", "colour=red\n");
+    }
+
+    @Test
+    void theFirstUnknownKeyInTheFileIsReported() {
+        assertError("config.properties:2:1: unknown key 'sampels' (did you mean 'samples'?)", """
+                debug=false
+                sampels=4
+                threds=2
+                shadin=phong
+                """);
+    }
+
+    // ---------------------------------------------------------------- malformed values
+
+    @Test
+    void epsilonNotANumber() {
+        assertError("config.properties:2:1: epsilon: expected a positive number, got 'abc'", "debug=true\nepsilon=abc\n");
+    }
+
+    @Test
+    void epsilonZero() {
+        assertError("config.properties:1:1: epsilon: expected a positive number, got '0'", "epsilon=0\n");
+    }
+
+    @Test
+    void javaFloatSuffixIsNotANumber() {
+        assertError("config.properties:1:1: epsilon: expected a positive number, got '1e-9d'", "epsilon=1e-9d\n");
+    }
+
+    @Test
+    void infinityIsNotANumberHere() {
+        assertError("config.properties:1:1: move_speed: expected a positive number, got 'Infinity'",
+                "move_speed=Infinity\n");
+    }
+
+    @Test
+    void samplesNotAPerfectSquare() {
+        assertError("config.properties:3:1: samples: expected a perfect square (1, 4, 9, 16, ...), got '3'", """
+                threads=2
+
+                samples=3
+                """);
+    }
+
+    @Test
+    void samplesZero() {
+        assertError("config.properties:1:1: samples: expected a whole number from 1 to 4096, got '0'", "samples=0\n");
+    }
+
+    @Test
+    void shadingTypoWithSuggestion() {
+        assertError("config.properties:1:1: shading: unknown model 'phon' (did you mean 'phong'?)", "shading=phon\n");
+    }
+
+    @Test
+    void shadingFarFromAnyListsTheModels() {
+        assertError("config.properties:1:1: shading: unknown model 'pbr' (expected one of: cook-torrance, phong)",
+                "shading=pbr\n");
+    }
+
+    @Test
+    void screenDividerZero() {
+        assertError("config.properties:2:1: screen_divider: expected a whole number from 1 to 256, got '0'",
+                "# tiles\nscreen_divider=0\n");
+    }
+
+    @Test
+    void debugMaybe() {
+        assertError("config.properties:1:1: debug: expected true or false, got 'maybe'", "debug=maybe\n");
+    }
+
+    @Test
+    void wholeNumberWithADecimalPoint() {
+        assertError("config.properties:1:1: display_width: expected a whole number from 1 to 16384, got '800.5'",
+                "display_width=800.5\n");
+    }
+
+    @Test
+    void negativeThreads() {
+        assertError("config.properties:1:3: threads: expected a whole number from 0 to 1024, got '-1'",
+                "  threads = -1\n");
+    }
+
+    @Test
+    void recursionMaxZero() {
+        assertError("config.properties:1:1: recursion_max: expected a whole number from 1 to 64, got '0'",
+                "recursion_max=0\n");
+    }
+
+    @Test
+    void displayScaleBelowOne() {
+        assertError("config.properties:1:1: display_scale: expected a number from 1 to 64, got '0.5'",
+                "display_scale=0.5\n");
+    }
+
+    @Test
+    void minWeightAboveOne() {
+        assertError("config.properties:1:1: min_weight: expected a number from 0 to 1, got '2'", "min_weight=2\n");
+    }
+
+    @Test
+    void targetFpsZero() {
+        assertError("config.properties:1:1: target_fps: expected a number from 1 to 1000, got '0'", "target_fps=0\n");
+    }
+
+    @Test
+    void emptyScene() {
+        assertError("config.properties:1:1: scene: expected a scene file path, got nothing", "scene=\n");
+    }
+
+    @Test
+    void emptyValueOfANumber() {
+        assertError("config.properties:1:1: threads: expected a whole number from 0 to 1024, got ''", "threads=\n");
+    }
+
+    @Test
+    void aKeySetTwiceIsReportedWhereTheValueThatCountsIs() {
+        // java.util.Properties keeps the last value, so the message points at the last line
+        assertError("config.properties:3:1: threads: expected a whole number from 0 to 1024, got 'many'", """
+                threads=2
+                samples=4
+                threads=many
+                """);
+    }
+
+    @Test
+    void keyThatPrefixesAnotherIsFoundOnItsOwnLine() {
+        // the line "scene=..." must not be mistaken for the line of "scen"
+        assertError("config.properties:2:1: unknown key 'scen' (did you mean 'scene'?)", """
+                name=x
+                scen=a.yaml
+                scene=b.yaml
+                """);
+    }
+
+    @Test
+    void malformedUnicodeEscape() {
+        assertError("config.properties: not a properties file: Malformed \\uxxxx encoding.", "name=\\uZZZZ\n");
+    }
+
+    // ---------------------------------------------------------------- files
+
+    @Test
+    void missingFile(@TempDir Path dir) {
+        Path path = dir.resolve("nope.properties");
+        InputException e = assertThrows(InputException.class, () -> ConfigLoader.load(path));
+        assertEquals(path + ": no such file", e.getMessage());
+    }
+
+    @Test
+    void loadNamesTheFileByItsPath(@TempDir Path dir) throws IOException {
+        Path path = dir.resolve("glint.properties");
+        Files.writeString(path, "samples=2\n");
+        InputException e = assertThrows(InputException.class, () -> ConfigLoader.load(path));
+        assertEquals(path + ":1:1: samples: expected a perfect square (1, 4, 9, 16, ...), got '2'", e.getMessage());
+    }
+
+    @Test
+    void perfectSquares() {
+        assertTrue(Config.isPerfectSquare(1));
+        assertTrue(Config.isPerfectSquare(4));
+        assertTrue(Config.isPerfectSquare(9));
+        assertTrue(Config.isPerfectSquare(4096));
+        assertFalse(Config.isPerfectSquare(0));
+        assertFalse(Config.isPerfectSquare(-4));
+        assertFalse(Config.isPerfectSquare(2));
+        assertFalse(Config.isPerfectSquare(15));
+    }
+}

@@ -1,0 +1,664 @@
+package glint.scene;
+
+import static org.junit.jupiter.api.Assertions.assertAll;
+import static org.junit.jupiter.api.Assertions.assertEquals;
+import static org.junit.jupiter.api.Assertions.assertThrows;
+
+import glint.input.InputException;
+import java.io.IOException;
+import java.nio.file.Files;
+import java.nio.file.Path;
+import org.junit.jupiter.api.Test;
+import org.junit.jupiter.api.io.TempDir;
+
+/**
+ * Every error of SPEC section 2, with the exact message the user sees. Lines and columns are
+ * counted by hand from the text blocks (the text starts on line 1, column 1 at the left margin
+ * of the closing quotes).
+ */
+class SceneLoaderErrorTest {
+
+    private static final String FILE = "scenes/x.yaml";
+
+    private static InputException failure(String text) {
+        return assertThrows(InputException.class, () -> SceneLoader.parse(FILE, text));
+    }
+
+    private static void assertError(String expected, String text) {
+        assertEquals(expected, failure(text).getMessage());
+    }
+
+    // ---------------------------------------------------------------- unknown keys
+
+    @Test
+    void unknownKeyInSphereNamesLineColumnAndSuggestion() {
+        String text = """
+                # A scene with a typo in its last sphere.
+                camera:
+                  position: [0, 1, -5]
+                  look_at: [0, 1, 0]
+                lights:
+                  - {type: point, position: [-5, 8, -6], intensity: 100}
+                objects:
+                  - type: sphere
+                    center: [-2, 1, 0]
+                    radius: 1
+                  - type: sphere
+                    radus: 1
+                    center: [2, 1, 0]
+                """;
+        InputException e = failure(text);
+        assertEquals("scenes/x.yaml:12:5: unknown key 'radus' in sphere (did you mean 'radius'?)", e.getMessage());
+        assertAll(
+                () -> assertEquals(FILE, e.file()),
+                () -> assertEquals(12, e.line()),
+                () -> assertEquals(5, e.column()),
+                () -> assertEquals("unknown key 'radus' in sphere (did you mean 'radius'?)", e.problem()));
+    }
+
+    @Test
+    void unknownTopLevelKey() {
+        assertError("scenes/x.yaml:3:1: unknown key 'objets' in the scene (did you mean 'objects'?)", """
+                camera:
+                  fov: 60
+                objets:
+                  - {type: sphere, center: [0, 0, 0], radius: 1}
+                """);
+    }
+
+    @Test
+    void unknownTopLevelKeyFarFromAnyListsTheKnownOnes() {
+        assertError("scenes/x.yaml:1:1: unknown key 'spheres' in the scene (expected one of: "
+                + "camera, background, ambient, lights, materials, objects)", """
+                spheres: []
+                """);
+    }
+
+    @Test
+    void unknownKeyInCamera() {
+        assertError("scenes/x.yaml:3:3: unknown key 'fvo' in camera (did you mean 'fov'?)", """
+                camera:
+                  position: [0, 1, -5]
+                  fvo: 60
+                """);
+    }
+
+    @Test
+    void unknownKeyInPlane() {
+        // "  - {" is columns 1-5, "type: plane, " 6-18, "point: [0, 0, 0], " 19-36, so "normall" is at 37
+        assertError("scenes/x.yaml:2:37: unknown key 'normall' in plane (did you mean 'normal'?)", """
+                objects:
+                  - {type: plane, point: [0, 0, 0], normall: [0, 1, 0]}
+                """);
+    }
+
+    @Test
+    void unknownKeyInPointLight() {
+        // "  - {" 1-5, "type: point, " 6-18, "position: [0, 5, 0], " 19-39, "intensty" at 40
+        assertError("scenes/x.yaml:2:40: unknown key 'intensty' in point light (did you mean 'intensity'?)", """
+                lights:
+                  - {type: point, position: [0, 5, 0], intensty: 10}
+                """);
+    }
+
+    @Test
+    void pointLightKeyInDirectionalLight() {
+        assertError("scenes/x.yaml:4:5: unknown key 'position' in directional light "
+                + "(expected one of: type, direction, color, intensity)",
+                """
+                lights:
+                  - type: directional
+                    direction: [0, -1, 0]
+                    position: [0, 5, 0]
+                """);
+    }
+
+    @Test
+    void unknownKeyInInlineMaterial() {
+        // line 2: "  - {type: sphere, center: [0, 0, 0], radius: 1, material: {type: metal, " is 73 characters
+        assertError("scenes/x.yaml:2:74: unknown key 'roughnes' in material (did you mean 'roughness'?)", """
+                objects:
+                  - {type: sphere, center: [0, 0, 0], radius: 1, material: {type: metal, roughnes: 0.1}}
+                """);
+    }
+
+    @Test
+    void unknownKeyInNamedMaterial() {
+        // "  gold: {" 1-9, "type: metal, " 10-22, "colour" at 23
+        assertError("scenes/x.yaml:2:23: unknown key 'colour' in material 'gold' (did you mean 'color'?)", """
+                materials:
+                  gold: {type: metal, colour: [1, 0.8, 0.3]}
+                """);
+    }
+
+    // ---------------------------------------------------------------- unknown types and names
+
+    @Test
+    void unknownObjectTypeWithSuggestion() {
+        // "  - {type: " is columns 1-11, the value "sphre" starts at 12
+        assertError("scenes/x.yaml:2:12: unknown object type 'sphre' (did you mean 'sphere'?)", """
+                objects:
+                  - {type: sphre, center: [0, 0, 0], radius: 1}
+                """);
+    }
+
+    @Test
+    void unknownObjectTypeFarFromAnyListsTheTypes() {
+        assertError("scenes/x.yaml:2:11: unknown object type 'cube' (expected one of: sphere, plane)", """
+                objects:
+                  - type: cube
+                    size: 1
+                """);
+    }
+
+    @Test
+    void unknownLightType() {
+        assertError("scenes/x.yaml:2:12: unknown light type 'spot' (expected one of: point, directional)", """
+                lights:
+                  - {type: spot, position: [0, 5, 0]}
+                """);
+    }
+
+    @Test
+    void unknownLightTypeWithSuggestion() {
+        assertError("scenes/x.yaml:2:12: unknown light type 'directonal' (did you mean 'directional'?)", """
+                lights:
+                  - {type: directonal, direction: [0, -1, 0]}
+                """);
+    }
+
+    @Test
+    void unknownMaterialType() {
+        // "  shiny: {type: " is 16 characters
+        assertError("scenes/x.yaml:2:17: unknown material type 'metall' (did you mean 'metal'?)", """
+                materials:
+                  shiny: {type: metall}
+                """);
+    }
+
+    @Test
+    void unknownMaterialNameSuggestsANamedMaterial() {
+        // line 4: "  - {type: sphere, center: [0, 0, 0], radius: 1, material: " is 59 characters
+        assertError("scenes/x.yaml:4:60: unknown material 'gld' (did you mean 'gold'?)", """
+                materials:
+                  gold: {type: metal, color: [1.0, 0.77, 0.34]}
+                objects:
+                  - {type: sphere, center: [0, 0, 0], radius: 1, material: gld}
+                """);
+    }
+
+    @Test
+    void unknownMaterialNameSuggestsAPreset() {
+        assertError("scenes/x.yaml:5:15: unknown material 'glas' (did you mean 'glass'?)", """
+                objects:
+                  - type: sphere
+                    center: [0, 0, 0]
+                    radius: 1
+                    material: glas
+                """);
+    }
+
+    @Test
+    void unknownMaterialNameFarFromAnyListsPresetsThenNamedInOrder() {
+        assertError("scenes/x.yaml:6:15: unknown material 'blue' (expected one of: matte, metal, glass, red, "
+                + "gold)", """
+                materials:
+                  red: {type: matte, color: [0.8, 0.1, 0.1]}
+                  gold: {type: metal, color: [1.0, 0.77, 0.34]}
+                objects:
+                  - type: plane
+                    material: blue
+                    point: [0, 0, 0]
+                    normal: [0, 1, 0]
+                """);
+    }
+
+    @Test
+    void materialNameRedefiningAPreset() {
+        assertError("scenes/x.yaml:3:3: material name 'glass' is a preset and cannot be redefined "
+                + "(choose another name)", """
+                materials:
+                  red: {type: matte, color: [0.8, 0.1, 0.1]}
+                  glass: {type: glass, ior: 1.33}
+                """);
+    }
+
+    @Test
+    void duplicateMaterialName() {
+        assertError("scenes/x.yaml:3:3: duplicate material name 'red'", """
+                materials:
+                  red: {type: matte, color: [0.8, 0.1, 0.1]}
+                  red: {type: matte, color: [0.9, 0.1, 0.1]}
+                """);
+    }
+
+    // ---------------------------------------------------------------- missing required keys
+
+    @Test
+    void missingRadiusPointsAtTheSphere() {
+        assertError("scenes/x.yaml:2:5: missing required key 'radius' in sphere", """
+                objects:
+                  - {type: sphere, center: [0, 0, 0]}
+                """);
+    }
+
+    @Test
+    void missingCenter() {
+        assertError("scenes/x.yaml:3:5: missing required key 'center' in sphere", """
+                objects:
+                  - {type: plane, point: [0, 0, 0], normal: [0, 1, 0]}
+                  - type: sphere
+                    radius: 1
+                """);
+    }
+
+    @Test
+    void missingNormal() {
+        assertError("scenes/x.yaml:2:5: missing required key 'normal' in plane", """
+                objects:
+                  - type: plane
+                    point: [0, 0, 0]
+                """);
+    }
+
+    @Test
+    void missingPoint() {
+        assertError("scenes/x.yaml:2:5: missing required key 'point' in plane", """
+                objects:
+                  - {type: plane, normal: [0, 1, 0]}
+                """);
+    }
+
+    @Test
+    void missingPosition() {
+        assertError("scenes/x.yaml:2:5: missing required key 'position' in point light", """
+                lights:
+                  - {type: point, intensity: 10}
+                """);
+    }
+
+    @Test
+    void missingDirection() {
+        assertError("scenes/x.yaml:2:5: missing required key 'direction' in directional light", """
+                lights:
+                  - {type: directional, color: [1, 1, 1]}
+                """);
+    }
+
+    @Test
+    void missingObjectType() {
+        assertError("scenes/x.yaml:2:5: missing required key 'type' in object (one of: sphere, plane)", """
+                objects:
+                  - {center: [0, 0, 0], radius: 1}
+                """);
+    }
+
+    @Test
+    void missingLightType() {
+        assertError("scenes/x.yaml:2:5: missing required key 'type' in light (one of: point, directional)", """
+                lights:
+                  - position: [0, 5, 0]
+                """);
+    }
+
+    @Test
+    void missingMaterialType() {
+        assertError("scenes/x.yaml:2:8: missing required key 'type' in material 'red' (one of: matte, metal, glass)",
+                """
+                materials:
+                  red: {color: [0.8, 0.1, 0.1]}
+                """);
+    }
+
+    @Test
+    void missingInlineMaterialType() {
+        assertError("scenes/x.yaml:5:15: missing required key 'type' in material (one of: matte, metal, glass)",
+                """
+                objects:
+                  - type: sphere
+                    center: [0, 0, 0]
+                    radius: 1
+                    material: {color: [1, 0, 0]}
+                """);
+    }
+
+    // ---------------------------------------------------------------- values out of range
+
+    @Test
+    void radiusZero() {
+        assertError("scenes/x.yaml:4:13: radius must be > 0, got 0", """
+                objects:
+                  - type: sphere
+                    center: [0, 0, 0]
+                    radius: 0
+                """);
+    }
+
+    @Test
+    void radiusNegative() {
+        // "  - {type: sphere, center: [0, 0, 0], radius: " is 46 characters
+        assertError("scenes/x.yaml:2:47: radius must be > 0, got -1.5", """
+                objects:
+                  - {type: sphere, center: [0, 0, 0], radius: -1.5}
+                """);
+    }
+
+    @Test
+    void iorZero() {
+        // "  clear: {type: glass, ior: " is 28 characters
+        assertError("scenes/x.yaml:2:29: ior must be > 0, got 0", """
+                materials:
+                  clear: {type: glass, ior: 0}
+                """);
+    }
+
+    @Test
+    void iorNegative() {
+        assertError("scenes/x.yaml:2:29: ior must be > 0, got -1.5", """
+                materials:
+                  clear: {type: glass, ior: -1.5}
+                """);
+    }
+
+    @Test
+    void negativeIntensity() {
+        assertError("scenes/x.yaml:4:16: intensity must be >= 0, got -5", """
+                lights:
+                  - type: point
+                    position: [0, 5, 0]
+                    intensity: -5
+                """);
+    }
+
+    @Test
+    void zeroNormal() {
+        // "  - {type: plane, point: [0, 0, 0], normal: " is 44 characters
+        assertError("scenes/x.yaml:2:45: normal must not be the zero vector", """
+                objects:
+                  - {type: plane, point: [0, 0, 0], normal: [0, 0, 0]}
+                """);
+    }
+
+    @Test
+    void zeroDirection() {
+        assertError("scenes/x.yaml:3:16: direction must not be the zero vector", """
+                lights:
+                  - type: directional
+                    direction: [0, 0.0, 0]
+                """);
+    }
+
+    @Test
+    void fovZero() {
+        assertError("scenes/x.yaml:2:8: fov must lie strictly between 0 and 180 degrees, got 0", """
+                camera:
+                  fov: 0
+                """);
+    }
+
+    @Test
+    void fov180() {
+        assertError("scenes/x.yaml:3:8: fov must lie strictly between 0 and 180 degrees, got 180", """
+                camera:
+                  position: [0, 1, -5]
+                  fov: 180
+                """);
+    }
+
+    @Test
+    void negativeRoughness() {
+        assertError("scenes/x.yaml:2:52: roughness must lie in [0, 1], got -0.1", """
+                materials:
+                  gold: {type: metal, color: [1, 1, 1], roughness: -0.1}
+                """);
+    }
+
+    @Test
+    void negativeCoefficient() {
+        assertError("scenes/x.yaml:2:24: kd must be >= 0, got -1", """
+                materials:
+                  m: {type: matte, kd: -1}
+                """);
+    }
+
+    @Test
+    void negativeColorComponent() {
+        assertError("scenes/x.yaml:1:13: background must not have negative components, got [0.0, -0.1, 0.0]",
+                """
+                background: [0, -0.1, 0]
+                """);
+    }
+
+    @Test
+    void lookAtEqualToPosition() {
+        assertError("scenes/x.yaml:3:12: look_at must differ from the camera position", """
+                camera:
+                  position: [1, 2, 3]
+                  look_at: [1, 2, 3]
+                """);
+    }
+
+    @Test
+    void upParallelToTheViewingDirection() {
+        assertError("scenes/x.yaml:4:7: up must not be zero or parallel to the viewing direction "
+                + "(look_at - position)", """
+                camera:
+                  position: [0, 0, 0]
+                  look_at: [0, 5, 0]
+                  up: [0, 1, 0]
+                """);
+    }
+
+    // ---------------------------------------------------------------- numbers and vectors
+
+    @Test
+    void infinity() {
+        assertError("scenes/x.yaml:2:47: expected a finite number for radius, got '.inf'", """
+                objects:
+                  - {type: sphere, center: [0, 0, 0], radius: .inf}
+                """);
+    }
+
+    @Test
+    void negativeInfinity() {
+        assertError("scenes/x.yaml:2:17: expected a finite number for intensity, got '-.Inf'", """
+                lights:
+                  - {intensity: -.Inf, type: point, position: [0, 1, 0]}
+                """);
+    }
+
+    @Test
+    void notANumber() {
+        // "  - {type: sphere, center: [0, " is 31 characters
+        assertError("scenes/x.yaml:2:32: expected a finite number for center, got '.nan'", """
+                objects:
+                  - {type: sphere, center: [0, .nan, 0], radius: 1}
+                """);
+    }
+
+    @Test
+    void numberTooLargeForADouble() {
+        assertError("scenes/x.yaml:2:8: expected a finite number for fov, got '1e999' (too large)", """
+                camera:
+                  fov: 1e999
+                """);
+    }
+
+    @Test
+    void stringWhereANumberIsExpected() {
+        assertError("scenes/x.yaml:4:13: expected a number for radius, got 'big'", """
+                objects:
+                  - type: sphere
+                    center: [0, 0, 0]
+                    radius: big
+                """);
+    }
+
+    @Test
+    void nothingWhereANumberIsExpected() {
+        assertError("scenes/x.yaml:2:7: expected a number for fov, got nothing", """
+                camera:
+                  fov:
+                  position: [0, 1, -5]
+                """);
+    }
+
+    @Test
+    void quotedNumber() {
+        // the message points at the opening quote
+        assertError("scenes/x.yaml:4:13: expected a number for radius, got the quoted string '1'", """
+                objects:
+                  - type: sphere
+                    center: [0, 0, 0]
+                    radius: "1"
+                """);
+    }
+
+    @Test
+    void quotedNumberInAVector() {
+        assertError("scenes/x.yaml:2:20: expected a number for position, got the quoted string '-5'", """
+                camera:
+                  position: [0, 1, '-5']
+                """);
+    }
+
+    @Test
+    void twoElementVector() {
+        assertError("scenes/x.yaml:3:13: expected a list of 3 numbers for center, got 2 elements", """
+                objects:
+                  - type: sphere
+                    center: [0, 1]
+                    radius: 1
+                """);
+    }
+
+    @Test
+    void scalarWhereAVectorIsExpected() {
+        assertError("scenes/x.yaml:1:10: expected a list of 3 numbers for ambient like [0, 1, 0], got '0.1'", """
+                ambient: 0.1
+                """);
+    }
+
+    // ---------------------------------------------------------------- structure
+
+    @Test
+    void duplicateKeyPointsAtTheSecondOne() {
+        assertError("scenes/x.yaml:5:5: duplicate key 'radius' in sphere", """
+                objects:
+                  - type: sphere
+                    center: [0, 0, 0]
+                    radius: 1
+                    radius: 2
+                """);
+    }
+
+    @Test
+    void duplicateTopLevelKey() {
+        assertError("scenes/x.yaml:3:1: duplicate key 'camera' in the scene", """
+                camera: {fov: 60}
+                objects: []
+                camera: {fov: 70}
+                """);
+    }
+
+    @Test
+    void yamlSyntaxErrorHasAPosition() {
+        // the unclosed "[" meets "}" at column 47
+        assertError("scenes/x.yaml:2:47: YAML syntax error: expected ',' or ']', but got } "
+                + "(while parsing a flow sequence)", """
+                objects:
+                  - {type: sphere, center: [0, 1, 0, radius: 1}
+                """);
+    }
+
+    @Test
+    void badIndentationSaysSo() {
+        assertError("scenes/x.yaml:3:2: YAML syntax error: expected <block end>, but found "
+                + "'<block mapping start>' (while parsing a block mapping); check the indentation", """
+                camera:
+                  position: [0, 1, -5]
+                 fov: 60
+                """);
+    }
+
+    @Test
+    void tabIndentation() {
+        InputException e = failure("camera:\n\tfov: 60\n");
+        assertEquals(2, e.line());
+        assertEquals(1, e.column());
+        assertEquals("scenes/x.yaml:2:1: YAML syntax error: found character '\\t(TAB)' that cannot start any "
+                + "token. (Do not use \\t(TAB) for indentation) (while scanning for the next token)", e.getMessage());
+    }
+
+    @Test
+    void emptyFile() {
+        assertError("scenes/x.yaml:1:1: the scene is empty (expected a mapping with keys such as camera, lights, "
+                + "objects)", "");
+    }
+
+    @Test
+    void fileWithOnlyCommentsIsEmpty() {
+        assertError("scenes/x.yaml:1:1: the scene is empty (expected a mapping with keys such as camera, lights, "
+                + "objects)", """
+                # nothing here yet
+
+                """);
+    }
+
+    @Test
+    void listAtTheTop() {
+        assertError("scenes/x.yaml:1:1: expected a mapping for the scene, got a list", """
+                - {type: sphere, center: [0, 0, 0], radius: 1}
+                """);
+    }
+
+    @Test
+    void objectsNotAList() {
+        assertError("scenes/x.yaml:2:3: expected a list of objects, got a mapping", """
+                objects:
+                  type: sphere
+                """);
+    }
+
+    @Test
+    void objectNotAMapping() {
+        assertError("scenes/x.yaml:2:5: expected a mapping for object, got 'sphere'", """
+                objects:
+                  - sphere
+                """);
+    }
+
+    @Test
+    void emptyMaterialValue() {
+        assertError("scenes/x.yaml:2:59: expected a mapping for material, got nothing", """
+                objects:
+                  - {type: sphere, center: [0, 0, 0], radius: 1, material: }
+                """);
+    }
+
+    // ---------------------------------------------------------------- files
+
+    @Test
+    void missingFile(@TempDir Path dir) {
+        Path path = dir.resolve("nope.yaml");
+        InputException e = assertThrows(InputException.class, () -> SceneLoader.load(path));
+        assertEquals(path + ": no such file", e.getMessage());
+        assertEquals(0, e.line());
+    }
+
+    @Test
+    void binaryFile(@TempDir Path dir) throws IOException {
+        Path path = dir.resolve("image.yaml");
+        Files.write(path, new byte[] {(byte) 0x89, 'P', 'N', 'G', (byte) 0xff, (byte) 0xfe});
+        InputException e = assertThrows(InputException.class, () -> SceneLoader.load(path));
+        assertEquals(path + ": not a text file (expected UTF-8 YAML)", e.getMessage());
+    }
+
+    @Test
+    void loadNamesTheFileByItsPath(@TempDir Path dir) throws IOException {
+        Path path = dir.resolve("typo.yaml");
+        Files.writeString(path, "camera:\n  fvo: 60\n");
+        InputException e = assertThrows(InputException.class, () -> SceneLoader.load(path));
+        assertEquals(path + ":2:3: unknown key 'fvo' in camera (did you mean 'fov'?)", e.getMessage());
+    }
+}
