@@ -42,6 +42,24 @@ public final class Optics {
         return true;
     }
 
+    /**
+     * Schlick's approximation for a dielectric boundary, used correctly: F0 from the two indices and
+     * the cosine on the less dense side (the transmitted one when leaving the denser medium), 1 past
+     * the critical angle. Same arguments as {@link #fresnelDielectric}.
+     */
+    public static double schlickDielectric(double cosIncident, double eta) {
+        double f0 = (eta - 1) / (eta + 1);
+        f0 *= f0;
+        if (eta <= 1) {
+            return schlick(f0, cosIncident);
+        }
+        double sin2Transmitted = eta * eta * Math.max(0, 1 - cosIncident * cosIncident);
+        if (sin2Transmitted >= 1) {
+            return 1;
+        }
+        return schlick(f0, Math.sqrt(1 - sin2Transmitted));
+    }
+
     /** Schlick's approximation F0 + (1 - F0)(1 - cos)^5, for one channel. */
     public static double schlick(double f0, double cosTheta) {
         double m = Math.min(1, Math.max(0, 1 - cosTheta));

@@ -211,7 +211,8 @@ final class TracerWorker {
         double sumR = 0, sumG = 0, sumB = 0;
         if (hitsLeft > 1) {
             double eta = entering ? 1 / s.ior[m] : s.ior[m];
-            double reflectance = Optics.fresnelDielectric(cosIncident, eta);
+            double reflectance = s.settings.glassFresnel() == RenderSettings.GlassFresnel.EXACT
+                    ? Optics.fresnelDielectric(cosIncident, eta) : Optics.schlickDielectric(cosIncident, eta);
             double minWeight = s.settings.minWeight();
             if (weight * reflectance >= minWeight) {
                 double k = 2 * cosIncident;

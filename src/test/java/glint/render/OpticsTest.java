@@ -102,4 +102,15 @@ class OpticsTest {
             assertEquals(1, sum, 2e-3, "alpha " + alpha);
         }
     }
+
+    @Test
+    void schlickForGlassAgreesAtTheEndsAndHandlesTotalInternalReflection() {
+        assertEquals(0.04, Optics.schlickDielectric(1, 1 / 1.5), 1e-15);
+        assertEquals(0.04, Optics.schlickDielectric(1, 1.5), 1e-15);
+        assertEquals(1, Optics.schlickDielectric(0, 1 / 1.5), 1e-15);
+        assertEquals(1, Optics.schlickDielectric(Math.cos(Math.toRadians(45)), 1.5), 0, "past 41.8 degrees inside");
+        // within a few percent of the exact value at 60 degrees from outside
+        double cos60 = 0.5;
+        assertEquals(Optics.fresnelDielectric(cos60, 1 / 1.5), Optics.schlickDielectric(cos60, 1 / 1.5), 0.01);
+    }
 }
