@@ -109,8 +109,8 @@ class OpticsTest {
         assertEquals(0.04, Optics.schlickDielectric(1, 1.5), 1e-15);
         assertEquals(1, Optics.schlickDielectric(0, 1 / 1.5), 1e-15);
         assertEquals(1, Optics.schlickDielectric(Math.cos(Math.toRadians(45)), 1.5), 0, "past 41.8 degrees inside");
-        // within a few percent of the exact value at 60 degrees from outside
+        // exact 0.0892, Schlick 0.0700 at 60 degrees from outside: close, not equal
         double cos60 = 0.5;
-        assertEquals(Optics.fresnelDielectric(cos60, 1 / 1.5), Optics.schlickDielectric(cos60, 1 / 1.5), 0.01);
+        assertEquals(Optics.fresnelDielectric(cos60, 1 / 1.5), Optics.schlickDielectric(cos60, 1 / 1.5), 0.025);
     }
 }
