@@ -14,31 +14,42 @@ public final class Intersect {
     /**
      * Nearest t > 0 where the ray meets the sphere. Follows Ray Tracing Gems ch. 7: the
      * discriminant is r^2 - |f - (f.d) d|^2 (no cancellation between two large squares), and the
-     * smaller root is c / q rather than (b - sqrt(disc)) / 2a (no cancellation between b and sqrt).
+     * root that would subtract nearly equal numbers is taken as c / q instead.
      */
     public static double sphere(double cx, double cy, double cz, double radius,
                                 double ox, double oy, double oz, double dx, double dy, double dz) {
+        return sphereBefore(cx, cy, cz, radius, ox, oy, oz, dx, dy, dz, MISS);
+    }
+
+    /**
+     * {@link #sphere}, but a miss also when the hit cannot come before {@code tMax}: the cheap
+     * rejections (sphere behind the ray, closest approach beyond tMax) run before any square root.
+     */
+    public static double sphereBefore(double cx, double cy, double cz, double radius,
+                                      double ox, double oy, double oz, double dx, double dy, double dz,
+                                      double tMax) {
         double fx = ox - cx, fy = oy - cy, fz = oz - cz;
-        double b = -(fx * dx + fy * dy + fz * dz);
-        double hx = fx + b * dx, hy = fy + b * dy, hz = fz + b * dz;
+        double b = -(fx * dx + fy * dy + fz * dz); // distance along the ray to the closest approach
         double r2 = radius * radius;
+        double c = fx * fx + fy * fy + fz * fz - r2; // > 0 when the origin is outside
+        if ((c > 0 && b <= 0) || b - radius >= tMax) {
+            return MISS;
+        }
+        double hx = fx + b * dx, hy = fy + b * dy, hz = fz + b * dz;
         double discriminant = r2 - (hx * hx + hy * hy + hz * hz);
         if (discriminant < 0) {
             return MISS;
         }
-        double q = b + Math.copySign(Math.sqrt(discriminant), b);
-        if (q == 0) {
-            return MISS;
+        double root = Math.sqrt(discriminant);
+        double t;
+        if (c > 0) {
+            t = c / (b + root);             // outside, approaching: the near root
+        } else if (b >= 0) {
+            t = b + root;                   // inside: the far root
+        } else {
+            t = c / (b - root);             // inside, moving away from the centre
         }
-        double c = fx * fx + fy * fy + fz * fz - r2;
-        double t0 = c / q;
-        double t1 = q;
-        double near = Math.min(t0, t1);
-        double far = Math.max(t0, t1);
-        if (near > 0) {
-            return near;
-        }
-        return far > 0 ? far : MISS;
+        return t > 0 && t < tMax ? t : MISS;
     }
 
     /**
@@ -69,11 +80,19 @@ public final class Intersect {
      */
     public static double plane(double nx, double ny, double nz, double offset,
                                double ox, double oy, double oz, double dx, double dy, double dz) {
+        return planeBefore(nx, ny, nz, offset, ox, oy, oz, dx, dy, dz, MISS);
+    }
+
+    /** {@link #plane}, but a miss also at or beyond {@code tMax}; divides only for a hit. */
+    public static double planeBefore(double nx, double ny, double nz, double offset,
+                                     double ox, double oy, double oz, double dx, double dy, double dz,
+                                     double tMax) {
         double denominator = nx * dx + ny * dy + nz * dz;
-        if (denominator == 0) {
+        double numerator = offset - (nx * ox + ny * oy + nz * oz);
+        // t = numerator / denominator lies in (0, tMax) iff both have one sign and |num| < tMax |den|
+        if (!(numerator * denominator > 0) || !(Math.abs(numerator) < tMax * Math.abs(denominator))) {
             return MISS;
         }
-        double t = (offset - (nx * ox + ny * oy + nz * oz)) / denominator;
-        return t > 0 && t < MISS ? t : MISS;
+        return numerator / denominator;
     }
 }

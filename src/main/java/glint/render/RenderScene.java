@@ -23,6 +23,9 @@ public final class RenderScene {
     static final int METAL = 1;
     static final int GLASS = 2;
 
+    /** Scenes with more spheres than this get a bounding volume hierarchy. */
+    static final int BVH_MIN_SPHERES = 16;
+
     /** Smallest GGX alpha used for a highlight; keeps D(h) finite as roughness -> 0. */
     static final double MIN_ALPHA = 1e-4;
 
@@ -32,6 +35,8 @@ public final class RenderScene {
     final int sphereCount;
     final double[] spheres;
     final int[] sphereMaterial;
+    /** Hierarchy over the spheres (which are stored in its order), or null for few spheres. */
+    final SphereBvh bvh;
 
     // planes: unit normal x, y, z and offset n.p, 4 doubles each
     final int planeCount;
@@ -79,6 +84,10 @@ public final class RenderScene {
             Sphere s = (Sphere) sphereObjects.get(i).shape();
             put4(spheres, i, s.center(), s.radius());
             sphereMaterial[i] = indexOf(materials, sphereObjects.get(i).material());
+        }
+        bvh = sphereCount > BVH_MIN_SPHERES ? SphereBvh.build(spheres, sphereCount) : null;
+        if (bvh != null) {
+            reorderSpheres(bvh.order);
         }
         planeCount = planeObjects.size();
         planes = new double[4 * planeCount];
@@ -158,6 +167,29 @@ public final class RenderScene {
 
     public RenderSettings settings() {
         return settings;
+    }
+
+    /** Whether a scene of {@code spheres} spheres is searched through a hierarchy. */
+    public static boolean usesHierarchy(int spheres) {
+        return spheres > BVH_MIN_SPHERES;
+    }
+
+    public boolean hasHierarchy() {
+        return bvh != null;
+    }
+
+    /** The fraction of light a phong shadow ray passes through an object of this material. */
+    double shadowPass(int material) {
+        return materialType[material] == GLASS ? kt[material] : 0;
+    }
+
+    private void reorderSpheres(int[] order) {
+        double[] oldSpheres = spheres.clone();
+        int[] oldMaterial = sphereMaterial.clone();
+        for (int i = 0; i < order.length; i++) {
+            System.arraycopy(oldSpheres, 4 * order[i], spheres, 4 * i, 4);
+            sphereMaterial[i] = oldMaterial[order[i]];
+        }
     }
 
     private static int indexOf(List<Material> materials, Material material) {

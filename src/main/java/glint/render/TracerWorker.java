@@ -13,10 +13,10 @@ final class TracerWorker {
 
     private RenderScene scene;
 
-    // nearest hit of the last ray
-    private double hitT;
-    private int hitSphere;
-    private int hitPlane;
+    private final RayCaster caster = new RayCaster();
+
+    // per frame: screen x = px * screenScaleX + screenOffsetX, likewise y
+    private double screenScaleX, screenOffsetX, screenScaleY, screenOffsetY;
 
     // radiance returned by trace()
     private double outR, outG, outB;
@@ -36,6 +36,13 @@ final class TracerWorker {
     void renderTile(RenderScene renderScene, FrameBuffer frame, int samples, int firstSample, int sampleCount,
                     int frameIndex, int x0, int y0, int x1, int y1) {
         this.scene = renderScene;
+        // image point (px, py) in pixels -> screen (x, y) on the image plane at distance 1
+        double halfWidth = renderScene.tanHalfFov;
+        double halfHeight = halfWidth * frame.height() / frame.width();
+        screenScaleX = 2 * halfWidth / frame.width();
+        screenOffsetX = -halfWidth;
+        screenScaleY = -2 * halfHeight / frame.height();
+        screenOffsetY = halfHeight;
         int side = (int) Math.round(Math.sqrt(samples));
         for (int y = y0; y < y1; y++) {
             for (int x = x0; x < x1; x++) {
@@ -47,7 +54,7 @@ final class TracerWorker {
     private void renderPixel(FrameBuffer frame, int x, int y, int side, int firstSample, int sampleCount,
                              int frameIndex) {
         if (side == 1) {
-            cameraSample(frame, x + 0.5, y + 0.5);
+            cameraSample(x + 0.5, y + 0.5);
             frame.set(x, y, outR, outG, outB);
             return;
         }
@@ -56,7 +63,7 @@ final class TracerWorker {
         for (int sample = firstSample, end = firstSample + sampleCount; sample < end; sample++) {
             int cellX = sample % side, cellY = sample / side;
             long h = SamplePattern.hash(pixelIndex, frameIndex, sample);
-            cameraSample(frame, x + (cellX + SamplePattern.jitterU(h)) / side,
+            cameraSample(x + (cellX + SamplePattern.jitterU(h)) / side,
                     y + (cellY + SamplePattern.jitterV(h)) / side);
             sumR += outR;
             sumG += outG;
@@ -67,10 +74,10 @@ final class TracerWorker {
     }
 
     /** Traces the camera ray through image point (px, py) in pixels from the top-left corner. */
-    private void cameraSample(FrameBuffer frame, double px, double py) {
+    private void cameraSample(double px, double py) {
         RenderScene s = scene;
-        double screenX = (2 * px / frame.width() - 1) * s.tanHalfFov;
-        double screenY = (1 - 2 * py / frame.height()) * s.tanHalfFov * frame.height() / frame.width();
+        double screenX = px * screenScaleX + screenOffsetX;
+        double screenY = py * screenScaleY + screenOffsetY;
         double dx = s.forwardX + screenX * s.rightX + screenY * s.upX;
         double dy = s.forwardY + screenX * s.rightY + screenY * s.upY;
         double dz = s.forwardZ + screenX * s.rightZ + screenY * s.upZ;
@@ -84,18 +91,19 @@ final class TracerWorker {
      */
     void trace(double ox, double oy, double oz, double dx, double dy, double dz, int hitsLeft, double weight) {
         RenderScene s = scene;
-        if (!nearest(ox, oy, oz, dx, dy, dz)) {
+        RayCaster hit = caster;
+        if (!hit.nearest(s, ox, oy, oz, dx, dy, dz)) {
             outR = s.backgroundR;
             outG = s.backgroundG;
             outB = s.backgroundB;
             return;
         }
-        double t = hitT;
+        double t = hit.hitT;
         double px = ox + t * dx, py = oy + t * dy, pz = oz + t * dz;
         double nx, ny, nz;
         int material;
-        if (hitSphere >= 0) {
-            int i = 4 * hitSphere;
+        if (hit.hitSphere >= 0) {
+            int i = 4 * hit.hitSphere;
             double cx = s.spheres[i], cy = s.spheres[i + 1], cz = s.spheres[i + 2], radius = s.spheres[i + 3];
             double ex = px - cx, ey = py - cy, ez = pz - cz;
             double inv = 1 / Math.sqrt(ex * ex + ey * ey + ez * ez);
@@ -106,9 +114,9 @@ final class TracerWorker {
             px = cx + radius * nx;
             py = cy + radius * ny;
             pz = cz + radius * nz;
-            material = s.sphereMaterial[hitSphere];
+            material = s.sphereMaterial[hit.hitSphere];
         } else {
-            int i = 4 * hitPlane;
+            int i = 4 * hit.hitPlane;
             nx = s.planes[i];
             ny = s.planes[i + 1];
             nz = s.planes[i + 2];
@@ -116,7 +124,7 @@ final class TracerWorker {
             px -= off * nx;
             py -= off * ny;
             pz -= off * nz;
-            material = s.planeMaterial[hitPlane];
+            material = s.planeMaterial[hit.hitPlane];
         }
         double offset = s.settings.epsilon() * Math.max(1, Math.sqrt(px * px + py * py + pz * pz));
         double cosIncident = -(dx * nx + dy * ny + dz * nz); // > 0 when the ray meets the front side
@@ -149,8 +157,8 @@ final class TracerWorker {
         double sumR = 0, sumG = 0, sumB = 0;
         double ox = px + offset * nx, oy = py + offset * ny, oz = pz + offset * nz;
         for (int light = 0; light < s.lightCount; light++) {
-            double cosLight = lightAt(light, ox, oy, oz, nx, ny, nz);
-            if (cosLight > 0 && !occluded(ox, oy, oz, toLightX, toLightY, toLightZ, lightDistance)) {
+            double cosLight = lightAt(light, px, py, pz, nx, ny, nz);
+            if (cosLight > 0 && !caster.occluded(s, ox, oy, oz, toLightX, toLightY, toLightZ, lightDistance)) {
                 sumR += irradianceR * cosLight;
                 sumG += irradianceG * cosLight;
                 sumB += irradianceB * cosLight;
@@ -173,8 +181,8 @@ final class TracerWorker {
         double alpha = s.alpha[m];
         if (alpha > 0 && cosView > 0) {
             for (int light = 0; light < s.lightCount; light++) {
-                double cosLight = lightAt(light, ox, oy, oz, nx, ny, nz);
-                if (cosLight <= 0 || occluded(ox, oy, oz, toLightX, toLightY, toLightZ, lightDistance)) {
+                double cosLight = lightAt(light, px, py, pz, nx, ny, nz);
+                if (cosLight <= 0 || caster.occluded(s, ox, oy, oz, toLightX, toLightY, toLightZ, lightDistance)) {
                     continue;
                 }
                 double hx = toLightX - dx, hy = toLightY - dy, hz = toLightZ - dz;
@@ -273,11 +281,11 @@ final class TracerWorker {
         double diffuseR = s.ambientR, diffuseG = s.ambientG, diffuseB = s.ambientB;
         double specR = 0, specG = 0, specB = 0;
         for (int light = 0; light < s.lightCount; light++) {
-            double cosLight = lightAt(light, ox, oy, oz, nx, ny, nz);
+            double cosLight = lightAt(light, px, py, pz, nx, ny, nz);
             if (cosLight <= 0) {
                 continue;
             }
-            double pass = phongTransmittance(ox, oy, oz, toLightX, toLightY, toLightZ, lightDistance);
+            double pass = caster.transmittance(s, ox, oy, oz, toLightX, toLightY, toLightZ, lightDistance);
             if (pass == 0) {
                 continue;
             }
@@ -324,8 +332,10 @@ final class TracerWorker {
     // ---- lights and visibility ----------------------------------------------------------------
 
     /**
-     * Samples light {@code i} from point o: sets toLight, irradiance on a surface facing the light
-     * and lightDistance; returns n.l (the cosine at a surface of normal n).
+     * Samples light {@code i} from surface point o: sets toLight, irradiance on a surface facing the
+     * light and lightDistance; returns n.l (the cosine at a surface of normal n). Taken from the
+     * surface point itself rather than the offset shadow-ray origin (they differ by epsilon |p|), so
+     * that it need not wait for the offset.
      */
     private double lightAt(int i, double ox, double oy, double oz, double nx, double ny, double nz) {
         RenderScene s = scene;
@@ -337,12 +347,12 @@ final class TracerWorker {
             if (distance2 == 0) {
                 return 0;
             }
-            lightDistance = Math.sqrt(distance2);
-            double inv = 1 / lightDistance;
+            double inv = 1 / Math.sqrt(distance2);
+            lightDistance = distance2 * inv;
             toLightX = lx * inv;
             toLightY = ly * inv;
             toLightZ = lz * inv;
-            scale = 1 / distance2;
+            scale = inv * inv;
         } else {
             toLightX = s.lightVector[j];
             toLightY = s.lightVector[j + 1];
@@ -354,80 +364,5 @@ final class TracerWorker {
         irradianceG = s.lightPower[j + 1] * scale;
         irradianceB = s.lightPower[j + 2] * scale;
         return toLightX * nx + toLightY * ny + toLightZ * nz;
-    }
-
-    /** Nearest hit along the ray; sets hitT and hitSphere or hitPlane (the other is -1). */
-    private boolean nearest(double ox, double oy, double oz, double dx, double dy, double dz) {
-        RenderScene s = scene;
-        double best = Intersect.MISS;
-        int sphere = -1, plane = -1;
-        double[] spheres = s.spheres;
-        for (int i = 0, n = s.sphereCount; i < n; i++) {
-            int k = 4 * i;
-            double t = Intersect.sphere(spheres[k], spheres[k + 1], spheres[k + 2], spheres[k + 3], ox, oy, oz, dx, dy, dz);
-            if (t < best) {
-                best = t;
-                sphere = i;
-            }
-        }
-        double[] planes = s.planes;
-        for (int i = 0, n = s.planeCount; i < n; i++) {
-            int k = 4 * i;
-            double t = Intersect.plane(planes[k], planes[k + 1], planes[k + 2], planes[k + 3], ox, oy, oz, dx, dy, dz);
-            if (t < best) {
-                best = t;
-                plane = i;
-                sphere = -1;
-            }
-        }
-        hitT = best;
-        hitSphere = sphere;
-        hitPlane = plane;
-        return best < Intersect.MISS;
-    }
-
-    /** True when anything lies on the ray before distance tMax (shadow rays: any hit, not nearest). */
-    private boolean occluded(double ox, double oy, double oz, double dx, double dy, double dz, double tMax) {
-        RenderScene s = scene;
-        double[] spheres = s.spheres;
-        for (int i = 0, n = s.sphereCount; i < n; i++) {
-            int k = 4 * i;
-            if (Intersect.sphere(spheres[k], spheres[k + 1], spheres[k + 2], spheres[k + 3], ox, oy, oz, dx, dy, dz) < tMax) {
-                return true;
-            }
-        }
-        double[] planes = s.planes;
-        for (int i = 0, n = s.planeCount; i < n; i++) {
-            int k = 4 * i;
-            if (Intersect.plane(planes[k], planes[k + 1], planes[k + 2], planes[k + 3], ox, oy, oz, dx, dy, dz) < tMax) {
-                return true;
-            }
-        }
-        return false;
-    }
-
-    /** Phong shadows: the fraction of light that passes to distance tMax, kt for each glass occluder. */
-    private double phongTransmittance(double ox, double oy, double oz, double dx, double dy, double dz, double tMax) {
-        RenderScene s = scene;
-        double pass = 1;
-        double[] spheres = s.spheres;
-        for (int i = 0, n = s.sphereCount; i < n && pass > 0; i++) {
-            int k = 4 * i;
-            if (Intersect.sphere(spheres[k], spheres[k + 1], spheres[k + 2], spheres[k + 3], ox, oy, oz, dx, dy, dz) < tMax) {
-                pass *= glassPass(s.sphereMaterial[i]);
-            }
-        }
-        double[] planes = s.planes;
-        for (int i = 0, n = s.planeCount; i < n && pass > 0; i++) {
-            int k = 4 * i;
-            if (Intersect.plane(planes[k], planes[k + 1], planes[k + 2], planes[k + 3], ox, oy, oz, dx, dy, dz) < tMax) {
-                pass *= glassPass(s.planeMaterial[i]);
-            }
-        }
-        return pass;
-    }
-
-    private double glassPass(int material) {
-        return scene.materialType[material] == RenderScene.GLASS ? scene.kt[material] : 0;
     }
 }

@@ -1,0 +1,206 @@
+package glint.render;
+
+/**
+ * Finds what a ray meets in a compiled scene: the nearest hit, or any hit before a distance
+ * (shadow rays). Spheres are searched through the scene's {@link SphereBvh} when it has one,
+ * otherwise one by one; planes always one by one. Per worker: holds the last hit and a traversal
+ * stack, and allocates nothing per ray.
+ */
+final class RayCaster {
+
+    private static final int STACK_DEPTH = 128;
+
+    /** Distance to the last nearest hit. */
+    double hitT;
+    /** The sphere of the last nearest hit, or -1. */
+    int hitSphere;
+    /** The plane of the last nearest hit, or -1. */
+    int hitPlane;
+
+    private final int[] stack = new int[STACK_DEPTH];
+
+    /** Nearest hit along the ray; sets hitT and hitSphere or hitPlane (the other is -1). */
+    boolean nearest(RenderScene s, double ox, double oy, double oz, double dx, double dy, double dz) {
+        hitT = Intersect.MISS;
+        hitSphere = -1;
+        hitPlane = -1;
+        if (s.bvh == null) {
+            nearestSphereIn(s, 0, s.sphereCount, ox, oy, oz, dx, dy, dz);
+        } else {
+            nearestSphereInBvh(s, ox, oy, oz, dx, dy, dz);
+        }
+        double[] planes = s.planes;
+        for (int i = 0, n = s.planeCount; i < n; i++) {
+            int k = 4 * i;
+            double t = Intersect.planeBefore(planes[k], planes[k + 1], planes[k + 2], planes[k + 3],
+                    ox, oy, oz, dx, dy, dz, hitT);
+            if (t < hitT) {
+                hitT = t;
+                hitPlane = i;
+                hitSphere = -1;
+            }
+        }
+        return hitT < Intersect.MISS;
+    }
+
+    private void nearestSphereIn(RenderScene s, int first, int end,
+                                 double ox, double oy, double oz, double dx, double dy, double dz) {
+        double[] spheres = s.spheres;
+        for (int i = first; i < end; i++) {
+            int k = 4 * i;
+            double t = Intersect.sphereBefore(spheres[k], spheres[k + 1], spheres[k + 2], spheres[k + 3],
+                    ox, oy, oz, dx, dy, dz, hitT);
+            if (t < hitT) {
+                hitT = t;
+                hitSphere = i;
+            }
+        }
+    }
+
+    private void nearestSphereInBvh(RenderScene s, double ox, double oy, double oz,
+                                    double dx, double dy, double dz) {
+        SphereBvh bvh = s.bvh;
+        double ix = 1 / nonZero(dx), iy = 1 / nonZero(dy), iz = 1 / nonZero(dz);
+        int top = 0;
+        stack[top++] = 0;
+        while (top > 0) {
+            int node = stack[--top];
+            if (boxEntry(bvh.bounds, node, ox, oy, oz, ix, iy, iz) >= hitT) {
+                continue;
+            }
+            int count = bvh.links[2 * node + 1];
+            int link = bvh.links[2 * node];
+            if (count > 0) {
+                nearestSphereIn(s, link, link + count, ox, oy, oz, dx, dy, dz);
+                continue;
+            }
+            // visit the nearer child first: push it last
+            double left = boxEntry(bvh.bounds, link, ox, oy, oz, ix, iy, iz);
+            double right = boxEntry(bvh.bounds, link + 1, ox, oy, oz, ix, iy, iz);
+            if (left <= right) {
+                if (right < hitT) {
+                    stack[top++] = link + 1;
+                }
+                if (left < hitT) {
+                    stack[top++] = link;
+                }
+            } else {
+                if (left < hitT) {
+                    stack[top++] = link;
+                }
+                if (right < hitT) {
+                    stack[top++] = link + 1;
+                }
+            }
+        }
+    }
+
+    /** True when anything lies on the ray before distance tMax (any hit, not the nearest). */
+    boolean occluded(RenderScene s, double ox, double oy, double oz, double dx, double dy, double dz, double tMax) {
+        double[] planes = s.planes;
+        for (int i = 0, n = s.planeCount; i < n; i++) {
+            int k = 4 * i;
+            if (Intersect.planeBefore(planes[k], planes[k + 1], planes[k + 2], planes[k + 3],
+                    ox, oy, oz, dx, dy, dz, tMax) < tMax) {
+                return true;
+            }
+        }
+        return s.bvh == null
+                ? anySphereIn(s, 0, s.sphereCount, ox, oy, oz, dx, dy, dz, tMax)
+                : anySphereInBvh(s, ox, oy, oz, dx, dy, dz, tMax);
+    }
+
+    private static boolean anySphereIn(RenderScene s, int first, int end, double ox, double oy, double oz,
+                                       double dx, double dy, double dz, double tMax) {
+        double[] spheres = s.spheres;
+        for (int i = first; i < end; i++) {
+            int k = 4 * i;
+            if (Intersect.sphereBefore(spheres[k], spheres[k + 1], spheres[k + 2], spheres[k + 3],
+                    ox, oy, oz, dx, dy, dz, tMax) < tMax) {
+                return true;
+            }
+        }
+        return false;
+    }
+
+    private boolean anySphereInBvh(RenderScene s, double ox, double oy, double oz,
+                                   double dx, double dy, double dz, double tMax) {
+        SphereBvh bvh = s.bvh;
+        double ix = 1 / nonZero(dx), iy = 1 / nonZero(dy), iz = 1 / nonZero(dz);
+        int top = 0;
+        stack[top++] = 0;
+        while (top > 0) {
+            int node = stack[--top];
+            if (boxEntry(bvh.bounds, node, ox, oy, oz, ix, iy, iz) >= tMax) {
+                continue;
+            }
+            int count = bvh.links[2 * node + 1];
+            int link = bvh.links[2 * node];
+            if (count > 0) {
+                if (anySphereIn(s, link, link + count, ox, oy, oz, dx, dy, dz, tMax)) {
+                    return true;
+                }
+            } else {
+                stack[top++] = link + 1;
+                stack[top++] = link;
+            }
+        }
+        return false;
+    }
+
+    /**
+     * Phong shadows: the fraction of light passing to distance tMax, kt for each glass object
+     * crossed, 0 at the first opaque one. Objects are visited one by one (the BVH finds nearest and
+     * any hits; a product over all hits is rare enough to need neither).
+     */
+    double transmittance(RenderScene s, double ox, double oy, double oz, double dx, double dy, double dz,
+                         double tMax) {
+        double pass = 1;
+        double[] planes = s.planes;
+        for (int i = 0, n = s.planeCount; i < n && pass > 0; i++) {
+            int k = 4 * i;
+            if (Intersect.planeBefore(planes[k], planes[k + 1], planes[k + 2], planes[k + 3],
+                    ox, oy, oz, dx, dy, dz, tMax) < tMax) {
+                pass *= s.shadowPass(s.planeMaterial[i]);
+            }
+        }
+        double[] spheres = s.spheres;
+        for (int i = 0, n = s.sphereCount; i < n && pass > 0; i++) {
+            int k = 4 * i;
+            if (Intersect.sphereBefore(spheres[k], spheres[k + 1], spheres[k + 2], spheres[k + 3],
+                    ox, oy, oz, dx, dy, dz, tMax) < tMax) {
+                pass *= s.shadowPass(s.sphereMaterial[i]);
+            }
+        }
+        return pass;
+    }
+
+    /**
+     * Distance along the ray to where it enters the node's box (0 when it starts inside), or
+     * {@link Intersect#MISS}. Slab test with precomputed reciprocal directions; zero direction
+     * components are replaced by a tiny one first, so no 0 x infinity makes a NaN.
+     */
+    private static double boxEntry(double[] bounds, int node, double ox, double oy, double oz,
+                                   double ix, double iy, double iz) {
+        int b = 6 * node;
+        double tx0 = (bounds[b] - ox) * ix, tx1 = (bounds[b + 3] - ox) * ix;
+        double ty0 = (bounds[b + 1] - oy) * iy, ty1 = (bounds[b + 4] - oy) * iy;
+        double tz0 = (bounds[b + 2] - oz) * iz, tz1 = (bounds[b + 5] - oz) * iz;
+        double near = max(max(min(tx0, tx1), min(ty0, ty1)), max(min(tz0, tz1), 0));
+        double far = min(min(max(tx0, tx1), max(ty0, ty1)), max(tz0, tz1));
+        return near <= far * (1 + 2e-16 * 4) ? near : Intersect.MISS;
+    }
+
+    private static double nonZero(double component) {
+        return component == 0 ? 1e-300 : component;
+    }
+
+    // plain comparisons: no NaN can reach them, so Math.min/max's NaN handling is not needed
+    private static double min(double a, double b) {
+        return a < b ? a : b;
+    }
+
+    private static double max(double a, double b) {
+        return a > b ? a : b;
+    }
+}
