@@ -1,0 +1,68 @@
+package glint.bench;
+
+import glint.config.Shading;
+import glint.input.InputException;
+import glint.render.FrameBuffer;
+import glint.render.RenderScene;
+import glint.render.RenderSettings;
+import glint.render.Tracer;
+import glint.scene.SceneLoader;
+import java.util.concurrent.TimeUnit;
+import org.openjdk.jmh.annotations.Benchmark;
+import org.openjdk.jmh.annotations.BenchmarkMode;
+import org.openjdk.jmh.annotations.Fork;
+import org.openjdk.jmh.annotations.Level;
+import org.openjdk.jmh.annotations.Measurement;
+import org.openjdk.jmh.annotations.Mode;
+import org.openjdk.jmh.annotations.OutputTimeUnit;
+import org.openjdk.jmh.annotations.Param;
+import org.openjdk.jmh.annotations.Scope;
+import org.openjdk.jmh.annotations.Setup;
+import org.openjdk.jmh.annotations.State;
+import org.openjdk.jmh.annotations.TearDown;
+import org.openjdk.jmh.annotations.Warmup;
+
+/**
+ * Frame time against thread count, sphere count and material (the 2020 report's figures 16 and
+ * 17): 800x600, 1 sample per pixel, depth 5, cook-torrance.
+ */
+@State(Scope.Benchmark)
+@BenchmarkMode(Mode.AverageTime)
+@OutputTimeUnit(TimeUnit.MILLISECONDS)
+@Warmup(iterations = 2, time = 1)
+@Measurement(iterations = 3, time = 1)
+@Fork(1)
+public class FrameBenchmark {
+
+    @Param({"1", "2", "4", "8"})
+    public int threads;
+
+    @Param({"1", "5", "10", "15", "20", "25"})
+    public int spheres;
+
+    @Param({"matte", "glass"})
+    public String material;
+
+    private RenderScene scene;
+    private FrameBuffer frame;
+    private Tracer tracer;
+
+    @Setup(Level.Trial)
+    public void setUp() throws InputException {
+        scene = RenderScene.compile(SceneLoader.parse("bench", BenchScenes.row(spheres, material)),
+                new RenderSettings(Shading.COOK_TORRANCE, 5, 1e-3, 1e-9));
+        frame = new FrameBuffer(800, 600);
+        tracer = new Tracer(threads);
+    }
+
+    @TearDown(Level.Trial)
+    public void tearDown() {
+        tracer.close();
+    }
+
+    @Benchmark
+    public FrameBuffer renderFrame() {
+        tracer.render(scene, frame, 1, 0, 8);
+        return frame;
+    }
+}

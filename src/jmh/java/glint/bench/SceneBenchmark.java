@@ -1,0 +1,72 @@
+package glint.bench;
+
+import glint.config.Shading;
+import glint.input.InputException;
+import glint.render.FrameBuffer;
+import glint.render.RenderScene;
+import glint.render.RenderSettings;
+import glint.render.Tracer;
+import glint.scene.SceneLoader;
+import java.nio.file.Path;
+import java.util.concurrent.TimeUnit;
+import org.openjdk.jmh.annotations.Benchmark;
+import org.openjdk.jmh.annotations.BenchmarkMode;
+import org.openjdk.jmh.annotations.Fork;
+import org.openjdk.jmh.annotations.Level;
+import org.openjdk.jmh.annotations.Measurement;
+import org.openjdk.jmh.annotations.Mode;
+import org.openjdk.jmh.annotations.OutputTimeUnit;
+import org.openjdk.jmh.annotations.Param;
+import org.openjdk.jmh.annotations.Scope;
+import org.openjdk.jmh.annotations.Setup;
+import org.openjdk.jmh.annotations.State;
+import org.openjdk.jmh.annotations.TearDown;
+import org.openjdk.jmh.annotations.Warmup;
+
+/**
+ * The target scenes of docs/benchmarks.md: the default scene, 25 glass spheres, 1,000 spheres;
+ * 800x600, 1 sample per pixel, depth 5, cook-torrance, 1 and 2 threads. Run with -prof gc to see
+ * the allocation per frame.
+ */
+@State(Scope.Benchmark)
+@BenchmarkMode(Mode.AverageTime)
+@OutputTimeUnit(TimeUnit.MILLISECONDS)
+@Warmup(iterations = 3, time = 1)
+@Measurement(iterations = 5, time = 1)
+@Fork(1)
+public class SceneBenchmark {
+
+    @Param({"default", "glass-25", "field-1000"})
+    public String scene;
+
+    @Param({"1", "2"})
+    public int threads;
+
+    private RenderScene compiled;
+    private FrameBuffer frame;
+    private Tracer tracer;
+
+    @Setup(Level.Trial)
+    public void setUp() throws InputException {
+        String text = switch (scene) {
+            case "glass-25" -> BenchScenes.row(25, "glass");
+            case "field-1000" -> BenchScenes.field(1000);
+            default -> null;
+        };
+        compiled = RenderScene.compile(text == null ? SceneLoader.load(Path.of("scenes/default.yaml"))
+                : SceneLoader.parse(scene, text), new RenderSettings(Shading.COOK_TORRANCE, 5, 1e-3, 1e-9));
+        frame = new FrameBuffer(800, 600);
+        tracer = new Tracer(threads);
+    }
+
+    @TearDown(Level.Trial)
+    public void tearDown() {
+        tracer.close();
+    }
+
+    @Benchmark
+    public FrameBuffer renderFrame() {
+        tracer.render(compiled, frame, 1, 0, 8);
+        return frame;
+    }
+}

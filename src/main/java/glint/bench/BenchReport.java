@@ -1,0 +1,126 @@
+package glint.bench;
+
+import java.io.IOException;
+import java.nio.charset.StandardCharsets;
+import java.nio.file.Files;
+import java.nio.file.Path;
+import java.util.ArrayList;
+import java.util.List;
+import java.util.Locale;
+import java.util.Map;
+import java.util.TreeMap;
+import java.util.TreeSet;
+import org.knowm.xchart.BitmapEncoder;
+import org.knowm.xchart.XYChart;
+import org.knowm.xchart.XYChartBuilder;
+import org.knowm.xchart.style.markers.SeriesMarkers;
+import org.snakeyaml.engine.v2.api.Load;
+import org.snakeyaml.engine.v2.api.LoadSettings;
+
+/**
+ * Turns a JMH JSON result file into the charts docs/images/bench-*.png and the results table of
+ * docs/benchmarks.md (between its results markers).
+ *
+ * <p>Usage: {@code java -cp target/glint.jar glint.bench.BenchReport target/jmh.json [docs]}
+ */
+public final class BenchReport {
+
+    static final String START = "<!-- results:start -->";
+    static final String END = "<!-- results:end -->";
+
+    /** One benchmark result: name, parameters, score and its 99.9% error, in ms per frame. */
+    record Result(String benchmark, Map<String, String> params, double score, double error) {
+
+        String param(String key) {
+            return params.getOrDefault(key, "");
+        }
+    }
+
+    private BenchReport() {
+    }
+
+    public static void main(String[] args) throws IOException {
+        if (args.length < 1) {
+            System.err.println("usage: java -cp target/glint.jar glint.bench.BenchReport JMH_JSON [DOCS_FOLDER]");
+            System.exit(2);
+        }
+        Path docs = Path.of(args.length > 1 ? args[1] : "docs");
+        List<Result> results = read(Path.of(args[0]));
+        Files.createDirectories(docs.resolve("images"));
+        for (String material : new String[] {"matte", "glass"}) {
+            List<Result> series = results.stream()
+                    .filter(r -> r.benchmark().endsWith("FrameBenchmark.renderFrame") && r.param("material").equals(material))
+                    .toList();
+            if (!series.isEmpty()) {
+                writeChart(series, material, docs.resolve("images/bench-" + material + ".png"));
+            }
+        }
+        Path page = docs.resolve("benchmarks.md");
+        String table = table(results, args[0]);
+        String text = Files.exists(page) ? Files.readString(page) : "# Benchmarks\n\n" + START + "\n" + END + "\n";
+        int a = text.indexOf(START), b = text.indexOf(END);
+        if (a < 0 || b < a) {
+            text = text + "\n" + START + "\n" + END + "\n";
+            a = text.indexOf(START);
+            b = text.indexOf(END);
+        }
+        text = text.substring(0, a + START.length()) + "\n" + table + text.substring(b);
+        Files.writeString(page, text, StandardCharsets.UTF_8);
+        System.out.println("wrote " + page + " and charts in " + docs.resolve("images"));
+    }
+
+    @SuppressWarnings("unchecked")
+    static List<Result> read(Path json) throws IOException {
+        Object root = new Load(LoadSettings.builder().setCodePointLimit(64 * 1024 * 1024).build())
+                .loadFromString(Files.readString(json));
+        List<Result> results = new ArrayList<>();
+        for (Object item : (List<Object>) root) {
+            Map<String, Object> entry = (Map<String, Object>) item;
+            Map<String, Object> metric = (Map<String, Object>) entry.get("primaryMetric");
+            Map<String, String> params = new TreeMap<>();
+            Object p = entry.get("params");
+            if (p instanceof Map<?, ?> map) {
+                map.forEach((k, v) -> params.put(String.valueOf(k), String.valueOf(v)));
+            }
+            results.add(new Result(String.valueOf(entry.get("benchmark")), params,
+                    number(metric.get("score")), number(metric.get("scoreError"))));
+        }
+        return results;
+    }
+
+    private static double number(Object value) {
+        return value instanceof Number n ? n.doubleValue() : Double.NaN;
+    }
+
+    private static void writeChart(List<Result> series, String material, Path file) throws IOException {
+        XYChart chart = new XYChartBuilder().width(800).height(500)
+                .title("Frame time, " + material + " spheres on a floor (800x600, 1 spp, depth 5)")
+                .xAxisTitle("spheres").yAxisTitle("ms per frame").build();
+        chart.getStyler().setLegendVisible(true);
+        TreeSet<Integer> threadCounts = new TreeSet<>();
+        series.forEach(r -> threadCounts.add(Integer.parseInt(r.param("threads"))));
+        for (int threads : threadCounts) {
+            List<Result> line = series.stream().filter(r -> r.param("threads").equals(String.valueOf(threads)))
+                    .sorted((x, y) -> Integer.compare(Integer.parseInt(x.param("spheres")), Integer.parseInt(y.param("spheres"))))
+                    .toList();
+            double[] x = line.stream().mapToDouble(r -> Double.parseDouble(r.param("spheres"))).toArray();
+            double[] y = line.stream().mapToDouble(Result::score).toArray();
+            double[] e = line.stream().mapToDouble(r -> Double.isNaN(r.error()) ? 0 : r.error()).toArray();
+            chart.addSeries(threads + (threads == 1 ? " thread" : " threads"), x, y, e).setMarker(SeriesMarkers.CIRCLE);
+        }
+        BitmapEncoder.saveBitmap(chart, file.toString(), BitmapEncoder.BitmapFormat.PNG);
+    }
+
+    static String table(List<Result> results, String source) {
+        StringBuilder md = new StringBuilder();
+        md.append(String.format(Locale.ROOT, "Generated from `%s` by `java -cp target/glint.jar glint.bench.BenchReport %s`.%n%n",
+                source, source));
+        md.append("| benchmark | parameters | ms per frame | ± (99.9%) | frames per second |\n|---|---|---:|---:|---:|\n");
+        for (Result r : results) {
+            String name = r.benchmark().substring(r.benchmark().lastIndexOf('.', r.benchmark().lastIndexOf('.') - 1) + 1);
+            md.append(String.format(Locale.ROOT, "| %s | %s | %.2f | %.2f | %.1f |%n", name,
+                    r.params().toString().replace("{", "").replace("}", ""), r.score(), r.error(), 1000 / r.score()));
+        }
+        return md.toString();
+    }
+}
