@@ -1,0 +1,62 @@
+package glint.study;
+
+import java.util.ArrayList;
+import java.util.HashSet;
+import java.util.List;
+import java.util.Set;
+
+/** The markdown tables of the speed/accuracy study. */
+final class AccuracyReport {
+
+    private AccuracyReport() {
+    }
+
+    /** One table: configurations by time, with relMSE, SSIM, and marks for the front and the default. */
+    static String table(List<Measurement> ms) {
+        double[] x = new double[ms.size()], y = new double[ms.size()];
+        for (int i = 0; i < ms.size(); i++) {
+            x[i] = ms.get(i).millis();
+            y[i] = ms.get(i).relMse();
+        }
+        Set<Integer> front = new HashSet<>(Pareto.front(x, y));
+        List<Integer> order = new ArrayList<>();
+        for (int i = 0; i < ms.size(); i++) {
+            order.add(i);
+        }
+        order.sort((a, b) -> Double.compare(x[a], x[b]));
+        StringBuilder b = new StringBuilder();
+        b.append("| configuration | ms | relMSE | SSIM | on the front |\n");
+        b.append("|---|--:|--:|--:|:-:|\n");
+        StudyConfig shipped = StudyConfig.shipped();
+        for (int i : order) {
+            Measurement m = ms.get(i);
+            String name = m.config().equals(shipped) ? "**" + m.config().label() + "** (shipped)" : m.config().label();
+            b.append("| ").append(name)
+                    .append(" | ").append(Numbers.fixed(m.millis(), 1))
+                    .append(" | ").append(Numbers.sig3(m.relMse()))
+                    .append(" | ").append(Numbers.fixed(m.ssim(), 4))
+                    .append(" | ").append(front.contains(i) ? "yes" : "")
+                    .append(" |\n");
+        }
+        return b.toString();
+    }
+
+    /** Per configuration, the geometric mean over scenes of time and relMSE and the mean SSIM. */
+    static List<Measurement> geometricMean(List<List<Measurement>> perScene) {
+        List<Measurement> out = new ArrayList<>();
+        int configs = perScene.get(0).size();
+        for (int c = 0; c < configs; c++) {
+            double logMs = 0, logErr = 0, ssim = 0;
+            for (List<Measurement> scene : perScene) {
+                Measurement m = scene.get(c);
+                logMs += Math.log(m.millis());
+                logErr += Math.log(m.relMse());
+                ssim += m.ssim();
+            }
+            int n = perScene.size();
+            out.add(new Measurement("geometric mean", perScene.get(0).get(c).config(), Math.exp(logMs / n),
+                    Math.exp(logErr / n), ssim / n));
+        }
+        return out;
+    }
+}

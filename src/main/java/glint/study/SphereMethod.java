@@ -1,0 +1,54 @@
+package glint.study;
+
+import glint.render.Intersect;
+
+/** The four ray-sphere tests the stability study compares: two formulas, two precisions. */
+public enum SphereMethod {
+
+    NAIVE_FLOAT("naive quadratic, float", true),
+    STABLE_FLOAT("stable form (RTG ch. 7), float", true),
+    NAIVE_DOUBLE("naive quadratic, double", false),
+    STABLE_DOUBLE("stable form, double (Glint)", false);
+
+    private final String label;
+    private final boolean single;
+
+    SphereMethod(String label, boolean single) {
+        this.label = label;
+        this.single = single;
+    }
+
+    public String label() {
+        return label;
+    }
+
+    /** True for the single-precision methods, which see every input rounded to float. */
+    public boolean isFloat() {
+        return single;
+    }
+
+    /** The input as this method sees it: rounded to float for the float methods. */
+    public double input(double v) {
+        return single ? (float) v : v;
+    }
+
+    /**
+     * Nearest t > 0, or {@link Double#POSITIVE_INFINITY} for a miss. Arguments are taken as they
+     * are; call {@link #input} first so that the exact answer is computed from the same values.
+     */
+    public double nearestT(double cx, double cy, double cz, double r, double ox, double oy, double oz,
+                           double dx, double dy, double dz) {
+        return switch (this) {
+            case NAIVE_FLOAT -> widen(FloatSphere.naive((float) cx, (float) cy, (float) cz, (float) r,
+                    (float) ox, (float) oy, (float) oz, (float) dx, (float) dy, (float) dz));
+            case STABLE_FLOAT -> widen(FloatSphere.stable((float) cx, (float) cy, (float) cz, (float) r,
+                    (float) ox, (float) oy, (float) oz, (float) dx, (float) dy, (float) dz));
+            case NAIVE_DOUBLE -> Intersect.sphereNaive(cx, cy, cz, r, ox, oy, oz, dx, dy, dz);
+            case STABLE_DOUBLE -> Intersect.sphere(cx, cy, cz, r, ox, oy, oz, dx, dy, dz);
+        };
+    }
+
+    private static double widen(float t) {
+        return t == FloatSphere.MISS ? Double.POSITIVE_INFINITY : t;
+    }
+}
