@@ -97,6 +97,7 @@ public final class BenchReport {
                 .title("Frame time, " + material + " spheres on a floor (800x600, 1 spp, depth 5)")
                 .xAxisTitle("spheres").yAxisTitle("ms per frame").build();
         chart.getStyler().setLegendVisible(true);
+        chart.getStyler().setYAxisMin(0.0);
         TreeSet<Integer> threadCounts = new TreeSet<>();
         series.forEach(r -> threadCounts.add(Integer.parseInt(r.param("threads"))));
         for (int threads : threadCounts) {

@@ -45,10 +45,12 @@ public final class SceneLoader {
     private static final Set<String> MATERIAL_TYPES = ordered("matte", "metal", "glass");
 
     private final YamlTree yaml;
+    private final SceneLimits limits;
     private final Map<String, Material> materials = new LinkedHashMap<>(); // presets first, for hints
 
-    private SceneLoader(String file) {
+    private SceneLoader(String file, SceneLimits limits) {
         this.yaml = new YamlTree(file);
+        this.limits = limits;
         for (MaterialType type : MaterialType.values()) {
             materials.put(type.key(), Material.preset(type));
         }
@@ -56,16 +58,43 @@ public final class SceneLoader {
 
     /** Loads a scene file; {@code path} is also how the file is named in error messages. */
     public static Scene load(Path path) throws InputException {
-        return parse(path.toString(), read(path));
+        return load(path, SceneLimits.DEFAULT);
+    }
+
+    /** Loads a scene file within the given limits. */
+    public static Scene load(Path path, SceneLimits limits) throws InputException {
+        return parse(path.toString(), read(path, limits), limits);
     }
 
     /** Parses scene text; {@code file} names it in error messages. */
     public static Scene parse(String file, String text) throws InputException {
-        return new SceneLoader(file).scene(compose(file, text));
+        return parse(file, text, SceneLimits.DEFAULT);
     }
 
-    static String read(Path path) throws InputException {
+    /** Parses scene text within the given limits. */
+    public static Scene parse(String file, String text, SceneLimits limits) throws InputException {
+        if (text.length() > limits.maxFileBytes()) {
+            throw tooBig(file, text.length(), limits);
+        }
+        NestingCheck.check(file, text, SceneLimits.MAX_NESTING);
+        return new SceneLoader(file, limits).scene(compose(file, text, limits));
+    }
+
+    private static InputException tooBig(String file, long size, SceneLimits limits) {
+        return new InputException(file, 0, 0, String.format(java.util.Locale.ROOT,
+                "the file is %.1f MB; the largest scene accepted is %.1f MB (config key max_scene_bytes)",
+                size / 1048576.0, limits.maxFileBytes() / 1048576.0));
+    }
+
+    static String read(Path path, SceneLimits limits) throws InputException {
         try {
+            if (Files.isDirectory(path)) {
+                throw new InputException(path.toString(), 0, 0, "is a folder, not a scene file");
+            }
+            long size = Files.size(path);
+            if (size > limits.maxFileBytes()) {
+                throw tooBig(path.toString(), size, limits);
+            }
             byte[] bytes = Files.readAllBytes(path);
             return StandardCharsets.UTF_8.newDecoder()
                     .onMalformedInput(CodingErrorAction.REPORT)
@@ -79,11 +108,13 @@ public final class SceneLoader {
         }
     }
 
-    private static Node compose(String file, String text) throws InputException {
+    private static Node compose(String file, String text, SceneLimits limits) throws InputException {
         LoadSettings settings = LoadSettings.builder()
                 .setLabel(file)
                 .setAllowDuplicateKeys(true) // reported by YamlTree with a position
                 .setMaxAliasesForCollections(50)
+                .setAllowRecursiveKeys(false)
+                .setCodePointLimit((int) Math.min(Integer.MAX_VALUE, limits.maxFileBytes()))
                 .setUseMarks(true)
                 .build();
         Optional<Node> root;
@@ -99,7 +130,12 @@ public final class SceneLoader {
                     ? new InputException(file, 0, 0, problem)
                     : new InputException(file, mark.getLine() + 1, mark.getColumn() + 1, problem);
         } catch (YamlEngineException e) {
-            throw new InputException(file, 0, 0, "YAML error: " + e.getMessage());
+            String message = String.valueOf(e.getMessage());
+            throw new InputException(file, 0, 0, message.startsWith("Number of aliases")
+                    ? "YAML error: more than 50 aliases of lists or mappings (an alias bomb?); write the values out"
+                    : "YAML error: " + message);
+        } catch (StackOverflowError e) {
+            throw new InputException(file, 0, 0, "the YAML is nested too deeply to read");
         }
         if (root.isEmpty() || YamlTree.isNull(root.get())) {
             throw new InputException(file, 1, 1,
@@ -122,12 +158,20 @@ public final class SceneLoader {
         List<Light> lights = new ArrayList<>();
         if (top.containsKey("lights")) {
             for (Node item : yaml.sequence(top.get("lights"), "lights")) {
+                if (lights.size() == limits.maxLights()) {
+                    throw yaml.error(item, "too many lights: more than " + limits.maxLights()
+                            + " (config key max_lights)");
+                }
                 lights.add(light(item));
             }
         }
         List<SceneObject> objects = new ArrayList<>();
         if (top.containsKey("objects")) {
             for (Node item : yaml.sequence(top.get("objects"), "objects")) {
+                if (objects.size() == limits.maxObjects()) {
+                    throw yaml.error(item, "too many objects: more than " + limits.maxObjects()
+                            + " (config key max_objects)");
+                }
                 objects.add(object(item));
             }
         }
