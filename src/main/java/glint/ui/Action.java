@@ -1,0 +1,38 @@
+package glint.ui;
+
+/**
+ * What a key (or the mouse) asks for. Motions act for as long as their key is held; commands act
+ * once per press.
+ */
+public enum Action {
+    FORWARD(Kind.MOTION), BACK(Kind.MOTION), LEFT(Kind.MOTION), RIGHT(Kind.MOTION),
+    UP(Kind.MOTION), DOWN(Kind.MOTION),
+    YAW_LEFT(Kind.MOTION), YAW_RIGHT(Kind.MOTION), PITCH_UP(Kind.MOTION), PITCH_DOWN(Kind.MOTION),
+    ROLL_LEFT(Kind.MOTION), ROLL_RIGHT(Kind.MOTION),
+    /** Held with motion keys: fly and turn faster. */
+    FAST(Kind.MODIFIER),
+    /** Not a key: dragging with the mouse looks around. */
+    LOOK(Kind.POINTER),
+    /** Not a key: the mouse wheel changes the flying speed. */
+    SPEED(Kind.POINTER),
+    TOGGLE_SHADING(Kind.COMMAND), DEPTH_UP(Kind.COMMAND), DEPTH_DOWN(Kind.COMMAND),
+    SCREENSHOT(Kind.COMMAND), RELOAD(Kind.COMMAND), QUIT(Kind.COMMAND),
+    TOGGLE_OVERLAY(Kind.COMMAND), TOGGLE_HELP(Kind.COMMAND);
+
+    /** How an action is triggered. */
+    public enum Kind { MOTION, MODIFIER, POINTER, COMMAND }
+
+    private final Kind kind;
+
+    Action(Kind kind) {
+        this.kind = kind;
+    }
+
+    public Kind kind() {
+        return kind;
+    }
+
+    public boolean isHeld() {
+        return kind == Kind.MOTION || kind == Kind.MODIFIER;
+    }
+}

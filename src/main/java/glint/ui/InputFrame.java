@@ -1,0 +1,82 @@
+package glint.ui;
+
+import java.util.List;
+
+/**
+ * What the user did since the previous engine update, as taken from {@link InputState#drain}.
+ *
+ * @param heldSeconds   by {@link Action#ordinal()}: how long each held action was held in the interval
+ * @param fast          whether the fast modifier is held now
+ * @param motionHeld    whether any motion key is held now
+ * @param dragX         mouse drag to the right since the last update, in pixels
+ * @param dragY         mouse drag downwards since the last update, in pixels
+ * @param wheelNotches  wheel rotation since the last update (negative: away from the user)
+ * @param commands      commands in the order they were given
+ */
+public record InputFrame(double[] heldSeconds, boolean fast, boolean motionHeld, double dragX, double dragY,
+                         int wheelNotches, List<Action> commands) {
+
+    public InputFrame {
+        heldSeconds = heldSeconds.clone();
+        commands = List.copyOf(commands);
+    }
+
+    /** Nothing happened. */
+    public static InputFrame none() {
+        return new InputFrame(new double[Action.values().length], false, false, 0, 0, 0, List.of());
+    }
+
+    /** Seconds {@code action} was held in the interval. */
+    public double seconds(Action action) {
+        return heldSeconds[action.ordinal()];
+    }
+
+    /** Builds frames for tests and for {@link InputState}. */
+    public static final class Builder {
+        private final double[] held = new double[Action.values().length];
+        private boolean fast;
+        private boolean motionHeld;
+        private double dragX;
+        private double dragY;
+        private int wheel;
+        private final java.util.ArrayList<Action> commands = new java.util.ArrayList<>();
+
+        public Builder hold(Action action, double seconds) {
+            held[action.ordinal()] += seconds;
+            if (action.kind() == Action.Kind.MOTION && seconds > 0) {
+                motionHeld = true;
+            }
+            return this;
+        }
+
+        public Builder fast(boolean isFast) {
+            this.fast = isFast;
+            return this;
+        }
+
+        public Builder motionHeld(boolean held) {
+            this.motionHeld = held;
+            return this;
+        }
+
+        public Builder drag(double dx, double dy) {
+            dragX += dx;
+            dragY += dy;
+            return this;
+        }
+
+        public Builder wheel(int notches) {
+            wheel += notches;
+            return this;
+        }
+
+        public Builder command(Action action) {
+            commands.add(action);
+            return this;
+        }
+
+        public InputFrame build() {
+            return new InputFrame(held, fast, motionHeld, dragX, dragY, wheel, commands);
+        }
+    }
+}
