@@ -103,7 +103,7 @@ public final class Main implements Callable<Integer> {
             }
             return Headless.bench(scenePath, settings, bench, out);
         }
-        return WindowLauncher.open(scenePath, settings, err);
+        return WindowLauncher.open(scenePath, settings, () -> overrides(loadConfig()), err);
     }
 
     private Config loadConfig() throws InputException {

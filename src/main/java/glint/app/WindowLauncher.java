@@ -1,23 +1,59 @@
 package glint.app;
 
 import glint.config.Config;
+import glint.input.InputException;
+import glint.ui.ConfigSource;
+import glint.ui.GlintWindow;
+import glint.ui.SceneSource;
+import glint.ui.Screenshots;
+import java.awt.AWTError;
 import java.awt.GraphicsEnvironment;
+import java.awt.HeadlessException;
 import java.io.PrintWriter;
 import java.nio.file.Path;
 
-/** Opens the interactive window, or explains why it cannot. */
+/** Opens the interactive window (docs/window.md), or explains in one line why it cannot. */
 final class WindowLauncher {
 
     private WindowLauncher() {
     }
 
-    static int open(Path scenePath, Config config, PrintWriter err) {
+    /** The window on a scene whose config cannot be read again (F5 reloads the scene only). */
+    static int open(Path scenePath, Config config, PrintWriter err) throws InputException {
+        return open(scenePath, config, () -> config, err);
+    }
+
+    /**
+     * Opens the window and returns the exit status when it is closed: 0 when the user quits, 1 when
+     * there is no display. A scene that does not load throws before any window opens.
+     *
+     * @param reload reads the config again for F5
+     */
+    static int open(Path scenePath, Config config, ConfigSource reload, PrintWriter err) throws InputException {
         if (GraphicsEnvironment.isHeadless()) {
-            err.println("glint: no display available for the window; render a still with "
-                    + "--output FILE.png (for example: java -jar target/glint.jar --output out.png)");
+            return noDisplay(err, "no display available for the window");
+        }
+        GlintWindow window;
+        try {
+            window = GlintWindow.open(config, new SceneSource(scenePath, reload),
+                    new Screenshots(Path.of("").toAbsolutePath()), err);
+        } catch (GlintWindow.UnavailableException e) {
+            return noDisplay(err, "cannot open the window (" + e.getMessage() + ")");
+        } catch (AWTError | HeadlessException e) {
+            return noDisplay(err, "cannot open the window (" + e.getMessage() + ")");
+        }
+        try {
+            return window.awaitExit();
+        } catch (InterruptedException e) {
+            window.close();
+            Thread.currentThread().interrupt();
             return Main.FAILURE;
         }
-        err.println("glint: the window is not yet available; render a still with --output FILE.png");
+    }
+
+    private static int noDisplay(PrintWriter err, String why) {
+        err.println("glint: " + why + "; render a still with "
+                + "--output FILE.png (for example: java -jar target/glint.jar --output out.png)");
         return Main.FAILURE;
     }
 }

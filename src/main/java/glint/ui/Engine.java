@@ -1,0 +1,446 @@
+package glint.ui;
+
+import glint.config.Config;
+import glint.config.Shading;
+import glint.input.InputException;
+import glint.render.RenderScene;
+import glint.render.RenderSettings;
+import glint.scene.Camera;
+import glint.scene.Scene;
+import java.awt.image.BufferedImage;
+import java.io.IOException;
+import java.io.PrintWriter;
+import java.nio.file.AccessDeniedException;
+import java.nio.file.NoSuchFileException;
+import java.nio.file.Path;
+import java.util.Locale;
+import java.util.concurrent.CountDownLatch;
+import java.util.concurrent.TimeUnit;
+import java.util.concurrent.atomic.AtomicReference;
+
+/**
+ * The window's loop, on its own thread: input, camera update, render, present. While the camera
+ * moves it renders one-sample frames at the resolution the {@link ResolutionGovernor} allows; when it
+ * is still it renders the full resolution in sample passes that accumulate up to the configured
+ * samples, then waits without using the CPU until something changes.
+ *
+ * <p>{@link #step} is one turn of the loop and is what tests drive with their own clock; {@link #run}
+ * repeats it and waits on {@link InputState#awaitActivity} as long as it asks.
+ */
+public final class Engine implements Runnable, SceneWatcher.Listener {
+
+    /** After the last motion the view waits this long before refining, so a drag does not flicker. */
+    public static final long MOTION_HOLD_NANOS = 150_000_000L;
+    /** What {@link #step} returns when there is nothing to do until the user does something. */
+    public static final long IDLE = Long.MAX_VALUE;
+    static final int MAX_DEPTH = 64;
+
+    private final SceneSource source;
+    private final InputState input;
+    private final Presenter presenter;
+    private final Screenshots screenshots;
+    private final Clock clock;
+    private final PrintWriter err;
+    private final CameraController controller;
+    private final ResolutionGovernor governor;
+    private final FrameRenderer renderer;
+    private final FrameRateMeter meter = new FrameRateMeter();
+    private final AtomicReference<Object> pendingScene = new AtomicReference<>(); // Scene or InputException
+    private final CountDownLatch finished = new CountDownLatch(1);
+
+    private Config config;
+    private Scene scene;
+    private Camera fileCamera;
+    private Shading shading;
+    private int depth;
+
+    private int viewWidth;
+    private int viewHeight;
+    private RenderScene compiled; // null: compile again before the next frame
+    private boolean needFrame = true;
+    private int passesDone;
+    private long lastMotion;
+    private BufferedImage lastImage;
+    private FrameStats lastStats;
+    private long serial;
+    private String message = "";
+    private String error = "";
+    private boolean statusChanged;
+
+    private volatile boolean running = true;
+    private volatile boolean failed;
+    private volatile Camera cameraNow;
+    private volatile Scene sceneNow;
+    private volatile String errorNow = "";
+    private volatile ShownFrame shownNow;
+
+    public Engine(Config config, Scene scene, SceneSource source, InputState input, Presenter presenter,
+                  Screenshots screenshots, Clock clock, PrintWriter err) {
+        this.config = config;
+        this.source = source;
+        this.input = input;
+        this.presenter = presenter;
+        this.screenshots = screenshots;
+        this.clock = clock;
+        this.err = err;
+        this.shading = config.shading();
+        this.depth = config.recursionMax();
+        this.controller = new CameraController(scene.camera(), config.moveSpeed(), config.turnSpeed());
+        this.governor = new ResolutionGovernor(config.targetFps(), config.displayScale());
+        this.renderer = new FrameRenderer(config.effectiveThreads(), config.screenDivider());
+        this.viewWidth = input.viewWidth();
+        this.viewHeight = input.viewHeight();
+        this.lastMotion = clock.nanoTime() - MOTION_HOLD_NANOS - 1;
+        setScene(scene, true);
+    }
+
+    // ---- what other threads may ask or tell ----
+
+    /** The camera now (any thread). */
+    public Camera camera() {
+        return cameraNow;
+    }
+
+    /** The scene on screen: the last one that loaded (any thread). */
+    public Scene scene() {
+        return sceneNow;
+    }
+
+    /** The last load error as {@code file:line:col: message}, or empty (any thread). */
+    public String error() {
+        return errorNow;
+    }
+
+    /** The last frame handed to the presenter, or null (any thread). */
+    public ShownFrame shown() {
+        return shownNow;
+    }
+
+    public boolean isRunning() {
+        return running;
+    }
+
+    /** Whether the loop ended on an unexpected error rather than on request. */
+    public boolean hasFailed() {
+        return failed;
+    }
+
+    /** Asks the loop to end (any thread); it ends after the frame in progress. */
+    public void stop() {
+        running = false;
+        input.signal();
+    }
+
+    /** Waits until {@link #run} has returned. */
+    public boolean awaitFinished(long timeout, TimeUnit unit) throws InterruptedException {
+        return finished.await(timeout, unit);
+    }
+
+    /** Frees the render threads when the loop was driven by {@link #step} alone (tests). */
+    public void close() {
+        renderer.close();
+    }
+
+    @Override
+    public void loaded(Scene newScene) {
+        pendingScene.set(newScene);
+        input.signal();
+    }
+
+    @Override
+    public void failed(InputException problem) {
+        pendingScene.set(problem);
+        input.signal();
+    }
+
+    // ---- the loop ----
+
+    @Override
+    public void run() {
+        try {
+            while (running) {
+                long wait;
+                try {
+                    wait = step();
+                } catch (RuntimeException e) {
+                    report("glint: " + e); // shown; the loop goes on with the next change
+                    wait = IDLE;
+                }
+                if (running && wait > 0) {
+                    input.awaitActivity(wait);
+                }
+            }
+        } catch (InterruptedException e) {
+            Thread.currentThread().interrupt();
+        } catch (Error e) {
+            failed = true;
+            err.println("glint: the window's engine stopped: " + e);
+        } finally {
+            running = false;
+            renderer.close();
+            finished.countDown();
+        }
+    }
+
+    /**
+     * One turn of the loop; returns how long to wait for input before the next one (0: go on at
+     * once, {@link #IDLE}: until something happens).
+     */
+    public long step() {
+        long start = clock.nanoTime();
+        InputFrame in = input.drain();
+        for (Action command : in.commands()) {
+            command(command);
+        }
+        if (!running) {
+            return 0;
+        }
+        takePendingScene();
+        if (input.viewWidth() != viewWidth || input.viewHeight() != viewHeight) {
+            viewWidth = input.viewWidth();
+            viewHeight = input.viewHeight();
+            invalidate();
+        }
+        if (in.wheelNotches() != 0) {
+            statusChanged = true;
+        }
+        boolean moved = controller.apply(in);
+        if (moved) {
+            lastMotion = start;
+            cameraNow = controller.camera();
+            invalidate();
+        }
+        boolean moving = moved || in.motionHeld() || start - lastMotion < MOTION_HOLD_NANOS;
+        if (moving && needFrame) {
+            renderMoving(start);
+            return 0;
+        }
+        if (!moving && passesDone < config.samples()) {
+            renderPass(start);
+            return 0;
+        }
+        if (moving) { // nothing new to draw yet: wait for input, or for the end of the motion hold
+            if (statusChanged) {
+                presentStatus();
+            }
+            return in.motionHeld() ? IDLE : lastMotion + MOTION_HOLD_NANOS - start;
+        }
+        boolean wasRendering = meter.isRunning();
+        meter.pause();
+        if (statusChanged || wasRendering) {
+            presentStatus(); // the overlay says idle, or shows a new message
+        }
+        return IDLE;
+    }
+
+    private void renderMoving(long start) {
+        double scale = governor.scale();
+        int w = ResolutionGovernor.renderSize(viewWidth, scale);
+        int h = ResolutionGovernor.renderSize(viewHeight, scale);
+        BufferedImage image;
+        try {
+            image = renderer.renderMoving(compiled(), w, h);
+        } catch (RuntimeException | OutOfMemoryError e) {
+            renderFailed(e);
+            return;
+        }
+        needFrame = false;
+        passesDone = 0;
+        long end = clock.nanoTime();
+        governor.frameTook((end - start) / 1e9);
+        show(image, end, end - start, 1, true);
+    }
+
+    private void renderPass(long start) {
+        BufferedImage image;
+        try {
+            image = renderer.renderPass(compiled(), viewWidth, viewHeight, config.samples(), passesDone);
+        } catch (RuntimeException | OutOfMemoryError e) {
+            renderFailed(e);
+            return;
+        }
+        needFrame = false;
+        passesDone++;
+        long end = clock.nanoTime();
+        show(image, end, end - start, passesDone, false);
+    }
+
+    private void show(BufferedImage image, long end, long nanos, int samples, boolean moving) {
+        meter.frame(end);
+        lastImage = image;
+        lastStats = new FrameStats(meter.fps(), nanos / 1e6, image.getWidth(), image.getHeight(),
+                viewWidth, viewHeight, samples, config.samples(), moving, renderer.threads(), shading, depth,
+                controller.speed(), source.scenePath().toString(), message, error);
+        publish();
+        if (config.debug() && meter.windowClosed()) {
+            err.println(String.format(Locale.ROOT, "glint: window %.1f fps, %.1f ms/frame, %dx%d of %dx%d, %s",
+                    lastStats.fps(), lastStats.msPerFrame(), lastStats.renderWidth(), lastStats.renderHeight(),
+                    viewWidth, viewHeight, moving ? "moving" : "still, samples " + samples + "/" + config.samples()));
+        }
+    }
+
+    /** Shows the last image again with the current messages and settings. */
+    private void presentStatus() {
+        FrameStats s = lastStats;
+        lastStats = s == null
+                ? new FrameStats(Double.NaN, 0, 0, 0, viewWidth, viewHeight, 0, config.samples(), false,
+                        renderer.threads(), shading, depth, controller.speed(), source.scenePath().toString(),
+                        message, error)
+                : new FrameStats(meter.fps(), s.msPerFrame(), s.renderWidth(), s.renderHeight(), s.viewWidth(),
+                        s.viewHeight(), s.samplesDone(), config.samples(), s.moving() && passesDone == 0,
+                        renderer.threads(), shading, depth, controller.speed(), s.scene(), message, error);
+        publish();
+    }
+
+    private void publish() {
+        statusChanged = false;
+        ShownFrame frame = new ShownFrame(lastImage, lastStats, ++serial);
+        shownNow = frame;
+        presenter.present(frame);
+    }
+
+    private void renderFailed(Throwable e) {
+        report("glint: render failed: " + e);
+        needFrame = false;
+        passesDone = config.samples(); // nothing more until something changes
+    }
+
+    // ---- what changes the view ----
+
+    private RenderScene compiled() {
+        if (compiled == null) {
+            Config settings = config.withShading(shading).withRecursionMax(depth);
+            compiled = RenderScene.compile(scene.withCamera(controller.camera()), RenderSettings.of(settings));
+        }
+        return compiled;
+    }
+
+    private void invalidate() {
+        compiled = null;
+        needFrame = true;
+        passesDone = 0;
+        statusChanged = true;
+    }
+
+    private void command(Action action) {
+        switch (action) {
+            case TOGGLE_SHADING -> {
+                shading = shading.other();
+                note("shading " + shading.key());
+                invalidate();
+            }
+            case DEPTH_UP, DEPTH_DOWN -> {
+                int next = Math.max(1, Math.min(MAX_DEPTH, depth + (action == Action.DEPTH_UP ? 1 : -1)));
+                note(next == depth ? "depth stays " + depth + " (from 1 to " + MAX_DEPTH + ")" : "depth " + next);
+                if (next != depth) {
+                    depth = next;
+                    invalidate();
+                }
+            }
+            case SCREENSHOT -> screenshot();
+            case RELOAD -> reload();
+            case QUIT -> running = false;
+            default -> {
+                // overlay and help are the display's
+            }
+        }
+    }
+
+    private void screenshot() {
+        if (lastImage == null) {
+            note("nothing to save yet");
+            return;
+        }
+        try {
+            Path file = screenshots.save(WindowImages.scaled(lastImage, viewWidth, viewHeight));
+            note("saved " + file);
+        } catch (IOException | RuntimeException e) {
+            String why = "screenshot not saved: " + describe(e);
+            err.println("glint: " + why);
+            note(why);
+        }
+    }
+
+    private String describe(Exception e) {
+        if (e instanceof AccessDeniedException) {
+            return e.getMessage() + ": permission denied";
+        }
+        if (e instanceof NoSuchFileException) {
+            return screenshots.folder() + ": no such folder";
+        }
+        return e.getMessage() != null ? e.getMessage() : e.toString();
+    }
+
+    /** F5: the config and the scene again; the camera goes back to the scene's. */
+    private void reload() {
+        String problem = "";
+        try {
+            applyConfig(source.loadConfig());
+        } catch (InputException e) {
+            problem = e.getMessage();
+        }
+        try {
+            setScene(source.loadScene(), true);
+        } catch (InputException e) {
+            problem = problem.isEmpty() ? e.getMessage() : problem;
+        }
+        setError(problem);
+        note(problem.isEmpty() ? "reloaded " + source.scenePath() : "reload failed");
+    }
+
+    private void applyConfig(Config c) {
+        config = c;
+        shading = c.shading();
+        depth = c.recursionMax();
+        controller.setSpeeds(c.moveSpeed(), c.turnSpeed());
+        governor.setLimits(c.targetFps(), c.displayScale());
+        renderer.configure(c.effectiveThreads(), c.screenDivider());
+        presenter.title(c.name());
+        invalidate();
+    }
+
+    private void takePendingScene() {
+        Object pending = pendingScene.getAndSet(null);
+        if (pending instanceof Scene loadedScene) {
+            setScene(loadedScene, false);
+            setError("");
+            note("reloaded " + source.scenePath());
+        } else if (pending instanceof InputException problem) {
+            setError(problem.getMessage());
+        }
+    }
+
+    /**
+     * Shows a new scene. The camera takes the file's pose when asked or when the file's camera
+     * changed; otherwise the user's view stays where it is.
+     */
+    private void setScene(Scene newScene, boolean resetCamera) {
+        if (resetCamera || !newScene.camera().equals(fileCamera)) {
+            controller.reset(newScene.camera());
+        }
+        fileCamera = newScene.camera();
+        scene = newScene;
+        sceneNow = newScene;
+        cameraNow = controller.camera();
+        invalidate();
+    }
+
+    private void setError(String problem) {
+        if (!problem.isEmpty() && !problem.equals(error)) {
+            err.println(problem);
+        }
+        error = problem;
+        errorNow = problem;
+        statusChanged = true;
+    }
+
+    private void note(String text) {
+        message = text;
+        statusChanged = true;
+    }
+
+    private void report(String line) {
+        err.println(line);
+        note(line);
+    }
+}

@@ -1,0 +1,67 @@
+package glint.ui;
+
+import java.awt.image.BufferedImage;
+import java.io.IOException;
+import java.io.OutputStream;
+import java.nio.file.Files;
+import java.nio.file.Path;
+import java.nio.file.StandardCopyOption;
+import java.nio.file.StandardOpenOption;
+import java.time.LocalDateTime;
+import java.time.format.DateTimeFormatter;
+import java.util.function.Supplier;
+import javax.imageio.ImageIO;
+
+/** Saves the view as {@code glint-yyyyMMdd-HHmmss-SSS.png} in a folder (the working directory). */
+public final class Screenshots {
+
+    private static final DateTimeFormatter STAMP = DateTimeFormatter.ofPattern("yyyyMMdd-HHmmss-SSS");
+
+    private final Path folder;
+    private final Supplier<LocalDateTime> now;
+
+    public Screenshots(Path folder) {
+        this(folder, LocalDateTime::now);
+    }
+
+    Screenshots(Path folder, Supplier<LocalDateTime> now) {
+        this.folder = folder;
+        this.now = now;
+    }
+
+    public Path folder() {
+        return folder;
+    }
+
+    /**
+     * Writes the image to a new file and returns its path; never overwrites a file. The PNG is written
+     * aside first and renamed when complete, so that the file never exists half written.
+     */
+    public Path save(BufferedImage image) throws IOException {
+        Path part = Files.createTempFile(folder, ".glint-", ".png.part");
+        try {
+            try (OutputStream out = Files.newOutputStream(part, StandardOpenOption.WRITE)) {
+                if (!ImageIO.write(image, "png", out)) {
+                    throw new IOException("no PNG writer available");
+                }
+            }
+            String stamp = "glint-" + STAMP.format(now.get());
+            Path file = folder.resolve(stamp + ".png");
+            for (int n = 1; Files.exists(file); n++) { // two in one millisecond
+                file = folder.resolve(stamp + "-" + n + ".png");
+            }
+            return Files.move(part, file, StandardCopyOption.ATOMIC_MOVE);
+        } catch (IOException | RuntimeException e) {
+            deleteQuietly(part, e);
+            throw e;
+        }
+    }
+
+    private static void deleteQuietly(Path file, Exception cause) {
+        try {
+            Files.deleteIfExists(file);
+        } catch (IOException e) {
+            cause.addSuppressed(e);
+        }
+    }
+}

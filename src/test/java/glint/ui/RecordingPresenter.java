@@ -1,0 +1,33 @@
+package glint.ui;
+
+import java.util.ArrayList;
+import java.util.List;
+
+/** Keeps every frame the engine presents. */
+final class RecordingPresenter implements Presenter {
+
+    private final List<ShownFrame> frames = new ArrayList<>();
+    private String title;
+
+    @Override
+    public synchronized void present(ShownFrame frame) {
+        frames.add(frame);
+    }
+
+    @Override
+    public synchronized void title(String newTitle) {
+        this.title = newTitle;
+    }
+
+    synchronized List<ShownFrame> frames() {
+        return List.copyOf(frames);
+    }
+
+    synchronized ShownFrame last() {
+        return frames.isEmpty() ? null : frames.get(frames.size() - 1);
+    }
+
+    synchronized String title() {
+        return title;
+    }
+}
