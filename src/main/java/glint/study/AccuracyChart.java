@@ -40,12 +40,13 @@ final class AccuracyChart {
 
     private static XYChart panel(String title, List<Measurement> ms, String errorName,
                                  ToDoubleFunction<Measurement> error) {
-        XYChart chart = Charts.chart(title, "frame time, ms (median)", errorName, true, true, 820);
+        XYChart chart = Charts.chart(title, "CPU time per frame, ms (median, all render threads)", errorName, true,
+                true, 820);
         chart.getStyler().setLegendFont(new java.awt.Font(java.awt.Font.SANS_SERIF, java.awt.Font.PLAIN, 10));
         chart.getStyler().setMarkerSize(7);
         double[] x = new double[ms.size()], y = new double[ms.size()];
         for (int i = 0; i < ms.size(); i++) {
-            x[i] = ms.get(i).millis();
+            x[i] = ms.get(i).cpuMillis();
             y[i] = Math.max(1e-12, error.applyAsDouble(ms.get(i)));
         }
         List<Integer> front = Pareto.front(x, y, FRONT_TOLERANCE);
@@ -53,8 +54,9 @@ final class AccuracyChart {
         band.setLineColor(new Color(255, 120, 120, 110));
         band.setLineStyle(new BasicStroke(9f, BasicStroke.CAP_ROUND, BasicStroke.JOIN_ROUND));
         band.setMarker(SeriesMarkers.NONE);
+        Labels labels = new Labels(chart);
         for (int i : front) {
-            chart.addAnnotation(new AnnotationText(ms.get(i).config().label(), x[i], y[i] / 1.45, false));
+            labels.add(ms.get(i).config().label(), x[i], y[i] / 1.45);
         }
 
         StudyConfig.Knob[] swept = {StudyConfig.Knob.DEPTH, StudyConfig.Knob.SAMPLES, StudyConfig.Knob.MIN_WEIGHT};
@@ -77,7 +79,7 @@ final class AccuracyChart {
                     .setMarker(SeriesMarkers.CIRCLE);
             for (int i : members) {
                 if (ms.get(i).config().knob() != StudyConfig.Knob.NONE && !front.contains(i)) {
-                    chart.addAnnotation(new AnnotationText(ms.get(i).config().knobLabel(), x[i], y[i] * 1.45, false));
+                    labels.add(ms.get(i).config().knobLabel(), x[i], y[i] * 1.45);
                 }
             }
         }
@@ -97,7 +99,7 @@ final class AccuracyChart {
             for (int i : others) {
                 StudyConfig c = ms.get(i).config();
                 if (c.knob() != StudyConfig.Knob.SEVERAL && !front.contains(i)) {
-                    chart.addAnnotation(new AnnotationText(c.knobLabel(), x[i], y[i] * 1.45, false));
+                    labels.add(c.knobLabel(), x[i], y[i] * 1.45);
                 }
             }
         }
@@ -112,6 +114,30 @@ final class AccuracyChart {
             }
         }
         return chart;
+    }
+
+    /**
+     * Point labels that do not overlap: on log-log axes a label is dropped when one already placed is
+     * closer than a quarter decade in time and a fifth of a decade in error (the table lists them all).
+     */
+    private static final class Labels {
+        private final XYChart chart;
+        private final List<double[]> placed = new ArrayList<>();
+
+        Labels(XYChart chart) {
+            this.chart = chart;
+        }
+
+        void add(String text, double x, double y) {
+            double lx = Math.log10(x), ly = Math.log10(y);
+            for (double[] p : placed) {
+                if (Math.abs(p[0] - lx) < 0.25 && Math.abs(p[1] - ly) < 0.2) {
+                    return;
+                }
+            }
+            placed.add(new double[] {lx, ly});
+            chart.addAnnotation(new AnnotationText(text, x, y, false));
+        }
     }
 
     private static double knobValue(StudyConfig c, StudyConfig.Knob knob) {

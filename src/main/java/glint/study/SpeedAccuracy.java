@@ -68,7 +68,7 @@ public final class SpeedAccuracy {
         meta.append(String.format(Locale.ROOT, "Generated %s by `java -cp target/glint.jar glint.study.SpeedAccuracy%s` "
                         + "on %d cores (%s, shared with other work; load average %.2f at the start), "
                         + "%d render threads, %dx%d pixels, median of %d frames per configuration (timed in turn, round by round, "
-                        + "after one untimed round); "
+                        + "after one untimed round; CPU time is the sum over the JVM's threads, i.e. all render threads together); "
                         + "reference: cook-torrance, exact Fresnel, depth 16, min_weight 0, %d stratified samples.%n",
                 LocalDate.now(), quick ? " --quick" : "", Runtime.getRuntime().availableProcessors(),
                 System.getProperty("java.vm.name") + " " + System.getProperty("java.version"),
@@ -93,14 +93,14 @@ public final class SpeedAccuracy {
                     jobs.add(new FrameTimer.Job(RenderScene.compile(scene.scene(), config.settings()),
                             new FrameBuffer(width, height), config.samples()));
                 }
-                double[] millis = timer.medianMillis(jobs);
+                FrameTimer.Times[] times = timer.median(jobs);
                 List<Measurement> results = new ArrayList<>();
                 for (int c = 0; c < configs.size(); c++) {
                     FrameBuffer frame = jobs.get(c).frame();
-                    Measurement m = new Measurement(scene.name(), configs.get(c), millis[c],
-                            RelativeMse.of(frame, reference), Ssim.of(frame, reference));
-                    System.out.printf(Locale.ROOT, "  %-22s %9.1f ms  relMSE %.3e  SSIM %.4f%n", m.config().label(),
-                            m.millis(), m.relMse(), m.ssim());
+                    Measurement m = new Measurement(scene.name(), configs.get(c), times[c].wallMillis(),
+                            times[c].cpuMillis(), RelativeMse.of(frame, reference), Ssim.of(frame, reference));
+                    System.out.printf(Locale.ROOT, "  %-22s %8.1f ms wall %8.1f ms CPU  relMSE %.3e  SSIM %.4f%n",
+                            m.config().label(), m.millis(), m.cpuMillis(), m.relMse(), m.ssim());
                     results.add(m);
                 }
                 perScene.add(results);
