@@ -32,7 +32,7 @@ final class Headless {
         if (folder != null && !Files.isDirectory(folder)) {
             throw new InputException("glint", 0, 0, "--output: no such folder '" + folder + "'");
         }
-        Scene scene = SceneLoader.load(scenePath);
+        Scene scene = SceneLoader.load(scenePath, config.limits().scene());
         RenderScene compiled = RenderScene.compile(scene, RenderSettings.of(config));
         FrameBuffer frame = new FrameBuffer(config.displayWidth(), config.displayHeight());
         long start = System.nanoTime();
@@ -48,7 +48,7 @@ final class Headless {
     }
 
     static int bench(Path scenePath, Config config, int frames, PrintWriter out) throws InputException {
-        Scene scene = SceneLoader.load(scenePath);
+        Scene scene = SceneLoader.load(scenePath, config.limits().scene());
         RenderScene compiled = RenderScene.compile(scene, RenderSettings.of(config));
         FrameBuffer frame = new FrameBuffer(config.displayWidth(), config.displayHeight());
         double[] millis = new double[frames];

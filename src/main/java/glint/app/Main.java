@@ -127,8 +127,12 @@ public final class Main implements Callable<Integer> {
         if (width != null || height != null) {
             int w = width != null ? width : c.displayWidth();
             int h = height != null ? height : c.displayHeight();
-            checkRange("--width", w, 1, 16384);
-            checkRange("--height", h, 1, 16384);
+            checkRange("--width", w, 1, 65536);
+            checkRange("--height", h, 1, 65536);
+            String sizeProblem = c.limits().imageSizeProblem(w, h);
+            if (sizeProblem != null) {
+                throw new InputException("glint", 0, 0, "--width x --height: " + sizeProblem);
+            }
             c = c.withSize(w, h);
         }
         if (spp != null) {
@@ -143,7 +147,7 @@ public final class Main implements Callable<Integer> {
             c = c.withThreads(threads);
         }
         if (depth != null) {
-            checkRange("--depth", depth, 1, 64);
+            checkRange("--depth", depth, 1, c.limits().maxRecursion());
             c = c.withRecursionMax(depth);
         }
         if (shading != null) {

@@ -21,15 +21,16 @@ package glint.config;
  * @param moveSpeed      camera speed in scene units per second
  * @param turnSpeed      camera turn rate in degrees per second
  * @param targetFps      the frame rate the window holds while the camera moves
+ * @param limits         safety limits on image size, scene size and recursion
  */
 public record Config(boolean debug, double epsilon, double displayScale, int screenDivider,
                      int displayWidth, int displayHeight, int recursionMax, String name,
                      String scene, int threads, Shading shading, int samples, double minWeight,
-                     double moveSpeed, double turnSpeed, double targetFps) {
+                     double moveSpeed, double turnSpeed, double targetFps, Limits limits) {
 
     public static Config defaults() {
         return new Config(false, 1e-9, 2, 8, 800, 600, 5, "Glint", "scenes/default.yaml",
-                0, Shading.COOK_TORRANCE, 4, 1e-3, 2.0, 60, 30);
+                0, Shading.COOK_TORRANCE, 4, 1e-3, 2.0, 60, 30, Limits.DEFAULT);
     }
 
     /** Threads actually used: {@code threads}, or one per available core when it is 0. */
@@ -39,48 +40,54 @@ public record Config(boolean debug, double epsilon, double displayScale, int scr
 
     public Config withSize(int width, int height) {
         return new Config(debug, epsilon, displayScale, screenDivider, width, height, recursionMax, name,
-                scene, threads, shading, samples, minWeight, moveSpeed, turnSpeed, targetFps);
+                scene, threads, shading, samples, minWeight, moveSpeed, turnSpeed, targetFps, limits);
     }
 
     public Config withSamples(int newSamples) {
         return new Config(debug, epsilon, displayScale, screenDivider, displayWidth, displayHeight,
                 recursionMax, name, scene, threads, shading, newSamples, minWeight, moveSpeed, turnSpeed,
-                targetFps);
+                targetFps, limits);
     }
 
     public Config withThreads(int newThreads) {
         return new Config(debug, epsilon, displayScale, screenDivider, displayWidth, displayHeight,
                 recursionMax, name, scene, newThreads, shading, samples, minWeight, moveSpeed, turnSpeed,
-                targetFps);
+                targetFps, limits);
     }
 
     public Config withRecursionMax(int depth) {
         return new Config(debug, epsilon, displayScale, screenDivider, displayWidth, displayHeight,
-                depth, name, scene, threads, shading, samples, minWeight, moveSpeed, turnSpeed, targetFps);
+                depth, name, scene, threads, shading, samples, minWeight, moveSpeed, turnSpeed, targetFps, limits);
     }
 
     public Config withShading(Shading model) {
         return new Config(debug, epsilon, displayScale, screenDivider, displayWidth, displayHeight,
                 recursionMax, name, scene, threads, model, samples, minWeight, moveSpeed, turnSpeed,
-                targetFps);
+                targetFps, limits);
     }
 
     public Config withScreenDivider(int divider) {
         return new Config(debug, epsilon, displayScale, divider, displayWidth, displayHeight,
                 recursionMax, name, scene, threads, shading, samples, minWeight, moveSpeed, turnSpeed,
-                targetFps);
+                targetFps, limits);
     }
 
     public Config withMinWeight(double weight) {
         return new Config(debug, epsilon, displayScale, screenDivider, displayWidth, displayHeight,
                 recursionMax, name, scene, threads, shading, samples, weight, moveSpeed, turnSpeed,
-                targetFps);
+                targetFps, limits);
     }
 
     public Config withScene(String sceneFile) {
         return new Config(debug, epsilon, displayScale, screenDivider, displayWidth, displayHeight,
                 recursionMax, name, sceneFile, threads, shading, samples, minWeight, moveSpeed, turnSpeed,
-                targetFps);
+                targetFps, limits);
+    }
+
+    public Config withLimits(Limits newLimits) {
+        return new Config(debug, epsilon, displayScale, screenDivider, displayWidth, displayHeight,
+                recursionMax, name, scene, threads, shading, samples, minWeight, moveSpeed, turnSpeed,
+                targetFps, newLimits);
     }
 
     /** True when n is 1, 4, 9, 16, ... */

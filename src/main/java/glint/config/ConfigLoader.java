@@ -19,7 +19,8 @@ public final class ConfigLoader {
     static final Set<String> KEYS = new LinkedHashSet<>(List.of(
             "debug", "epsilon", "display_scale", "screen_divider", "display_height", "recursion_max",
             "display_width", "name", "scene", "threads", "shading", "samples", "min_weight",
-            "move_speed", "turn_speed", "target_fps"));
+            "move_speed", "turn_speed", "target_fps",
+            "max_image_pixels", "max_scene_bytes", "max_objects", "max_lights", "max_recursion"));
 
     private final String file;
     private final List<String> lines;
@@ -68,13 +69,19 @@ public final class ConfigLoader {
             throw unknown;
         }
         Config d = Config.defaults();
+        Limits limits = limits(d.limits());
         boolean debug = bool("debug", d.debug());
         double epsilon = positive("epsilon", d.epsilon());
         double displayScale = number("display_scale", d.displayScale(), 1, 64, "a number from 1 to 64");
         int divider = integer("screen_divider", d.screenDivider(), 1, 256);
-        int height = integer("display_height", d.displayHeight(), 1, 16384);
-        int depth = integer("recursion_max", d.recursionMax(), 1, 64);
-        int width = integer("display_width", d.displayWidth(), 1, 16384);
+        int height = integer("display_height", d.displayHeight(), 1, 65536);
+        int depth = integer("recursion_max", d.recursionMax(), 1, limits.maxRecursion());
+        int width = integer("display_width", d.displayWidth(), 1, 65536);
+        String sizeProblem = limits.imageSizeProblem(width, height);
+        if (sizeProblem != null) {
+            throw error(properties.containsKey("display_width") ? "display_width" : "display_height",
+                    "display_width x display_height: " + sizeProblem);
+        }
         String name = properties.getProperty("name", d.name()).trim();
         String scene = properties.getProperty("scene", d.scene()).trim();
         if (scene.isEmpty()) {
@@ -88,7 +95,32 @@ public final class ConfigLoader {
         double turnSpeed = positive("turn_speed", d.turnSpeed());
         double targetFps = number("target_fps", d.targetFps(), 1, 1000, "a number from 1 to 1000");
         return new Config(debug, epsilon, displayScale, divider, width, height, depth, name, scene, threads,
-                shading, samples, minWeight, moveSpeed, turnSpeed, targetFps);
+                shading, samples, minWeight, moveSpeed, turnSpeed, targetFps, limits);
+    }
+
+    private Limits limits(Limits d) throws InputException {
+        long pixels = longInteger("max_image_pixels", d.maxImagePixels(), 1, 1L << 31);
+        long sceneBytes = longInteger("max_scene_bytes", d.maxSceneBytes(), 1, 1L << 30);
+        int objects = integer("max_objects", d.maxObjects(), 0, 10_000_000);
+        int lights = integer("max_lights", d.maxLights(), 0, 100_000);
+        int recursion = integer("max_recursion", d.maxRecursion(), 1, 1024);
+        return new Limits(pixels, sceneBytes, objects, lights, recursion);
+    }
+
+    private long longInteger(String key, long fallback, long min, long max) throws InputException {
+        String v = value(key);
+        if (v == null) {
+            return fallback;
+        }
+        try {
+            long n = Long.parseLong(v);
+            if (n >= min && n <= max) {
+                return n;
+            }
+        } catch (NumberFormatException e) {
+            // reported below
+        }
+        throw error(key, key + ": expected a whole number from " + min + " to " + max + ", got '" + v + "'");
     }
 
     private String value(String key) {

@@ -124,7 +124,15 @@ class MainTest {
     void widthOutOfRange() {
         Result r = run("--config", config.toString(), "--width", "0");
         assertEquals(2, r.status());
-        assertEquals("glint: --width: expected a whole number from 1 to 16384, got 0", r.firstErrLine());
+        assertEquals("glint: --width: expected a whole number from 1 to 65536, got 0", r.firstErrLine());
+    }
+
+    @Test
+    void aHugeImageIsRefusedBeforeAnyMemoryIsTaken() {
+        Result r = run("--config", config.toString(), "--width", "60000", "--height", "60000", "--output", "x.png");
+        assertEquals(2, r.status());
+        assertEquals("glint: --width x --height: 60000x60000 is 3600.0 megapixels; the largest image allowed is "
+                + "33.2 megapixels (config key max_image_pixels)", r.firstErrLine());
     }
 
     @Test

@@ -82,16 +82,22 @@ class ConfigLoaderTest {
                 move_speed=3.5
                 turn_speed=90
                 target_fps=24
+                max_image_pixels=1000000
+                max_scene_bytes=4096
+                max_objects=10
+                max_lights=2
+                max_recursion=8
                 """);
         assertEquals(new Config(true, 1e-6, 1.5, 4, 640, 480, 7, "My Glint", "scenes/other.yaml", 3,
-                Shading.PHONG, 16, 0.01, 3.5, 90, 24), c);
+                Shading.PHONG, 16, 0.01, 3.5, 90, 24, new Limits(1_000_000, 4096, 10, 2, 8)), c);
     }
 
     @Test
     void everyKeyOfKeysIsTestedAbove() {
         assertEquals(List.of("debug", "epsilon", "display_scale", "screen_divider", "display_height",
                 "recursion_max", "display_width", "name", "scene", "threads", "shading", "samples",
-                "min_weight", "move_speed", "turn_speed", "target_fps"), List.copyOf(ConfigLoader.KEYS));
+                "min_weight", "move_speed", "turn_speed", "target_fps", "max_image_pixels", "max_scene_bytes",
+                "max_objects", "max_lights", "max_recursion"), List.copyOf(ConfigLoader.KEYS));
     }
 
     @Test
@@ -115,9 +121,9 @@ class ConfigLoaderTest {
         assertEquals(1, low.displayScale());
         assertEquals(1, low.samples());
         assertEquals(0, low.minWeight());
-        Config high = parse("display_scale=64\nscreen_divider=256\nrecursion_max=64\ndisplay_width=16384\n"
-                + "display_height=16384\nthreads=1024\nsamples=4096\nmin_weight=1\ntarget_fps=1000\n");
-        assertEquals(16384, high.displayWidth());
+        Config high = parse("display_scale=64\nscreen_divider=256\nrecursion_max=64\ndisplay_width=7680\n"
+                + "display_height=4320\nthreads=1024\nsamples=4096\nmin_weight=1\ntarget_fps=1000\n");
+        assertEquals(7680, high.displayWidth());
         assertEquals(4096, high.samples());
     }
 
@@ -153,7 +159,8 @@ class ConfigLoaderTest {
     void unknownKeyFarFromAnyListsTheKeys() {
         assertError("config.properties:1:1: unknown key 'colour' (expected one of: debug, epsilon, display_scale, "
                 + "screen_divider, display_height, recursion_max, display_width, name, scene, threads, shading, "
-                + "samples, min_weight, move_speed, turn_speed, target_fps)", "colour=red\n");
+                + "samples, min_weight, move_speed, turn_speed, target_fps, max_image_pixels, max_scene_bytes, max_objects, "
+                + "max_lights, max_recursion)", "colour=red\n");
     }
 
     @Test
@@ -227,7 +234,7 @@ class ConfigLoaderTest {
 
     @Test
     void wholeNumberWithADecimalPoint() {
-        assertError("config.properties:1:1: display_width: expected a whole number from 1 to 16384, got '800.5'",
+        assertError("config.properties:1:1: display_width: expected a whole number from 1 to 65536, got '800.5'",
                 "display_width=800.5\n");
     }
 
@@ -321,5 +328,25 @@ class ConfigLoaderTest {
         assertFalse(Config.isPerfectSquare(-4));
         assertFalse(Config.isPerfectSquare(2));
         assertFalse(Config.isPerfectSquare(15));
+    }
+
+    @Test
+    void anImageLargerThanTheLimitIsRefusedWhereItsSizeIsSet() {
+        // 7680 x 4320 = 33,177,600 pixels is the default limit; one more row is too many
+        assertError("config.properties:2:1: display_width x display_height: 7680x4321 is 33.2 megapixels; "
+                + "the largest image allowed is 33.2 megapixels (config key max_image_pixels)",
+                "display_height=4321\ndisplay_width=7680\n");
+    }
+
+    @Test
+    void recursionBeyondTheLimitIsRefused() {
+        assertError("config.properties:2:1: recursion_max: expected a whole number from 1 to 10, got '11'",
+                "max_recursion=10\nrecursion_max=11\n");
+    }
+
+    @Test
+    void aMillionPixelWideImageIsRefused() {
+        assertError("config.properties:1:1: display_width: expected a whole number from 1 to 65536, got '1000000'",
+                "display_width=1000000\n");
     }
 }

@@ -1,0 +1,34 @@
+package glint.config;
+
+import glint.scene.SceneLimits;
+
+/**
+ * Safety limits, so that a mistaken size or a hostile file is refused up front with a message
+ * instead of exhausting memory or time. Each is a config key (docs/config.md).
+ *
+ * @param maxImagePixels largest image, width x height ({@code max_image_pixels})
+ * @param maxSceneBytes  largest scene file ({@code max_scene_bytes})
+ * @param maxObjects     most objects in a scene ({@code max_objects})
+ * @param maxLights      most lights in a scene ({@code max_lights})
+ * @param maxRecursion   largest recursion_max or --depth ({@code max_recursion})
+ */
+public record Limits(long maxImagePixels, long maxSceneBytes, int maxObjects, int maxLights, int maxRecursion) {
+
+    /** 7680 x 4320 (8K UHD): a 400 MB float frame buffer; 8 MiB of scene; 100,000 objects. */
+    public static final Limits DEFAULT = new Limits(7680L * 4320, SceneLimits.DEFAULT.maxFileBytes(),
+            SceneLimits.DEFAULT.maxObjects(), SceneLimits.DEFAULT.maxLights(), 64);
+
+    public SceneLimits scene() {
+        return new SceneLimits(maxSceneBytes, maxObjects, maxLights);
+    }
+
+    /** Null when width x height is allowed, otherwise why not. */
+    public String imageSizeProblem(long width, long height) {
+        if (width * height <= maxImagePixels) {
+            return null;
+        }
+        return String.format(java.util.Locale.ROOT,
+                "%dx%d is %.1f megapixels; the largest image allowed is %.1f megapixels (config key max_image_pixels)",
+                width, height, width * height / 1e6, maxImagePixels / 1e6);
+    }
+}
