@@ -28,9 +28,16 @@ final class AccuracyReport {
         }
         order.sort((a, b) -> Double.compare(x[a], x[b]));
         StringBuilder b = new StringBuilder();
-        b.append("| configuration | CPU ms | wall ms | relMSE | SSIM | on the front |\n");
-        b.append("|---|--:|--:|--:|--:|:-:|\n");
         StudyConfig shipped = StudyConfig.shipped();
+        double shippedCpu = Double.NaN, shippedErr = Double.NaN;
+        for (Measurement m : ms) {
+            if (m.config().equals(shipped)) {
+                shippedCpu = m.cpuMillis();
+                shippedErr = m.relMse();
+            }
+        }
+        b.append("| configuration | CPU ms | wall ms | relMSE | SSIM | CPU / shipped | relMSE / shipped | on the front |\n");
+        b.append("|---|--:|--:|--:|--:|--:|--:|:-:|\n");
         for (int i : order) {
             Measurement m = ms.get(i);
             String name = m.config().equals(shipped) ? "**" + m.config().label() + "** (shipped)" : m.config().label();
@@ -39,6 +46,8 @@ final class AccuracyReport {
                     .append(" | ").append(Numbers.fixed(m.millis(), 1))
                     .append(" | ").append(Numbers.sig3(m.relMse()))
                     .append(" | ").append(Numbers.fixed(m.ssim(), 4))
+                    .append(" | ").append(Numbers.fixed(m.cpuMillis() / shippedCpu, 2))
+                    .append(" | ").append(Numbers.fixed(m.relMse() / shippedErr, 2))
                     .append(" | ").append(front.contains(i) ? "yes" : "")
                     .append(" |\n");
         }

@@ -16,23 +16,27 @@ import java.util.HexFormat;
 /**
  * Glint's reference mode: the converged image of a scene ({@link StudyConfig#reference}), rendered
  * once and cached as a PFM under a folder (by default target/study-cache), keyed by the scene text,
- * the size and the settings. PFM holds float32, enough for a reference whose noise is ~1e-3.
+ * the size and the settings (not by the renderer's code: after a change to it, run with --fresh).
+ * PFM holds float32, enough for a reference whose noise is ~1e-3.
  */
 public final class ReferenceImages {
 
     private final Path cache;
     private final Tracer tracer;
+    private final boolean fresh;
 
-    public ReferenceImages(Path cache, Tracer tracer) {
+    /** With {@code fresh}, every reference is rendered again and overwrites its cached file. */
+    public ReferenceImages(Path cache, Tracer tracer, boolean fresh) {
         this.cache = cache;
         this.tracer = tracer;
+        this.fresh = fresh;
     }
 
     /** The image of {@code scene} at {@code config}, from the cache or rendered now (and cached). */
     public FrameBuffer get(StudyScene scene, StudyConfig config, int width, int height) throws IOException {
         Path file = cache.resolve(scene.name() + "-" + width + "x" + height + "-" + key(scene, config, width, height)
                 + ".pfm");
-        if (Files.isRegularFile(file)) {
+        if (!fresh && Files.isRegularFile(file)) {
             return PfmReader.read(file);
         }
         FrameBuffer frame = new FrameBuffer(width, height);

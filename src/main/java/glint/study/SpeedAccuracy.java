@@ -24,8 +24,8 @@ import java.util.Locale;
  * <pre>java -cp target/glint.jar glint.study.SpeedAccuracy [--quick] [--runs N] [--threads T] [--fresh]</pre>
  *
  * --quick: 200 x 150, reference at 64 samples, 3 rounds, 10 configurations (under a minute on 2 cores);
- * the default: 400 x 300, reference at 1024 samples, 7 rounds, 21 configurations (a few minutes).
- * --fresh ignores the reference cache (target/study-cache). The full run writes into docs/; --quick
+ * the default: 400 x 300, reference at 1024 samples, 9 rounds, 21 configurations (a few minutes).
+ * --fresh renders the references again (cached in target/study-cache). The full run writes into docs/; --quick
  * into target/study-quick/ (a smoke run that leaves the docs alone); --out DIR chooses.
  */
 public final class SpeedAccuracy {
@@ -58,11 +58,11 @@ public final class SpeedAccuracy {
         int width = quick ? 200 : 400, height = quick ? 150 : 300;
         int referenceSamples = quick ? 64 : 1024;
         if (runs < 0) {
-            runs = quick ? 3 : 7;
+            runs = quick ? 3 : 9;
         }
         List<StudyConfig> configs = quick ? StudyConfigs.quick() : StudyConfigs.full();
         List<StudyScene> scenes = scenes(root);
-        Path cache = root.resolve("target/study-cache" + (fresh ? "-" + System.nanoTime() : ""));
+        Path cache = root.resolve("target/study-cache");
 
         StringBuilder meta = new StringBuilder();
         meta.append(String.format(Locale.ROOT, "Generated %s by `java -cp target/glint.jar glint.study.SpeedAccuracy%s` "
@@ -80,7 +80,7 @@ public final class SpeedAccuracy {
         StringBuilder validation = new StringBuilder();
         try (Tracer tracer = new Tracer(threads)) {
             warmUp(tracer, scenes.get(0), width, height);
-            ReferenceImages references = new ReferenceImages(cache, tracer);
+            ReferenceImages references = new ReferenceImages(cache, tracer, fresh);
             FrameTimer timer = new FrameTimer(tracer, runs);
             for (StudyScene scene : scenes) {
                 System.out.println("scene " + scene.name());
