@@ -19,8 +19,21 @@ final class RayCaster {
 
     private final int[] stack = new int[STACK_DEPTH];
 
+    /** The surface the current query ignores (see {@link #surfaceId}); 0 = none. */
+    private int skip;
+
+    /**
+     * A surface's id for {@code skip}: sphere i is i + 1, plane j is -(j + 1). A ray leaving a
+     * plane, or leaving a sphere on its outer side, cannot meet that surface again (both are
+     * convex), so it is left out of the ray's tests: no self-intersection at any scale.
+     */
+    static int surfaceId(int sphere, int plane) {
+        return sphere >= 0 ? sphere + 1 : -(plane + 1);
+    }
+
     /** Nearest hit along the ray; sets hitT and hitSphere or hitPlane (the other is -1). */
-    boolean nearest(RenderScene s, double ox, double oy, double oz, double dx, double dy, double dz) {
+    boolean nearest(RenderScene s, double ox, double oy, double oz, double dx, double dy, double dz, int skipSurface) {
+        skip = skipSurface;
         hitT = Intersect.MISS;
         hitSphere = -1;
         hitPlane = -1;
@@ -31,6 +44,9 @@ final class RayCaster {
         }
         double[] planes = s.planes;
         for (int i = 0, n = s.planeCount; i < n; i++) {
+            if (-(i + 1) == skip) {
+                continue;
+            }
             int k = 4 * i;
             double t = Intersect.planeBefore(planes[k], planes[k + 1], planes[k + 2], planes[k + 3],
                     ox, oy, oz, dx, dy, dz, hitT);
@@ -47,6 +63,9 @@ final class RayCaster {
                                  double ox, double oy, double oz, double dx, double dy, double dz) {
         double[] spheres = s.spheres;
         for (int i = first; i < end; i++) {
+            if (i + 1 == skip) {
+                continue;
+            }
             int k = 4 * i;
             double t = Intersect.sphereBefore(spheres[k], spheres[k + 1], spheres[k + 2], spheres[k + 3],
                     ox, oy, oz, dx, dy, dz, hitT);
@@ -96,9 +115,14 @@ final class RayCaster {
     }
 
     /** True when anything lies on the ray before distance tMax (any hit, not the nearest). */
-    boolean occluded(RenderScene s, double ox, double oy, double oz, double dx, double dy, double dz, double tMax) {
+    boolean occluded(RenderScene s, double ox, double oy, double oz, double dx, double dy, double dz, double tMax,
+                     int skipSurface) {
+        skip = skipSurface;
         double[] planes = s.planes;
         for (int i = 0, n = s.planeCount; i < n; i++) {
+            if (-(i + 1) == skip) {
+                continue;
+            }
             int k = 4 * i;
             if (Intersect.planeBefore(planes[k], planes[k + 1], planes[k + 2], planes[k + 3],
                     ox, oy, oz, dx, dy, dz, tMax) < tMax) {
@@ -110,10 +134,13 @@ final class RayCaster {
                 : anySphereInBvh(s, ox, oy, oz, dx, dy, dz, tMax);
     }
 
-    private static boolean anySphereIn(RenderScene s, int first, int end, double ox, double oy, double oz,
-                                       double dx, double dy, double dz, double tMax) {
+    private boolean anySphereIn(RenderScene s, int first, int end, double ox, double oy, double oz,
+                                double dx, double dy, double dz, double tMax) {
         double[] spheres = s.spheres;
         for (int i = first; i < end; i++) {
+            if (i + 1 == skip) {
+                continue;
+            }
             int k = 4 * i;
             if (Intersect.sphereBefore(spheres[k], spheres[k + 1], spheres[k + 2], spheres[k + 3],
                     ox, oy, oz, dx, dy, dz, tMax) < tMax) {
@@ -154,10 +181,13 @@ final class RayCaster {
      * any hits; a product over all hits is rare enough to need neither).
      */
     double transmittance(RenderScene s, double ox, double oy, double oz, double dx, double dy, double dz,
-                         double tMax) {
+                         double tMax, int skipSurface) {
         double pass = 1;
         double[] planes = s.planes;
         for (int i = 0, n = s.planeCount; i < n && pass > 0; i++) {
+            if (-(i + 1) == skipSurface) {
+                continue;
+            }
             int k = 4 * i;
             if (Intersect.planeBefore(planes[k], planes[k + 1], planes[k + 2], planes[k + 3],
                     ox, oy, oz, dx, dy, dz, tMax) < tMax) {
@@ -166,6 +196,9 @@ final class RayCaster {
         }
         double[] spheres = s.spheres;
         for (int i = 0, n = s.sphereCount; i < n && pass > 0; i++) {
+            if (i + 1 == skipSurface) {
+                continue;
+            }
             int k = 4 * i;
             if (Intersect.sphereBefore(spheres[k], spheres[k + 1], spheres[k + 2], spheres[k + 3],
                     ox, oy, oz, dx, dy, dz, tMax) < tMax) {

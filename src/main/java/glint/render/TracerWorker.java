@@ -82,17 +82,18 @@ final class TracerWorker {
         double dy = s.forwardY + screenX * s.rightY + screenY * s.upY;
         double dz = s.forwardZ + screenX * s.rightZ + screenY * s.upZ;
         double inv = 1 / Math.sqrt(dx * dx + dy * dy + dz * dz);
-        trace(s.eyeX, s.eyeY, s.eyeZ, dx * inv, dy * inv, dz * inv, s.settings.recursionMax(), 1);
+        trace(s.eyeX, s.eyeY, s.eyeZ, dx * inv, dy * inv, dz * inv, s.settings.recursionMax(), 1, 0);
     }
 
     /**
      * Radiance arriving at the ray's origin along -d, into outR/G/B. {@code hitsLeft} is how many
      * surface hits this path may still shade; {@code weight} is the path's throughput so far.
      */
-    void trace(double ox, double oy, double oz, double dx, double dy, double dz, int hitsLeft, double weight) {
+    void trace(double ox, double oy, double oz, double dx, double dy, double dz, int hitsLeft, double weight,
+               int skipSurface) {
         RenderScene s = scene;
         RayCaster hit = caster;
-        if (!hit.nearest(s, ox, oy, oz, dx, dy, dz)) {
+        if (!hit.nearest(s, ox, oy, oz, dx, dy, dz, skipSurface)) {
             outR = s.backgroundR;
             outG = s.backgroundG;
             outB = s.backgroundB;
@@ -136,29 +137,35 @@ final class TracerWorker {
             nz = -nz;
             cosIncident = -cosIncident;
         }
+        // rays spawned on the outer side of this surface leave it out of their tests
+        int self = RayCaster.surfaceId(hit.hitSphere, hit.hitPlane);
+        int skipNear = hit.hitPlane >= 0 || entering ? self : 0;
+        int skipFar = hit.hitPlane >= 0 || !entering ? self : 0;
         if (s.settings.shading() == Shading.PHONG) {
-            shadePhong(material, px, py, pz, nx, ny, nz, dx, dy, dz, cosIncident, entering, offset, hitsLeft, weight);
+            shadePhong(material, px, py, pz, nx, ny, nz, dx, dy, dz, cosIncident, entering, offset, hitsLeft, weight,
+                    skipNear, skipFar);
             return;
         }
         switch (s.materialType[material]) {
-            case RenderScene.MATTE -> shadeMatte(material, px, py, pz, nx, ny, nz, offset);
+            case RenderScene.MATTE -> shadeMatte(material, px, py, pz, nx, ny, nz, offset, skipNear);
             case RenderScene.METAL -> shadeMetal(material, px, py, pz, nx, ny, nz, dx, dy, dz, cosIncident, offset,
-                    hitsLeft, weight);
+                    hitsLeft, weight, skipNear);
             default -> shadeGlass(material, px, py, pz, nx, ny, nz, dx, dy, dz, cosIncident, entering, offset,
-                    hitsLeft, weight);
+                    hitsLeft, weight, skipNear, skipFar);
         }
     }
 
     // ---- cook-torrance ------------------------------------------------------------------------
 
     /** Lambert: color / pi x E x cos for each unshadowed light, plus ambient x color. */
-    private void shadeMatte(int m, double px, double py, double pz, double nx, double ny, double nz, double offset) {
+    private void shadeMatte(int m, double px, double py, double pz, double nx, double ny, double nz, double offset,
+                            int skipNear) {
         RenderScene s = scene;
         double sumR = 0, sumG = 0, sumB = 0;
         double ox = px + offset * nx, oy = py + offset * ny, oz = pz + offset * nz;
         for (int light = 0; light < s.lightCount; light++) {
             double cosLight = lightAt(light, px, py, pz, nx, ny, nz);
-            if (cosLight > 0 && !caster.occluded(s, ox, oy, oz, toLightX, toLightY, toLightZ, lightDistance)) {
+            if (cosLight > 0 && !caster.occluded(s, ox, oy, oz, toLightX, toLightY, toLightZ, lightDistance, skipNear)) {
                 sumR += irradianceR * cosLight;
                 sumG += irradianceG * cosLight;
                 sumB += irradianceB * cosLight;
@@ -172,7 +179,8 @@ final class TracerWorker {
 
     /** A mirror weighted by Schlick's Fresnel (F0 = color), plus a GGX highlight when rough. */
     private void shadeMetal(int m, double px, double py, double pz, double nx, double ny, double nz,
-                            double dx, double dy, double dz, double cosView, double offset, int hitsLeft, double weight) {
+                            double dx, double dy, double dz, double cosView, double offset, int hitsLeft, double weight,
+                            int skipNear) {
         RenderScene s = scene;
         int c = 3 * m;
         double f0R = s.materialColor[c], f0G = s.materialColor[c + 1], f0B = s.materialColor[c + 2];
@@ -182,7 +190,7 @@ final class TracerWorker {
         if (alpha > 0 && cosView > 0) {
             for (int light = 0; light < s.lightCount; light++) {
                 double cosLight = lightAt(light, px, py, pz, nx, ny, nz);
-                if (cosLight <= 0 || caster.occluded(s, ox, oy, oz, toLightX, toLightY, toLightZ, lightDistance)) {
+                if (cosLight <= 0 || caster.occluded(s, ox, oy, oz, toLightX, toLightY, toLightZ, lightDistance, skipNear)) {
                     continue;
                 }
                 double hx = toLightX - dx, hy = toLightY - dy, hz = toLightZ - dz;
@@ -200,7 +208,7 @@ final class TracerWorker {
             double childWeight = weight * Math.max(fR, Math.max(fG, fB));
             if (childWeight >= s.settings.minWeight()) {
                 double k = 2 * cosView;
-                trace(ox, oy, oz, dx + k * nx, dy + k * ny, dz + k * nz, hitsLeft - 1, childWeight);
+                trace(ox, oy, oz, dx + k * nx, dy + k * ny, dz + k * nz, hitsLeft - 1, childWeight, skipNear);
                 sumR += fR * outR;
                 sumG += fG * outG;
                 sumB += fB * outB;
@@ -214,7 +222,7 @@ final class TracerWorker {
     /** A smooth dielectric: reflection and refraction weighted by the exact Fresnel equations. */
     private void shadeGlass(int m, double px, double py, double pz, double nx, double ny, double nz,
                             double dx, double dy, double dz, double cosIncident, boolean entering, double offset,
-                            int hitsLeft, double weight) {
+                            int hitsLeft, double weight, int skipNear, int skipFar) {
         RenderScene s = scene;
         double sumR = 0, sumG = 0, sumB = 0;
         if (hitsLeft > 1) {
@@ -225,7 +233,7 @@ final class TracerWorker {
             if (weight * reflectance >= minWeight) {
                 double k = 2 * cosIncident;
                 trace(px + offset * nx, py + offset * ny, pz + offset * nz,
-                        dx + k * nx, dy + k * ny, dz + k * nz, hitsLeft - 1, weight * reflectance);
+                        dx + k * nx, dy + k * ny, dz + k * nz, hitsLeft - 1, weight * reflectance, skipNear);
                 sumR += reflectance * outR;
                 sumG += reflectance * outG;
                 sumB += reflectance * outB;
@@ -236,7 +244,8 @@ final class TracerWorker {
             double tB = (1 - reflectance) * s.materialColor[c + 2];
             double childWeight = weight * Math.max(tR, Math.max(tG, tB));
             if (reflectance < 1 && childWeight >= minWeight) {
-                traceRefracted(px, py, pz, nx, ny, nz, dx, dy, dz, cosIncident, eta, offset, hitsLeft, childWeight);
+                traceRefracted(px, py, pz, nx, ny, nz, dx, dy, dz, cosIncident, eta, offset, hitsLeft, childWeight,
+                        skipNear, skipFar);
                 sumR += tR * outR;
                 sumG += tG * outG;
                 sumB += tB * outB;
@@ -253,14 +262,14 @@ final class TracerWorker {
      */
     private void traceRefracted(double px, double py, double pz, double nx, double ny, double nz,
                                 double dx, double dy, double dz, double cosIncident, double eta, double offset,
-                                int hitsLeft, double weight) {
+                                int hitsLeft, double weight, int skipNear, int skipFar) {
         double[] t = refracted;
         if (Optics.refract(dx, dy, dz, nx, ny, nz, cosIncident, eta, t)) {
-            trace(px - offset * nx, py - offset * ny, pz - offset * nz, t[0], t[1], t[2], hitsLeft - 1, weight);
+            trace(px - offset * nx, py - offset * ny, pz - offset * nz, t[0], t[1], t[2], hitsLeft - 1, weight, skipFar);
         } else {
             double k = 2 * cosIncident;
             trace(px + offset * nx, py + offset * ny, pz + offset * nz,
-                    dx + k * nx, dy + k * ny, dz + k * nz, hitsLeft - 1, weight);
+                    dx + k * nx, dy + k * ny, dz + k * nz, hitsLeft - 1, weight, skipNear);
         }
     }
 
@@ -272,7 +281,7 @@ final class TracerWorker {
      */
     private void shadePhong(int m, double px, double py, double pz, double nx, double ny, double nz,
                             double dx, double dy, double dz, double cosIncident, boolean entering, double offset,
-                            int hitsLeft, double weight) {
+                            int hitsLeft, double weight, int skipNear, int skipFar) {
         RenderScene s = scene;
         int c = 3 * m;
         double colorR = s.materialColor[c], colorG = s.materialColor[c + 1], colorB = s.materialColor[c + 2];
@@ -285,7 +294,7 @@ final class TracerWorker {
             if (cosLight <= 0) {
                 continue;
             }
-            double pass = caster.transmittance(s, ox, oy, oz, toLightX, toLightY, toLightZ, lightDistance);
+            double pass = caster.transmittance(s, ox, oy, oz, toLightX, toLightY, toLightZ, lightDistance, skipNear);
             if (pass == 0) {
                 continue;
             }
@@ -310,7 +319,7 @@ final class TracerWorker {
             double k = 2 * cosIncident;
             double rx = dx + k * nx, ry = dy + k * ny, rz = dz + k * nz;
             if (weight * ks >= minWeight) {
-                trace(ox, oy, oz, rx, ry, rz, hitsLeft - 1, weight * ks);
+                trace(ox, oy, oz, rx, ry, rz, hitsLeft - 1, weight * ks, skipNear);
                 sumR += ks * outR;
                 sumG += ks * outG;
                 sumB += ks * outB;
@@ -318,7 +327,8 @@ final class TracerWorker {
             double childWeight = weight * kt * Math.max(colorR, Math.max(colorG, colorB));
             if (childWeight >= minWeight && childWeight > 0) {
                 double eta = entering ? 1 / s.ior[m] : s.ior[m];
-                traceRefracted(px, py, pz, nx, ny, nz, dx, dy, dz, cosIncident, eta, offset, hitsLeft, childWeight);
+                traceRefracted(px, py, pz, nx, ny, nz, dx, dy, dz, cosIncident, eta, offset, hitsLeft, childWeight,
+                        skipNear, skipFar);
                 sumR += kt * colorR * outR;
                 sumG += kt * colorG * outG;
                 sumB += kt * colorB * outB;

@@ -30,7 +30,7 @@ class SphereBvhTest {
     }
 
     @Test
-    void nearestAndAnyHitAgreeWithBruteForce() {
+    void nearestAndAnyHitAgreeWithBruteForceSkippingTheSurfaceLeft() {
         SplittableRandom random = new SplittableRandom(7);
         RenderSettings settings = new RenderSettings(Shading.COOK_TORRANCE, 1, 0, 1e-9);
         for (int count : new int[] {17, 100, 1000}) {
@@ -52,17 +52,22 @@ class SphereBvhTest {
                 dx /= len;
                 dy /= len;
                 dz /= len;
+                int skipped = random.nextInt(count + 1) - 1; // -1: none
                 double brute = Intersect.MISS;
                 for (int s = 0; s < count; s++) {
+                    if (s == skipped) {
+                        continue;
+                    }
                     int k = 4 * s;
                     brute = Math.min(brute, Intersect.sphere(withBvh.spheres[k], withBvh.spheres[k + 1],
                             withBvh.spheres[k + 2], withBvh.spheres[k + 3], ox, oy, oz, dx, dy, dz));
                 }
-                boolean found = caster.nearest(withBvh, ox, oy, oz, dx, dy, dz);
+                boolean found = caster.nearest(withBvh, ox, oy, oz, dx, dy, dz, RayCaster.surfaceId(skipped, -1));
                 assertEquals(brute < Intersect.MISS, found);
                 assertEquals(brute, caster.hitT, 0);
                 double limit = random.nextDouble(0, 60);
-                assertEquals(brute < limit, caster.occluded(withBvh, ox, oy, oz, dx, dy, dz, limit));
+                assertEquals(brute < limit, caster.occluded(withBvh, ox, oy, oz, dx, dy, dz, limit,
+                        RayCaster.surfaceId(skipped, -1)));
             }
         }
     }

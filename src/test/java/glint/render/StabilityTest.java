@@ -63,7 +63,12 @@ class StabilityTest {
 
     @Test
     void hugeGroundSphereShowsNoAcneAndNoHoles() {
-        double r = 1e4;
+        for (double r : new double[] {1e4, 1e7, 1e8}) {
+            hugeGroundSphere(r);
+        }
+    }
+
+    private static void hugeGroundSphere(double r) {
         String yaml = """
                 camera: {position: [0, 1, -5], look_at: [0, 0, 5], fov: 70}
                 lights:
