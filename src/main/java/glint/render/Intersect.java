@@ -29,14 +29,21 @@ public final class Intersect {
                                       double ox, double oy, double oz, double dx, double dy, double dz,
                                       double tMax) {
         double fx = ox - cx, fy = oy - cy, fz = oz - cz;
+        return sphereFrom(fx, fy, fz, fx * fx + fy * fy + fz * fz - radius * radius, radius, dx, dy, dz, tMax);
+    }
+
+    /**
+     * The sphere test from precomputed origin terms: f = origin - centre and c = f.f - r^2 (shared
+     * by every camera ray of a frame).
+     */
+    static double sphereFrom(double fx, double fy, double fz, double c, double radius,
+                             double dx, double dy, double dz, double tMax) {
         double b = -(fx * dx + fy * dy + fz * dz); // distance along the ray to the closest approach
-        double r2 = radius * radius;
-        double c = fx * fx + fy * fy + fz * fz - r2; // > 0 when the origin is outside
         if ((c > 0 && b <= 0) || b - radius >= tMax) {
             return MISS;
         }
         double hx = fx + b * dx, hy = fy + b * dy, hz = fz + b * dz;
-        double discriminant = r2 - (hx * hx + hy * hy + hz * hz);
+        double discriminant = radius * radius - (hx * hx + hy * hy + hz * hz);
         if (discriminant < 0) {
             return MISS;
         }
@@ -87,8 +94,11 @@ public final class Intersect {
     public static double planeBefore(double nx, double ny, double nz, double offset,
                                      double ox, double oy, double oz, double dx, double dy, double dz,
                                      double tMax) {
-        double denominator = nx * dx + ny * dy + nz * dz;
-        double numerator = offset - (nx * ox + ny * oy + nz * oz);
+        return planeFrom(offset - (nx * ox + ny * oy + nz * oz), nx * dx + ny * dy + nz * dz, tMax);
+    }
+
+    /** The plane test from numerator = offset - n.o and denominator = n.d. */
+    static double planeFrom(double numerator, double denominator, double tMax) {
         // t = numerator / denominator lies in (0, tMax) iff both have one sign and |num| < tMax |den|
         if (!(numerator * denominator > 0) || !(Math.abs(numerator) < tMax * Math.abs(denominator))) {
             return MISS;

@@ -114,6 +114,71 @@ final class RayCaster {
         }
     }
 
+    // camera-ray constants of the current frame: per sphere f = eye - centre and f.f - r^2, per
+    // plane offset - n.eye (only for scenes searched sphere by sphere)
+    private double[] eyeToCentre = new double[0];
+    private double[] eyeC = new double[0];
+    private double[] eyePlaneNumerator = new double[0];
+
+    /** Precomputes what every camera ray of a frame shares: they all start at the eye. */
+    void prepareEye(RenderScene s) {
+        if (s.bvh != null) {
+            return;
+        }
+        if (eyeC.length < s.sphereCount) {
+            eyeC = new double[s.sphereCount];
+            eyeToCentre = new double[3 * s.sphereCount];
+        }
+        if (eyePlaneNumerator.length < s.planeCount) {
+            eyePlaneNumerator = new double[s.planeCount];
+        }
+        double[] spheres = s.spheres;
+        for (int i = 0; i < s.sphereCount; i++) {
+            double fx = s.eyeX - spheres[4 * i], fy = s.eyeY - spheres[4 * i + 1], fz = s.eyeZ - spheres[4 * i + 2];
+            double r = spheres[4 * i + 3];
+            eyeToCentre[3 * i] = fx;
+            eyeToCentre[3 * i + 1] = fy;
+            eyeToCentre[3 * i + 2] = fz;
+            eyeC[i] = fx * fx + fy * fy + fz * fz - r * r;
+        }
+        double[] planes = s.planes;
+        for (int i = 0; i < s.planeCount; i++) {
+            int k = 4 * i;
+            eyePlaneNumerator[i] = planes[k + 3] - (planes[k] * s.eyeX + planes[k + 1] * s.eyeY + planes[k + 2] * s.eyeZ);
+        }
+    }
+
+    /** {@link #nearest} for a camera ray (from the eye, after {@link #prepareEye}). */
+    boolean nearestFromEye(RenderScene s, double dx, double dy, double dz) {
+        if (s.bvh != null) {
+            return nearest(s, s.eyeX, s.eyeY, s.eyeZ, dx, dy, dz, 0);
+        }
+        hitT = Intersect.MISS;
+        hitSphere = -1;
+        hitPlane = -1;
+        double[] spheres = s.spheres;
+        for (int i = 0, n = s.sphereCount; i < n; i++) {
+            double t = Intersect.sphereFrom(eyeToCentre[3 * i], eyeToCentre[3 * i + 1], eyeToCentre[3 * i + 2],
+                    eyeC[i], spheres[4 * i + 3], dx, dy, dz, hitT);
+            if (t < hitT) {
+                hitT = t;
+                hitSphere = i;
+            }
+        }
+        double[] planes = s.planes;
+        for (int i = 0, n = s.planeCount; i < n; i++) {
+            int k = 4 * i;
+            double t = Intersect.planeFrom(eyePlaneNumerator[i], planes[k] * dx + planes[k + 1] * dy + planes[k + 2] * dz,
+                    hitT);
+            if (t < hitT) {
+                hitT = t;
+                hitPlane = i;
+                hitSphere = -1;
+            }
+        }
+        return hitT < Intersect.MISS;
+    }
+
     /** True when anything lies on the ray before distance tMax (any hit, not the nearest). */
     boolean occluded(RenderScene s, double ox, double oy, double oz, double dx, double dy, double dz, double tMax,
                      int skipSurface) {

@@ -10,6 +10,8 @@ import glint.config.Shading;
 final class TracerWorker {
 
     private static final double INV_PI = 1 / Math.PI;
+    /** {@code skipSurface} of a camera ray: it starts at the eye (no surface is skipped). */
+    private static final int EYE = Integer.MIN_VALUE;
 
     private RenderScene scene;
 
@@ -43,6 +45,7 @@ final class TracerWorker {
         screenOffsetX = -halfWidth;
         screenScaleY = -2 * halfHeight / frame.height();
         screenOffsetY = halfHeight;
+        caster.prepareEye(renderScene);
         int side = (int) Math.round(Math.sqrt(samples));
         for (int y = y0; y < y1; y++) {
             for (int x = x0; x < x1; x++) {
@@ -82,7 +85,7 @@ final class TracerWorker {
         double dy = s.forwardY + screenX * s.rightY + screenY * s.upY;
         double dz = s.forwardZ + screenX * s.rightZ + screenY * s.upZ;
         double inv = 1 / Math.sqrt(dx * dx + dy * dy + dz * dz);
-        trace(s.eyeX, s.eyeY, s.eyeZ, dx * inv, dy * inv, dz * inv, s.settings.recursionMax(), 1, 0);
+        trace(s.eyeX, s.eyeY, s.eyeZ, dx * inv, dy * inv, dz * inv, s.settings.recursionMax(), 1, EYE);
     }
 
     /**
@@ -93,7 +96,9 @@ final class TracerWorker {
                int skipSurface) {
         RenderScene s = scene;
         RayCaster hit = caster;
-        if (!hit.nearest(s, ox, oy, oz, dx, dy, dz, skipSurface)) {
+        boolean found = skipSurface == EYE ? hit.nearestFromEye(s, dx, dy, dz)
+                : hit.nearest(s, ox, oy, oz, dx, dy, dz, skipSurface);
+        if (!found) {
             outR = s.backgroundR;
             outG = s.backgroundG;
             outB = s.backgroundB;
