@@ -7,6 +7,7 @@ import java.awt.FontMetrics;
 import java.awt.Graphics;
 import java.awt.Graphics2D;
 import java.awt.RenderingHints;
+import java.awt.Toolkit;
 import java.awt.Window;
 import java.util.List;
 import java.util.concurrent.atomic.AtomicReference;
@@ -65,6 +66,10 @@ public final class Display extends JPanel implements Presenter {
         return overlay;
     }
 
+    public boolean helpVisible() {
+        return help;
+    }
+
     public void toggleOverlay() {
         overlay = !overlay;
         repaint();
@@ -90,6 +95,8 @@ public final class Display extends JPanel implements Presenter {
             box(g, KeyBindings.helpLines().stream().map(t -> new OverlayText.Line(t, OverlayText.Tone.NORMAL))
                     .toList(), y);
         }
+        // X11 buffers drawing requests; without a flush a frame can sit unseen until other traffic comes
+        Toolkit.getDefaultToolkit().sync();
     }
 
     /** Draws lines in a dark box at the top left; returns the box's bottom. */

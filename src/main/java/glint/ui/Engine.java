@@ -10,8 +10,6 @@ import glint.scene.Scene;
 import java.awt.image.BufferedImage;
 import java.io.IOException;
 import java.io.PrintWriter;
-import java.nio.file.AccessDeniedException;
-import java.nio.file.NoSuchFileException;
 import java.nio.file.Path;
 import java.util.Locale;
 import java.util.concurrent.CountDownLatch;
@@ -355,20 +353,10 @@ public final class Engine implements Runnable, SceneWatcher.Listener {
             Path file = screenshots.save(WindowImages.scaled(lastImage, viewWidth, viewHeight));
             note("saved " + file);
         } catch (IOException | RuntimeException e) {
-            String why = "screenshot not saved: " + describe(e);
+            String why = "screenshot not saved: " + screenshots.why(e);
             err.println("glint: " + why);
             note(why);
         }
-    }
-
-    private String describe(Exception e) {
-        if (e instanceof AccessDeniedException) {
-            return e.getMessage() + ": permission denied";
-        }
-        if (e instanceof NoSuchFileException) {
-            return screenshots.folder() + ": no such folder";
-        }
-        return e.getMessage() != null ? e.getMessage() : e.toString();
     }
 
     /** F5: the config and the scene again; the camera goes back to the scene's. */

@@ -65,7 +65,7 @@ public final class GlintWindow {
             frame[0].setDefaultCloseOperation(JFrame.DO_NOTHING_ON_CLOSE);
             frame[0].add(display[0]);
             frame[0].pack();
-            frame[0].setLocationRelativeTo(null);
+            frame[0].setLocationByPlatform(true); // the window manager places it; (0, 0) without one
         }, watcher);
         InputState input = new InputState(Clock.SYSTEM, display[0].getWidth(), display[0].getHeight());
         Engine engine = new Engine(config, scene, source, input, display[0], screenshots, Clock.SYSTEM, err);

@@ -1,5 +1,6 @@
 package glint.ui;
 
+import java.util.ArrayList;
 import java.util.List;
 
 /**
@@ -39,7 +40,7 @@ public record InputFrame(double[] heldSeconds, boolean fast, boolean motionHeld,
         private double dragX;
         private double dragY;
         private int wheel;
-        private final java.util.ArrayList<Action> commands = new java.util.ArrayList<>();
+        private final List<Action> commands = new ArrayList<>();
 
         public Builder hold(Action action, double seconds) {
             held[action.ordinal()] += seconds;

@@ -42,6 +42,7 @@ final class InputListener {
             @Override
             public void focusLost(FocusEvent e) {
                 input.releaseAll(); // no key stays held while another window has the keyboard
+                l.commandKeysDown.clear();
             }
         });
         display.addComponentListener(new ComponentAdapter() {

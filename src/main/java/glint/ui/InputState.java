@@ -3,7 +3,6 @@ package glint.ui;
 import java.util.ArrayList;
 import java.util.Arrays;
 import java.util.List;
-import java.util.concurrent.TimeUnit;
 import java.util.concurrent.locks.Condition;
 import java.util.concurrent.locks.ReentrantLock;
 
@@ -219,9 +218,5 @@ public final class InputState {
 
     private static double seconds(long nanos) {
         return Math.max(0, nanos) / 1e9;
-    }
-
-    static long toNanos(double seconds) {
-        return (long) (seconds * TimeUnit.SECONDS.toNanos(1));
     }
 }

@@ -3,7 +3,10 @@ package glint.ui;
 import java.awt.image.BufferedImage;
 import java.io.IOException;
 import java.io.OutputStream;
+import java.nio.file.AccessDeniedException;
+import java.nio.file.FileSystemException;
 import java.nio.file.Files;
+import java.nio.file.NoSuchFileException;
 import java.nio.file.Path;
 import java.nio.file.StandardCopyOption;
 import java.nio.file.StandardOpenOption;
@@ -55,6 +58,20 @@ public final class Screenshots {
             deleteQuietly(part, e);
             throw e;
         }
+    }
+
+    /** Why a save failed, in words: {@code <folder>: permission denied}, ... */
+    public String why(Exception e) {
+        if (e instanceof AccessDeniedException) {
+            return folder + ": permission denied";
+        }
+        if (e instanceof NoSuchFileException) {
+            return folder + ": no such folder";
+        }
+        if (e instanceof FileSystemException f && f.getReason() != null) {
+            return folder + ": " + f.getReason();
+        }
+        return e.getMessage() != null ? e.getMessage() : e.toString();
     }
 
     private static void deleteQuietly(Path file, Exception cause) {

@@ -214,7 +214,10 @@ class EngineTest {
     @Test
     void unwritableScreenshotFolderIsAMessageNotACrash() throws IOException, InputException {
         Path notAFolder = Files.writeString(dir.resolve("file"), "x");
-        for (Path folder : List.of(dir.resolve("missing"), notAFolder)) {
+        java.util.Map<Path, String> whys = java.util.Map.of(
+                dir.resolve("missing"), dir.resolve("missing") + ": no such folder",
+                notAFolder, notAFolder + ": Not a directory");
+        for (Path folder : whys.keySet()) {
             SceneSource source = new SceneSource(sceneFile, () -> config);
             Engine e = new Engine(config, source.loadScene(), source, input, presenter, new Screenshots(folder),
                     clock, new PrintWriter(errText, true));
@@ -223,7 +226,7 @@ class EngineTest {
                 input.command(Action.SCREENSHOT);
                 e.step();
                 String message = lastStats().message();
-                assertTrue(message.startsWith("screenshot not saved: "), message);
+                assertEquals("screenshot not saved: " + whys.get(folder), message);
                 assertTrue(errText.toString().contains(message), errText.toString());
                 assertFalse(errText.toString().contains("\tat "), "no stack trace");
             } finally {

@@ -81,6 +81,7 @@ class WindowTest {
             assertEquals(0, window.awaitExit());
         }
         assertFalse(err.toString().contains("\tat "), () -> "stack trace on err:\n" + err);
+        assertFalse(err.toString().contains("unexpected"), () -> "error on err:\n" + err);
     }
 
     // ---- helpers ----
@@ -124,13 +125,13 @@ class WindowTest {
         return p;
     }
 
-    private static long await(BooleanSupplier condition, long deadlineMillis, String what)
+    private long await(BooleanSupplier condition, long deadlineMillis, String what)
             throws InterruptedException {
         long start = System.nanoTime();
         while (!condition.getAsBoolean()) {
             long elapsed = TimeUnit.NANOSECONDS.toMillis(System.nanoTime() - start);
             if (elapsed > deadlineMillis) {
-                throw new AssertionError(what + ": not within " + deadlineMillis + " ms");
+                throw new AssertionError(what + ": not within " + deadlineMillis + " ms; err: " + err);
             }
             Thread.sleep(10);
         }
@@ -220,15 +221,35 @@ class WindowTest {
         BufferedImage saved = ImageIO.read(png.toFile());
         assertEquals(W, saved.getWidth());
         assertEquals(H, saved.getHeight());
-        int[] expected = pixels(saved);
-        await(() -> {
-            try {
-                return Arrays.equals(expected, pixels(capture()));
-            } catch (Exception e) {
-                throw new AssertionError(e);
-            }
-        }, 5_000, "the window's pixels equal the PNG's");
+        awaitWindowShows(pixels(saved));
         assertTrue(window.display().shown().stats().message().startsWith("saved "));
+    }
+
+    /** Waits until the window's pixels are {@code expected}; says where they differ if they never are. */
+    private void awaitWindowShows(int[] expected) throws Exception {
+        int[][] last = new int[1][];
+        try {
+            await(() -> {
+                try {
+                    last[0] = pixels(capture());
+                    return Arrays.equals(expected, last[0]);
+                } catch (Exception e) {
+                    throw new AssertionError(e);
+                }
+            }, 5_000, "the window's pixels equal the PNG's");
+        } catch (AssertionError e) {
+            int differing = 0;
+            int first = -1;
+            for (int i = 0; i < expected.length; i++) {
+                if (expected[i] != last[0][i]) {
+                    differing++;
+                    first = first < 0 ? i : first;
+                }
+            }
+            throw new AssertionError(e.getMessage() + ": " + differing + " pixels differ, the first at ("
+                    + first % W + ", " + first / W + "): PNG " + Integer.toHexString(expected[first]) + ", window "
+                    + Integer.toHexString(last[0][first]) + "; window at " + window.frame().getBounds(), e);
+        }
     }
 
     private List<Path> pngs() {
@@ -274,6 +295,7 @@ class WindowTest {
         robot.keyPress(KeyEvent.VK_SHIFT);
         tap(KeyEvent.VK_SLASH); // '?' on a US keyboard
         robot.keyRelease(KeyEvent.VK_SHIFT);
+        await(() -> window.display().helpVisible(), 5_000, "the help key");
         int[] a = pixels(before);
         await(() -> {
             try {
