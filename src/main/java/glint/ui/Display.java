@@ -99,9 +99,11 @@ public final class Display extends JPanel implements Presenter {
         Toolkit.getDefaultToolkit().sync();
     }
 
-    /** Draws lines in a dark box at the top left; returns the box's bottom. */
-    private int box(Graphics2D g, List<OverlayText.Line> lines, int top) {
+    /** Draws lines in a dark box at the top left, wrapped to the window; returns the box's bottom. */
+    private int box(Graphics2D g, List<OverlayText.Line> unwrapped, int top) {
         FontMetrics m = g.getFontMetrics();
+        List<OverlayText.Line> lines = OverlayText.wrap(unwrapped, m::stringWidth,
+                Math.max(m.charWidth('m') * 20, getWidth() - 4 * PAD));
         int width = 0;
         for (OverlayText.Line line : lines) {
             width = Math.max(width, m.stringWidth(line.text()));
@@ -121,4 +123,5 @@ public final class Display extends JPanel implements Presenter {
         }
         return top + height + 2 * PAD;
     }
+
 }

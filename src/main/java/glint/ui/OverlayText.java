@@ -3,6 +3,7 @@ package glint.ui;
 import java.util.ArrayList;
 import java.util.List;
 import java.util.Locale;
+import java.util.function.ToIntFunction;
 
 /** The overlay's lines for a frame's stats (key H shows and hides it). */
 final class OverlayText {
@@ -41,6 +42,33 @@ final class OverlayText {
         }
         lines.add(new Line("H hides this, ? shows the keys", Tone.NOTE));
         return lines;
+    }
+
+    /**
+     * Breaks lines wider than {@code max} (as measured by {@code width}) at spaces, or anywhere in a word
+     * too long for a line; continuation lines are indented by two spaces.
+     */
+    static List<Line> wrap(List<Line> lines, ToIntFunction<String> width, int max) {
+        List<Line> out = new ArrayList<>();
+        for (Line line : lines) {
+            String indent = "";
+            String rest = line.text();
+            while (width.applyAsInt(indent + rest) > max && rest.length() > 1) {
+                int cut = rest.length() - 1;
+                while (cut > 1 && width.applyAsInt(indent + rest.substring(0, cut)) > max) {
+                    cut--;
+                }
+                int space = rest.lastIndexOf(' ', cut);
+                int end = space > 0 ? space : cut; // at least one character each time: it ends
+                out.add(new Line(indent + rest.substring(0, end), line.tone()));
+                rest = rest.substring(end).stripLeading();
+                indent = "  ";
+            }
+            if (!rest.isEmpty()) {
+                out.add(new Line(indent + rest, line.tone()));
+            }
+        }
+        return out;
     }
 
     private static Line normal(String text) {
