@@ -134,7 +134,7 @@ final class RayCaster {
         }
         double[] spheres = s.spheres;
         for (int i = 0; i < s.sphereCount; i++) {
-            double fx = s.eyeX - spheres[4 * i], fy = s.eyeY - spheres[4 * i + 1], fz = s.eyeZ - spheres[4 * i + 2];
+            double fx = s.camera.eyeX - spheres[4 * i], fy = s.camera.eyeY - spheres[4 * i + 1], fz = s.camera.eyeZ - spheres[4 * i + 2];
             double r = spheres[4 * i + 3];
             eyeToCentre[3 * i] = fx;
             eyeToCentre[3 * i + 1] = fy;
@@ -144,14 +144,14 @@ final class RayCaster {
         double[] planes = s.planes;
         for (int i = 0; i < s.planeCount; i++) {
             int k = 4 * i;
-            eyePlaneNumerator[i] = planes[k + 3] - (planes[k] * s.eyeX + planes[k + 1] * s.eyeY + planes[k + 2] * s.eyeZ);
+            eyePlaneNumerator[i] = planes[k + 3] - (planes[k] * s.camera.eyeX + planes[k + 1] * s.camera.eyeY + planes[k + 2] * s.camera.eyeZ);
         }
     }
 
     /** {@link #nearest} for a camera ray (from the eye, after {@link #prepareEye}). */
     boolean nearestFromEye(RenderScene s, double dx, double dy, double dz) {
         if (s.bvh != null) {
-            return nearest(s, s.eyeX, s.eyeY, s.eyeZ, dx, dy, dz, 0);
+            return nearest(s, s.camera.eyeX, s.camera.eyeY, s.camera.eyeZ, dx, dy, dz, 0);
         }
         hitT = Intersect.MISS;
         hitSphere = -1;

@@ -39,7 +39,7 @@ final class TracerWorker {
                     int frameIndex, int x0, int y0, int x1, int y1) {
         this.scene = renderScene;
         // image point (px, py) in pixels -> screen (x, y) on the image plane at distance 1
-        double halfWidth = renderScene.tanHalfFov;
+        double halfWidth = renderScene.camera.tanHalfFov;
         double halfHeight = halfWidth * frame.height() / frame.width();
         screenScaleX = 2 * halfWidth / frame.width();
         screenOffsetX = -halfWidth;
@@ -81,11 +81,11 @@ final class TracerWorker {
         RenderScene s = scene;
         double screenX = px * screenScaleX + screenOffsetX;
         double screenY = py * screenScaleY + screenOffsetY;
-        double dx = s.forwardX + screenX * s.rightX + screenY * s.upX;
-        double dy = s.forwardY + screenX * s.rightY + screenY * s.upY;
-        double dz = s.forwardZ + screenX * s.rightZ + screenY * s.upZ;
+        double dx = s.camera.forwardX + screenX * s.camera.rightX + screenY * s.camera.upX;
+        double dy = s.camera.forwardY + screenX * s.camera.rightY + screenY * s.camera.upY;
+        double dz = s.camera.forwardZ + screenX * s.camera.rightZ + screenY * s.camera.upZ;
         double inv = 1 / Math.sqrt(dx * dx + dy * dy + dz * dz);
-        trace(s.eyeX, s.eyeY, s.eyeZ, dx * inv, dy * inv, dz * inv, s.settings.recursionMax(), 1, EYE);
+        trace(s.camera.eyeX, s.camera.eyeY, s.camera.eyeZ, dx * inv, dy * inv, dz * inv, s.settings.recursionMax(), 1, EYE);
     }
 
     /**

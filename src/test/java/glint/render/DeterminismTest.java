@@ -50,6 +50,22 @@ class DeterminismTest {
         }
     }
 
+    @Test
+    void swappingTheCameraRendersWhatCompilingWithThatCameraRenders() throws Exception {
+        Scene scene = SceneLoader.load(Path.of("scenes/bench/field-1000.yaml"));
+        RenderSettings settings = new RenderSettings(Shading.COOK_TORRANCE, 5, 1e-3, 1e-9);
+        glint.scene.Camera moved = glint.scene.Camera.lookAt(new glint.math.Vector3d(3, 2, -4),
+                new glint.math.Vector3d(0, 0, 3), glint.math.Vector3d.UNIT_Y, 50);
+        RenderScene swapped = RenderScene.compile(scene, settings).withCamera(moved);
+        RenderScene fresh = RenderScene.compile(scene.withCamera(moved), settings);
+        FrameBuffer a = new FrameBuffer(64, 48), b = new FrameBuffer(64, 48);
+        try (Tracer tracer = new Tracer(2)) {
+            tracer.render(swapped, a, 1, 0, 4);
+            tracer.render(fresh, b, 1, 0, 4);
+        }
+        assertArrayEquals(b.rgb(), a.rgb());
+    }
+
     private static byte[] png(FrameBuffer frame) throws IOException {
         ByteArrayOutputStream out = new ByteArrayOutputStream();
         ImageIO.write(ImageWriter.toImage(frame), "png", out);
