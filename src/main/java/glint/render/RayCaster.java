@@ -17,6 +17,9 @@ final class RayCaster {
     /** The plane of the last nearest hit, or -1. */
     int hitPlane;
 
+    /** Rays cast so far (nearest and shadow queries), for rays-per-second figures. */
+    long rays;
+
     private final int[] stack = new int[STACK_DEPTH];
 
     /** The surface the current query ignores (see {@link #surfaceId}); 0 = none. */
@@ -34,6 +37,7 @@ final class RayCaster {
     /** Nearest hit along the ray; sets hitT and hitSphere or hitPlane (the other is -1). */
     boolean nearest(RenderScene s, double ox, double oy, double oz, double dx, double dy, double dz, int skipSurface) {
         skip = skipSurface;
+        rays++;
         hitT = Intersect.MISS;
         hitSphere = -1;
         hitPlane = -1;
@@ -153,6 +157,7 @@ final class RayCaster {
         if (s.bvh != null) {
             return nearest(s, s.camera.eyeX, s.camera.eyeY, s.camera.eyeZ, dx, dy, dz, 0);
         }
+        rays++;
         hitT = Intersect.MISS;
         hitSphere = -1;
         hitPlane = -1;
@@ -183,6 +188,7 @@ final class RayCaster {
     boolean occluded(RenderScene s, double ox, double oy, double oz, double dx, double dy, double dz, double tMax,
                      int skipSurface) {
         skip = skipSurface;
+        rays++;
         double[] planes = s.planes;
         for (int i = 0, n = s.planeCount; i < n; i++) {
             if (-(i + 1) == skip) {
@@ -247,6 +253,7 @@ final class RayCaster {
      */
     double transmittance(RenderScene s, double ox, double oy, double oz, double dx, double dy, double dz,
                          double tMax, int skipSurface) {
+        rays++;
         double pass = 1;
         double[] planes = s.planes;
         for (int i = 0, n = s.planeCount; i < n && pass > 0; i++) {

@@ -47,6 +47,15 @@ public final class Tracer implements AutoCloseable {
         this.pool = Executors.newFixedThreadPool(threads, factory);
     }
 
+    /** Rays cast by all workers so far (camera, reflected, refracted and shadow rays). */
+    public long raysCast() {
+        long sum = 0;
+        for (TracerWorker worker : workers) {
+            sum += worker.raysCast();
+        }
+        return sum;
+    }
+
     public int threads() {
         return threads;
     }

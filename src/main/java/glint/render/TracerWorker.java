@@ -31,6 +31,11 @@ final class TracerWorker {
     // the direction Optics.refract writes
     private final double[] refracted = new double[3];
 
+    /** Rays this worker has cast (camera, reflected, refracted and shadow rays). */
+    long raysCast() {
+        return caster.rays;
+    }
+
     /**
      * Renders pixels [x0, x1) x [y0, y1): each pixel gets the average of samples
      * [firstSample, firstSample + sampleCount) of its {@code samples}-sample stratified pattern.
