@@ -1,8 +1,10 @@
 package glint.ui;
 
 import glint.config.Config;
+import glint.config.Limits;
 import glint.config.Shading;
 import glint.input.InputException;
+import glint.render.RenderException;
 import glint.render.RenderScene;
 import glint.render.RenderSettings;
 import glint.scene.Camera;
@@ -24,6 +26,11 @@ import java.util.concurrent.atomic.AtomicReference;
  *
  * <p>{@link #step} is one turn of the loop and is what tests drive with their own clock; {@link #run}
  * repeats it and waits on {@link InputState#awaitActivity} as long as it asks.
+ *
+ * <p>Faults do not end it: a frame that fails to render (a render worker threw, memory ran out) keeps the
+ * last good frame on screen, shows why in the overlay, says so once on standard error, and is tried again
+ * after {@link #RETRY_NANOS} without waiting for input. A window larger than the config's
+ * {@code max_image_pixels} (or than half the heap can hold) is rendered smaller and scaled up.
  */
 public final class Engine implements Runnable, SceneWatcher.Listener {
 
@@ -31,7 +38,13 @@ public final class Engine implements Runnable, SceneWatcher.Listener {
     public static final long MOTION_HOLD_NANOS = 150_000_000L;
     /** What {@link #step} returns when there is nothing to do until the user does something. */
     public static final long IDLE = Long.MAX_VALUE;
-    static final int MAX_DEPTH = 64;
+    /** After a frame failed to render, it is tried again this much later (sooner would only spin). */
+    public static final long RETRY_NANOS = 500_000_000L;
+    /**
+     * Heap bytes per rendered pixel: the float frame buffer (12), the accumulated sum and mean (24 + 12),
+     * the image on screen, the one being made and a screenshot's (3 x 4).
+     */
+    static final long BYTES_PER_PIXEL = 60;
 
     private final SceneSource source;
     private final InputState input;
@@ -55,6 +68,8 @@ public final class Engine implements Runnable, SceneWatcher.Listener {
     private int viewWidth;
     private int viewHeight;
     private RenderScene compiled; // null: compile again before the next frame
+    private RenderScene compiledBase; // the scene and settings compiled, from any camera
+    private Scene compiledFrom;
     private boolean needFrame = true;
     private int passesDone;
     private long lastMotion;
@@ -64,6 +79,11 @@ public final class Engine implements Runnable, SceneWatcher.Listener {
     private String message = "";
     private String error = "";
     private boolean statusChanged;
+    private long pixelBudget;     // most pixels a frame may have
+    private String sizeLimit = ""; // why frames are smaller than the window, or empty
+    private int failedFrames;     // frames that failed to render since the last good one
+    private String renderError = "";
+    private long retryAt;
 
     private volatile boolean running = true;
     private volatile boolean failed;
@@ -74,6 +94,12 @@ public final class Engine implements Runnable, SceneWatcher.Listener {
 
     public Engine(Config config, Scene scene, SceneSource source, InputState input, Presenter presenter,
                   Screenshots screenshots, Clock clock, PrintWriter err) {
+        this(config, scene, source, input, presenter, screenshots, clock, err, FrameRenderer.TraceCall.TRACER);
+    }
+
+    /** An engine whose frames are traced by {@code trace} (tests: injected faults, stamped frames). */
+    Engine(Config config, Scene scene, SceneSource source, InputState input, Presenter presenter,
+           Screenshots screenshots, Clock clock, PrintWriter err, FrameRenderer.TraceCall trace) {
         this.config = config;
         this.source = source;
         this.input = input;
@@ -85,11 +111,25 @@ public final class Engine implements Runnable, SceneWatcher.Listener {
         this.depth = config.recursionMax();
         this.controller = new CameraController(scene.camera(), config.moveSpeed(), config.turnSpeed());
         this.governor = new ResolutionGovernor(config.targetFps(), config.displayScale());
-        this.renderer = new FrameRenderer(config.effectiveThreads(), config.screenDivider());
+        this.renderer = new FrameRenderer(config.effectiveThreads(), config.screenDivider(), trace);
         this.viewWidth = input.viewWidth();
         this.viewHeight = input.viewHeight();
         this.lastMotion = clock.nanoTime() - MOTION_HOLD_NANOS - 1;
+        source.limits(config.limits().scene());
+        checkSize();
         setScene(scene, true);
+    }
+
+    /** The most pixels a window frame may have: max_image_pixels, and what half of the heap can hold. */
+    static long pixelBudget(Limits limits, long maxHeapBytes) {
+        return Math.max(1, Math.min(limits.maxImagePixels(), maxHeapBytes / 2 / BYTES_PER_PIXEL));
+    }
+
+    /** Why frames are at most {@link #pixelBudget} pixels, for the overlay: {@code 10,000 pixels (max_image_pixels)}. */
+    static String budgetText(Limits limits, long maxHeapBytes) {
+        long budget = pixelBudget(limits, maxHeapBytes);
+        return String.format(Locale.ROOT, "%,d pixels (%s)", budget,
+                budget == limits.maxImagePixels() ? "max_image_pixels" : "half the Java heap, -Xmx");
     }
 
     // ---- what other threads may ask or tell ----
@@ -160,9 +200,9 @@ public final class Engine implements Runnable, SceneWatcher.Listener {
                 long wait;
                 try {
                     wait = step();
-                } catch (RuntimeException e) {
-                    report("glint: " + e); // shown; the loop goes on with the next change
-                    wait = IDLE;
+                } catch (RuntimeException | OutOfMemoryError e) {
+                    frameFailed(e); // shown and logged once; the frame is tried again
+                    wait = RETRY_NANOS;
                 }
                 if (running && wait > 0) {
                     input.awaitActivity(wait);
@@ -197,6 +237,7 @@ public final class Engine implements Runnable, SceneWatcher.Listener {
         if (input.viewWidth() != viewWidth || input.viewHeight() != viewHeight) {
             viewWidth = input.viewWidth();
             viewHeight = input.viewHeight();
+            checkSize();
             invalidate();
         }
         if (in.wheelNotches() != 0) {
@@ -209,13 +250,18 @@ public final class Engine implements Runnable, SceneWatcher.Listener {
             invalidate();
         }
         boolean moving = moved || in.motionHeld() || start - lastMotion < MOTION_HOLD_NANOS;
+        boolean frameDue = moving ? needFrame : passesDone < config.samples();
+        if (frameDue && start < retryAt) { // the last try failed: the next one comes when the pause is over
+            if (statusChanged) {
+                presentStatus();
+            }
+            return retryAt - start;
+        }
         if (moving && needFrame) {
-            renderMoving(start);
-            return 0;
+            return renderMoving(start) ? 0 : retryAt - clock.nanoTime();
         }
         if (!moving && passesDone < config.samples()) {
-            renderPass(start);
-            return 0;
+            return renderPass(start) ? 0 : retryAt - clock.nanoTime();
         }
         if (moving) { // nothing new to draw yet: wait for input, or for the end of the motion hold
             if (statusChanged) {
@@ -231,36 +277,44 @@ public final class Engine implements Runnable, SceneWatcher.Listener {
         return IDLE;
     }
 
-    private void renderMoving(long start) {
-        double scale = governor.scale();
-        int w = ResolutionGovernor.renderSize(viewWidth, scale);
-        int h = ResolutionGovernor.renderSize(viewHeight, scale);
+    /** Renders and shows a moving frame; false if it failed (shown, and tried again later). */
+    private boolean renderMoving(long start) {
+        ResolutionGovernor.Size size = ResolutionGovernor.renderSize(viewWidth, viewHeight, governor.scale(),
+                pixelBudget);
         BufferedImage image;
         try {
-            image = renderer.renderMoving(compiled(), w, h);
+            image = renderer.renderMoving(compiled(), size.width(), size.height());
         } catch (RuntimeException | OutOfMemoryError e) {
-            renderFailed(e);
-            return;
+            frameFailed(e);
+            presentStatus();
+            return false;
         }
         needFrame = false;
         passesDone = 0;
         long end = clock.nanoTime();
         governor.frameTook((end - start) / 1e9);
+        rendered();
         show(image, end, end - start, 1, true);
+        return true;
     }
 
-    private void renderPass(long start) {
+    /** Renders and shows the next still pass; false if it failed (shown, and tried again later). */
+    private boolean renderPass(long start) {
+        ResolutionGovernor.Size size = ResolutionGovernor.renderSize(viewWidth, viewHeight, 1, pixelBudget);
         BufferedImage image;
         try {
-            image = renderer.renderPass(compiled(), viewWidth, viewHeight, config.samples(), passesDone);
+            image = renderer.renderPass(compiled(), size.width(), size.height(), config.samples(), passesDone);
         } catch (RuntimeException | OutOfMemoryError e) {
-            renderFailed(e);
-            return;
+            frameFailed(e);
+            presentStatus();
+            return false;
         }
         needFrame = false;
         passesDone++;
         long end = clock.nanoTime();
+        rendered();
         show(image, end, end - start, passesDone, false);
+        return true;
     }
 
     private void show(BufferedImage image, long end, long nanos, int samples, boolean moving) {
@@ -268,7 +322,7 @@ public final class Engine implements Runnable, SceneWatcher.Listener {
         lastImage = image;
         lastStats = new FrameStats(meter.fps(), nanos / 1e6, image.getWidth(), image.getHeight(),
                 viewWidth, viewHeight, samples, config.samples(), moving, renderer.threads(), shading, depth,
-                controller.speed(), source.scenePath().toString(), message, error);
+                controller.speed(), source.scenePath().toString(), message, error, sizeLimit, renderError);
         publish();
         if (config.debug() && meter.windowClosed()) {
             err.println(String.format(Locale.ROOT, "glint: window %.1f fps, %.1f ms/frame, %dx%d of %dx%d, %s",
@@ -283,10 +337,11 @@ public final class Engine implements Runnable, SceneWatcher.Listener {
         lastStats = s == null
                 ? new FrameStats(Double.NaN, 0, 0, 0, viewWidth, viewHeight, 0, config.samples(), false,
                         renderer.threads(), shading, depth, controller.speed(), source.scenePath().toString(),
-                        message, error)
+                        message, error, sizeLimit, renderError)
                 : new FrameStats(meter.fps(), s.msPerFrame(), s.renderWidth(), s.renderHeight(), s.viewWidth(),
                         s.viewHeight(), s.samplesDone(), config.samples(), s.moving() && passesDone == 0,
-                        renderer.threads(), shading, depth, controller.speed(), s.scene(), message, error);
+                        renderer.threads(), shading, depth, controller.speed(), s.scene(), message, error, sizeLimit,
+                        renderError);
         publish();
     }
 
@@ -297,18 +352,62 @@ public final class Engine implements Runnable, SceneWatcher.Listener {
         presenter.present(frame);
     }
 
-    private void renderFailed(Throwable e) {
-        report("glint: render failed: " + e);
-        needFrame = false;
-        passesDone = config.samples(); // nothing more until something changes
+    /**
+     * A frame could not be made. The last good frame stays on screen; the overlay says why; standard error
+     * says so once, not once a frame; the frame is tried again after {@link #RETRY_NANOS}, input or not.
+     */
+    private void frameFailed(Throwable e) {
+        String why = "render failed: " + (e instanceof RenderException ? e.getMessage()
+                : e instanceof OutOfMemoryError ? "out of memory (" + e.getMessage() + ")" : e.toString());
+        if (failedFrames == 0) {
+            err.println("glint: " + why + "; trying again every " + RETRY_NANOS / 1_000_000 + " ms");
+        }
+        failedFrames++;
+        renderError = why + (failedFrames == 1 ? "" : " (" + failedFrames + " tries)") + "; trying again";
+        retryAt = clock.nanoTime() + RETRY_NANOS;
+        needFrame = true;
+        passesDone = 0; // a failed pass may have reached the average: the refinement starts over
+        statusChanged = true;
+    }
+
+    /** A frame was made: a run of failures, if any, is over. */
+    private void rendered() {
+        if (failedFrames > 0) {
+            err.println("glint: rendering works again after " + failedFrames + " failed "
+                    + (failedFrames == 1 ? "try" : "tries"));
+            note("rendering works again");
+            failedFrames = 0;
+            renderError = "";
+        }
+    }
+
+    /** The frame size budget for the window's size now; says once when it starts to bind. */
+    private void checkSize() {
+        Limits limits = config.limits();
+        long maxHeap = Runtime.getRuntime().maxMemory();
+        pixelBudget = pixelBudget(limits, maxHeap);
+        boolean over = (long) viewWidth * viewHeight > pixelBudget;
+        String limit = over ? budgetText(limits, maxHeap) : "";
+        if (over && sizeLimit.isEmpty()) {
+            ResolutionGovernor.Size size = ResolutionGovernor.renderSize(viewWidth, viewHeight, 1, pixelBudget);
+            String line = String.format(Locale.ROOT, "the window is %dx%d; frames are rendered at %dx%d, at most %s",
+                    viewWidth, viewHeight, size.width(), size.height(), limit);
+            err.println("glint: " + line);
+            note(line);
+        }
+        sizeLimit = limit;
     }
 
     // ---- what changes the view ----
 
     private RenderScene compiled() {
         if (compiled == null) {
-            Config settings = config.withShading(shading).withRecursionMax(depth);
-            compiled = RenderScene.compile(scene.withCamera(controller.camera()), RenderSettings.of(settings));
+            RenderSettings settings = RenderSettings.of(config.withShading(shading).withRecursionMax(depth));
+            if (compiledBase == null || compiledFrom != scene || !settings.equals(compiledBase.settings())) {
+                compiledBase = RenderScene.compile(scene, settings); // a camera move does not recompile
+                compiledFrom = scene;
+            }
+            compiled = compiledBase.withCamera(controller.camera());
         }
         return compiled;
     }
@@ -328,8 +427,10 @@ public final class Engine implements Runnable, SceneWatcher.Listener {
                 invalidate();
             }
             case DEPTH_UP, DEPTH_DOWN -> {
-                int next = Math.max(1, Math.min(MAX_DEPTH, depth + (action == Action.DEPTH_UP ? 1 : -1)));
-                note(next == depth ? "depth stays " + depth + " (from 1 to " + MAX_DEPTH + ")" : "depth " + next);
+                int max = config.limits().maxRecursion();
+                int next = Math.max(1, Math.min(max, depth + (action == Action.DEPTH_UP ? 1 : -1)));
+                note(next == depth ? "depth stays " + depth + " (from 1 to " + max + ", max_recursion)"
+                        : "depth " + next);
                 if (next != depth) {
                     depth = next;
                     invalidate();
@@ -349,11 +450,14 @@ public final class Engine implements Runnable, SceneWatcher.Listener {
             note("nothing to save yet");
             return;
         }
+        // the window's size, or at most the frame size budget (a huge window: the largest frame allowed)
+        ResolutionGovernor.Size size = ResolutionGovernor.renderSize(viewWidth, viewHeight, 1, pixelBudget);
         try {
-            Path file = screenshots.save(WindowImages.scaled(lastImage, viewWidth, viewHeight));
-            note("saved " + file);
-        } catch (IOException | RuntimeException e) {
-            String why = "screenshot not saved: " + screenshots.why(e);
+            Path file = screenshots.save(WindowImages.scaled(lastImage, size.width(), size.height()));
+            note("saved " + file + (sizeLimit.isEmpty() ? ""
+                    : " at " + size.width() + "x" + size.height() + " (at most " + sizeLimit + ")"));
+        } catch (IOException | RuntimeException | OutOfMemoryError e) {
+            String why = "screenshot not saved: " + (e instanceof Exception x ? screenshots.why(x) : "out of memory");
             err.println("glint: " + why);
             note(why);
         }
@@ -380,9 +484,12 @@ public final class Engine implements Runnable, SceneWatcher.Listener {
         config = c;
         shading = c.shading();
         depth = c.recursionMax();
+        depth = Math.min(depth, c.limits().maxRecursion());
         controller.setSpeeds(c.moveSpeed(), c.turnSpeed());
         governor.setLimits(c.targetFps(), c.displayScale());
         renderer.configure(c.effectiveThreads(), c.screenDivider());
+        source.limits(c.limits().scene());
+        checkSize();
         presenter.title(c.name());
         invalidate();
     }
@@ -427,8 +534,4 @@ public final class Engine implements Runnable, SceneWatcher.Listener {
         statusChanged = true;
     }
 
-    private void report(String line) {
-        err.println(line);
-        note(line);
-    }
 }

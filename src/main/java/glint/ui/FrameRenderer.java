@@ -11,12 +11,44 @@ import java.awt.image.BufferedImage;
  */
 final class FrameRenderer implements AutoCloseable {
 
+    /**
+     * How a frame is traced: by the tracer (the window), or by a test's stand-in around it that injects a
+     * fault into a tile or stamps each frame (the fault and soak tests).
+     */
+    @FunctionalInterface
+    interface TraceCall {
+
+        /** What {@code pass} is for a moving frame: every sample of the pixel in one go. */
+        int WHOLE_FRAME = -1;
+
+        /** The tracer itself. */
+        TraceCall TRACER = (tracer, scene, target, samples, pass, divider) -> {
+            if (pass == WHOLE_FRAME) {
+                tracer.render(scene, target, samples, 0, divider);
+            } else {
+                tracer.renderPass(scene, target, samples, pass, divider);
+            }
+        };
+
+        /**
+         * Renders into {@code target}: sample {@code pass} of {@code samples} of every pixel, or all of
+         * them when {@code pass} is {@link #WHOLE_FRAME}; returns when every pixel is written.
+         */
+        void trace(Tracer tracer, RenderScene scene, FrameBuffer target, int samples, int pass, int divider);
+    }
+
+    private final TraceCall call;
     private Tracer tracer;
     private int divider;
     private FrameBuffer buffer;
     private final Accumulator accumulator = new Accumulator();
 
     FrameRenderer(int threads, int divider) {
+        this(threads, divider, TraceCall.TRACER);
+    }
+
+    FrameRenderer(int threads, int divider, TraceCall call) {
+        this.call = call;
         this.tracer = new Tracer(threads);
         this.divider = divider;
     }
@@ -37,25 +69,26 @@ final class FrameRenderer implements AutoCloseable {
     /** A frame with one sample per pixel, through the pixel centres. */
     BufferedImage renderMoving(RenderScene scene, int width, int height) {
         FrameBuffer frame = buffer(width, height);
-        tracer.render(scene, frame, 1, 0, divider);
+        call.trace(tracer, scene, frame, 1, TraceCall.WHOLE_FRAME, divider);
         return SrgbEncoder.toImage(frame);
     }
 
     /**
      * Pass {@code pass} of the still image of {@code samples} samples per pixel, averaged with the
-     * passes before it (pass 0 starts over).
+     * passes before it (pass 0 starts over; after a failed pass the engine starts over).
      */
     BufferedImage renderPass(RenderScene scene, int width, int height, int samples, int pass) {
         if (pass == 0) {
             accumulator.reset(width, height);
         }
         FrameBuffer frame = buffer(width, height);
-        tracer.renderPass(scene, frame, samples, pass, divider);
+        call.trace(tracer, scene, frame, samples, pass, divider);
         return SrgbEncoder.toImage(accumulator.add(frame));
     }
 
     private FrameBuffer buffer(int width, int height) {
         if (buffer == null || buffer.width() != width || buffer.height() != height) {
+            buffer = null; // the old one can go before the new one is taken
             buffer = new FrameBuffer(width, height);
         }
         return buffer;

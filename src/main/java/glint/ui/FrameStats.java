@@ -21,10 +21,14 @@ import glint.config.Shading;
  * @param scene         the scene file
  * @param message       the last thing done (screenshot saved, depth changed, ...), or empty
  * @param error         the last load or save error, {@code file:line:col: message}, or empty
+ * @param sizeLimit     why the render size is smaller than the window's ({@code max_image_pixels ...}), or
+ *                      empty when the window is within the limits
+ * @param renderError   why the last frame could not be rendered (the engine tries again), or empty
  */
 public record FrameStats(double fps, double msPerFrame, int renderWidth, int renderHeight, int viewWidth,
                          int viewHeight, int samplesDone, int samplesTotal, boolean moving, int threads,
-                         Shading shading, int depth, double speed, String scene, String message, String error) {
+                         Shading shading, int depth, double speed, String scene, String message, String error,
+                         String sizeLimit, String renderError) {
 
     /** Whether the image is final: still and every sample accumulated. */
     public boolean refined() {

@@ -43,13 +43,25 @@ public final class GlintWindow {
     /**
      * Loads the scene and opens the window on it.
      *
-     * @throws InputException       the scene does not load (no window is opened)
+     * @throws InputException       the scene does not load, or the config's window is larger than its
+     *                              {@code max_image_pixels} (no window is opened)
      * @throws UnavailableException there is no display to open a window on
      */
     public static GlintWindow open(Config config, SceneSource source, Screenshots screenshots, PrintWriter err)
             throws InputException, UnavailableException {
+        return open(config, source, screenshots, err, WindowHooks.NONE);
+    }
+
+    /** {@link #open(Config, SceneSource, Screenshots, PrintWriter)} with test hooks. */
+    static GlintWindow open(Config config, SceneSource source, Screenshots screenshots, PrintWriter err,
+                            WindowHooks hooks) throws InputException, UnavailableException {
+        String tooLarge = config.limits().imageSizeProblem(config.displayWidth(), config.displayHeight());
+        if (tooLarge != null) { // refused before any memory or window is taken
+            throw new InputException("glint", 0, 0, "display_width x display_height: " + tooLarge);
+        }
         oneLineErrors(err);
-        SceneWatcher watcher = new SceneWatcher(source.scenePath()); // before loading: no change is missed
+        source.limits(config.limits().scene());
+        SceneWatcher watcher = new SceneWatcher(source); // before loading: no change is missed
         Scene scene;
         try {
             scene = source.loadScene();
@@ -68,7 +80,8 @@ public final class GlintWindow {
             frame[0].setLocationByPlatform(true); // the window manager places it; (0, 0) without one
         }, watcher);
         InputState input = new InputState(Clock.SYSTEM, display[0].getWidth(), display[0].getHeight());
-        Engine engine = new Engine(config, scene, source, input, display[0], screenshots, Clock.SYSTEM, err);
+        Engine engine = new Engine(config, scene, source, input, hooks.presenter().apply(display[0]), screenshots,
+                Clock.SYSTEM, err, hooks.trace());
         GlintWindow window = new GlintWindow(frame[0], display[0], engine, input, watcher);
         onEventThread(() -> {
             InputListener.attach(input, display[0]);

@@ -29,6 +29,9 @@ final class OverlayText {
                 (double) s.viewWidth() / Math.max(1, s.renderWidth()));
         lines.add(normal(String.format(Locale.ROOT, "render %dx%d (%s of %dx%d)%s", s.renderWidth(),
                 s.renderHeight(), scale, s.viewWidth(), s.viewHeight(), s.moving() ? "  moving" : "")));
+        if (!s.sizeLimit().isEmpty()) {
+            lines.add(new Line("window too large: rendered at most " + s.sizeLimit(), Tone.NOTE));
+        }
         lines.add(normal(String.format(Locale.ROOT, "samples %d/%d   threads %d", s.samplesDone(),
                 s.samplesTotal(), s.threads())));
         lines.add(normal(String.format(Locale.ROOT, "shading %s   depth %d   speed %s/s", s.shading().key(),
@@ -39,6 +42,9 @@ final class OverlayText {
         }
         if (!s.error().isEmpty()) {
             lines.add(new Line(s.error(), Tone.ERROR));
+        }
+        if (!s.renderError().isEmpty()) {
+            lines.add(new Line(s.renderError(), Tone.ERROR));
         }
         lines.add(new Line("H hides this, ? shows the keys", Tone.NOTE));
         return lines;

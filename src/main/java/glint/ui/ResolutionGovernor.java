@@ -51,4 +51,27 @@ public final class ResolutionGovernor {
     public static int renderSize(int viewPixels, double s) {
         return Math.max(1, (int) Math.round(viewPixels / s));
     }
+
+    /** A render size in pixels. */
+    public record Size(int width, int height) {
+
+        public long pixels() {
+            return (long) width * height;
+        }
+    }
+
+    /**
+     * The render size of a viewWidth x viewHeight view at scale {@code s}, made smaller still (same
+     * aspect) where it would have more than {@code maxPixels} pixels: a huge window never makes a huge
+     * frame buffer.
+     */
+    public static Size renderSize(int viewWidth, int viewHeight, double s, long maxPixels) {
+        double scale = Math.max(s, Math.sqrt((double) viewWidth * viewHeight / Math.max(1, maxPixels)));
+        Size size = new Size(renderSize(viewWidth, scale), renderSize(viewHeight, scale));
+        while (size.pixels() > maxPixels && size.pixels() > 1) { // rounding up took it just over
+            scale *= 1.001;
+            size = new Size(renderSize(viewWidth, scale), renderSize(viewHeight, scale));
+        }
+        return size;
+    }
 }

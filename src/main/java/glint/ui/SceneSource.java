@@ -3,14 +3,20 @@ package glint.ui;
 import glint.config.Config;
 import glint.input.InputException;
 import glint.scene.Scene;
+import glint.scene.SceneLimits;
 import glint.scene.SceneLoader;
 import java.nio.file.Path;
 
-/** Where the window's scene and config come from, to read them again on F5 or when the file changes. */
+/**
+ * Where the window's scene and config come from, to read them again on F5 or when the file changes. The
+ * scene is read within the config's scene limits ({@code max_scene_bytes}, {@code max_objects},
+ * {@code max_lights}); the window sets them from its config at start and again after F5.
+ */
 public final class SceneSource {
 
     private final Path scenePath;
     private final ConfigSource configSource;
+    private volatile SceneLimits limits = SceneLimits.DEFAULT;
 
     public SceneSource(Path scenePath, ConfigSource configSource) {
         this.scenePath = scenePath;
@@ -21,8 +27,18 @@ public final class SceneSource {
         return scenePath;
     }
 
+    /** The limits the scene is read within. */
+    public SceneLimits limits() {
+        return limits;
+    }
+
+    /** Reads the scene within these limits from now on (any thread). */
+    public void limits(SceneLimits sceneLimits) {
+        this.limits = sceneLimits;
+    }
+
     public Scene loadScene() throws InputException {
-        return SceneLoader.load(scenePath);
+        return SceneLoader.load(scenePath, limits);
     }
 
     public Config loadConfig() throws InputException {

@@ -2,8 +2,8 @@ package glint.ui;
 
 import glint.input.InputException;
 import glint.scene.Scene;
-import glint.scene.SceneLoader;
 import java.io.IOException;
+import java.nio.charset.StandardCharsets;
 import java.nio.file.Files;
 import java.nio.file.NoSuchFileException;
 import java.nio.file.Path;
@@ -17,10 +17,16 @@ import java.util.concurrent.TimeUnit;
  * not: editors that save by renaming, network folders, coarse timestamps) and hands every changed
  * version, loaded or failed, to a listener. Reading a small YAML file four times a second costs
  * nothing noticeable.
+ *
+ * <p>A file being saved is never loaded half written: a changed content is loaded only when the next
+ * read, one period later, finds the same bytes, and the result is dropped if the file changed while
+ * it was loading. A save that stops half way for less than a period therefore never shows; this
+ * matters most where the first half of a scene is itself a valid, smaller scene (the objects cut off
+ * after the first few).
  */
 public final class SceneWatcher implements AutoCloseable {
 
-    /** How often the file is read. */
+    /** How often the file is read; a change must stay the same for one period to be loaded. */
     public static final long PERIOD_MILLIS = 250;
 
     /** What the watcher reports. */
@@ -31,18 +37,22 @@ public final class SceneWatcher implements AutoCloseable {
         void failed(InputException error);
     }
 
+    private final SceneSource source;
     private final Path file;
     private final ScheduledExecutorService timer;
     private volatile Listener listener;
-    private byte[] last;
-    private boolean missingOnce;
+    private byte[] last;     // the content last reported (at start: the content loaded before watching)
+    private byte[] pending;  // a new content read once, loaded if the next read finds it again
+    private boolean hasPending;
 
     /**
      * Takes the file's current content as known (call it before loading the scene, so that no change
-     * in between is missed); only later changes are reported.
+     * in between is missed); only later changes are reported. The scene is loaded with
+     * {@link SceneSource#loadScene}, within the source's limits.
      */
-    public SceneWatcher(Path file) {
-        this.file = file;
+    public SceneWatcher(SceneSource source) {
+        this.source = source;
+        this.file = source.scenePath();
         this.last = read();
         this.timer = Executors.newSingleThreadScheduledExecutor(r -> {
             Thread t = new Thread(r, "glint-scene-watcher");
@@ -62,22 +72,41 @@ public final class SceneWatcher implements AutoCloseable {
         this.listener = to;
     }
 
-    /** Checks the file once; reports a change. */
+    /**
+     * Reads the file once. A content that differs from the one last reported is remembered; if the next
+     * poll reads it again (it stayed the same for a period), it is loaded and reported. A file that is
+     * gone is reported the same way (gone for two reads: an editor saving by rename is not).
+     */
     void poll() {
         byte[] now = read();
-        if (now == null && !missingOnce && last != null) {
-            missingOnce = true; // an editor saving by rename: look again before reporting it gone
+        if (Arrays.equals(now, last)) {
+            hasPending = false; // unchanged, or back to what is on screen
             return;
         }
-        missingOnce = false;
-        if (Arrays.equals(now, last)) {
+        if (!hasPending || !Arrays.equals(now, pending)) {
+            pending = now; // changed since the last read: maybe still being written
+            hasPending = true;
+            return;
+        }
+        hasPending = false;
+        Scene scene = null;
+        InputException problem = null;
+        try {
+            scene = source.loadScene();
+        } catch (InputException e) {
+            problem = e;
+        }
+        byte[] after = read();
+        if (!Arrays.equals(after, now)) {
+            pending = after; // written again while it loaded: what loaded may be half of it
+            hasPending = true;
             return;
         }
         last = now;
-        try {
-            listener.loaded(SceneLoader.load(file));
-        } catch (InputException e) {
-            listener.failed(e);
+        if (problem == null) {
+            listener.loaded(scene);
+        } else {
+            listener.failed(problem);
         }
     }
 
@@ -89,14 +118,26 @@ public final class SceneWatcher implements AutoCloseable {
         }
     }
 
+    /**
+     * The file's bytes; null when it does not exist. A file larger than the scene limit is not read (the
+     * loader refuses it): its size and time stand for its content. So is an unreadable one's error.
+     */
     private byte[] read() {
         try {
+            long size = Files.size(file);
+            if (size > source.limits().maxFileBytes()) {
+                return marker("too large: " + size + " bytes, modified " + Files.getLastModifiedTime(file));
+            }
             return Files.readAllBytes(file);
         } catch (NoSuchFileException e) {
             return null;
         } catch (IOException e) {
-            return new byte[0]; // unreadable: reported by the loader
+            return marker("unreadable: " + e); // the loader says why
         }
+    }
+
+    private static byte[] marker(String text) {
+        return ("\0glint-watcher\0" + text).getBytes(StandardCharsets.UTF_8);
     }
 
     @Override

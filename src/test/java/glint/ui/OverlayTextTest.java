@@ -38,16 +38,30 @@ class OverlayTextTest {
     @Test
     void theStatsLines() {
         FrameStats moving = new FrameStats(27.14, 39.2, 400, 300, 800, 600, 1, 4, true, 2, Shading.COOK_TORRANCE, 5,
-                2.0, "scenes/default.yaml", "", "");
+                2.0, "scenes/default.yaml", "", "", "", "");
         assertEquals(List.of("27.1 fps   39.2 ms/frame", "render 400x300 (1/2.00 of 800x600)  moving",
                 "samples 1/4   threads 2", "shading cook-torrance   depth 5   speed 2/s", "scenes/default.yaml",
                 "H hides this, ? shows the keys"), OverlayText.lines(moving).stream().map(OverlayText.Line::text).toList());
         FrameStats idle = new FrameStats(Double.NaN, 41.25, 800, 600, 800, 600, 4, 4, false, 2, Shading.PHONG, 3,
-                2.5, "s.yaml", "saved x.png", "s.yaml:1:2: bad");
+                2.5, "s.yaml", "saved x.png", "s.yaml:1:2: bad", "", "");
         List<OverlayText.Line> lines = OverlayText.lines(idle);
         assertEquals("idle: image complete   last frame 41.3 ms", lines.get(0).text());
         assertEquals("render 800x600 (full of 800x600)", lines.get(1).text());
         assertTrue(lines.contains(new OverlayText.Line("saved x.png", OverlayText.Tone.NOTE)));
         assertTrue(lines.contains(new OverlayText.Line("s.yaml:1:2: bad", OverlayText.Tone.ERROR)));
+    }
+
+    @Test
+    void aClampedRenderSizeAndARenderFailureAreShown() {
+        FrameStats s = new FrameStats(Double.NaN, 3, 115, 86, 400, 300, 1, 1, false, 2, Shading.PHONG, 3,
+                2, "s.yaml", "", "", "10,000 pixels (max_image_pixels)",
+                "render failed: a render worker failed: java.lang.NullPointerException; trying again");
+        List<OverlayText.Line> lines = OverlayText.lines(s);
+        assertEquals("render 115x86 (1/3.48 of 400x300)", lines.get(1).text());
+        assertEquals(new OverlayText.Line("window too large: rendered at most 10,000 pixels (max_image_pixels)",
+                OverlayText.Tone.NOTE), lines.get(2));
+        assertTrue(lines.contains(new OverlayText.Line(
+                "render failed: a render worker failed: java.lang.NullPointerException; trying again",
+                OverlayText.Tone.ERROR)));
     }
 }

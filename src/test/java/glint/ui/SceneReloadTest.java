@@ -45,7 +45,7 @@ class SceneReloadTest {
         Files.writeString(file, TestScenes.sphere(0.1, 0.2, 0.3));
         Config config = Config.defaults().withSize(W, H).withSamples(1).withThreads(2);
         SceneSource source = new SceneSource(file, () -> config);
-        watcher = new SceneWatcher(file);
+        watcher = new SceneWatcher(source);
         Scene scene = source.loadScene();
         engine = new Engine(config, scene, source, new InputState(Clock.SYSTEM, W, H), presenter,
                 new Screenshots(dir), Clock.SYSTEM, new PrintWriter(err, true));

@@ -1,0 +1,192 @@
+package glint.ui;
+
+import static org.junit.jupiter.api.Assertions.assertEquals;
+import static org.junit.jupiter.api.Assertions.assertTrue;
+
+import glint.input.InputException;
+import glint.scene.Scene;
+import glint.scene.SceneLimits;
+import glint.scene.SceneLoader;
+import java.io.IOException;
+import java.io.OutputStream;
+import java.nio.charset.StandardCharsets;
+import java.nio.file.Files;
+import java.nio.file.Path;
+import java.util.ArrayList;
+import java.util.List;
+import java.util.concurrent.TimeUnit;
+import java.util.function.BooleanSupplier;
+import org.junit.jupiter.api.AfterEach;
+import org.junit.jupiter.api.BeforeEach;
+import org.junit.jupiter.api.Test;
+import org.junit.jupiter.api.io.TempDir;
+
+/**
+ * The scene watcher never loads a file that is half written: a change is loaded only once it reads the
+ * same for one period. The dangerous half is one that is itself a valid scene (the objects cut off after
+ * the first), so the scenes here are cut just there.
+ */
+class SceneWatcherTest {
+
+    @TempDir
+    Path dir;
+
+    private Path file;
+    private SceneSource source;
+    private SceneWatcher watcher;
+    private final Recorder recorder = new Recorder();
+
+    /** Everything the watcher reported, in order. */
+    static final class Recorder implements SceneWatcher.Listener {
+
+        private final List<Object> reports = new ArrayList<>();
+
+        @Override
+        public synchronized void loaded(Scene scene) {
+            reports.add(scene);
+        }
+
+        @Override
+        public synchronized void failed(InputException error) {
+            reports.add(error);
+        }
+
+        synchronized List<Object> reports() {
+            return List.copyOf(reports);
+        }
+    }
+
+    @BeforeEach
+    void open() throws IOException {
+        file = Files.writeString(dir.resolve("scene.yaml"), TestScenes.sphere(0.1, 0.2, 0.3));
+        source = new SceneSource(file, () -> {
+            throw new AssertionError("no config read");
+        });
+        watcher = new SceneWatcher(source);
+    }
+
+    @AfterEach
+    void close() {
+        watcher.close();
+    }
+
+    /** The scene's text up to (without) its last object: a valid scene with one object fewer. */
+    private static String firstHalf(String scene) {
+        return scene.substring(0, scene.lastIndexOf("  - {type: plane"));
+    }
+
+    @Test
+    void theFirstHalfOfASceneIsItselfAValidScene() throws InputException {
+        String whole = TestScenes.sphere(0.9, 0.1, 0.1);
+        assertEquals(2, SceneLoader.parse("whole", whole).objects().size());
+        assertEquals(1, SceneLoader.parse("half", firstHalf(whole)).objects().size(), "the danger: it loads");
+    }
+
+    @Test
+    void aFileWrittenInTwoHalvesIsLoadedOnlyWhole() throws IOException {
+        watcher.listen(recorder);
+        String whole = TestScenes.sphere(0.9, 0.1, 0.1);
+        Files.writeString(file, firstHalf(whole));
+        watcher.poll(); // reads the half: maybe still being written
+        assertEquals(List.of(), recorder.reports());
+        Files.writeString(file, whole);
+        watcher.poll(); // changed again
+        assertEquals(List.of(), recorder.reports());
+        watcher.poll(); // the same for a period: loaded
+        List<Object> reports = recorder.reports();
+        assertEquals(1, reports.size(), reports.toString());
+        Scene loaded = (Scene) reports.get(0);
+        assertEquals(2, loaded.objects().size());
+        watcher.poll();
+        assertEquals(1, recorder.reports().size(), "reported once");
+    }
+
+    @Test
+    void aChangeUndoneWithinAPeriodIsNotReported() throws IOException {
+        watcher.listen(recorder);
+        String original = Files.readString(file);
+        Files.writeString(file, "");
+        watcher.poll();
+        Files.writeString(file, original);
+        watcher.poll();
+        watcher.poll();
+        assertEquals(List.of(), recorder.reports());
+    }
+
+    @Test
+    void aWriterPausingHalfWayNeverShowsAHalfScene() throws Exception {
+        watcher.start(recorder);
+        int rounds = 8;
+        for (int round = 1; round <= rounds; round++) {
+            String whole = TestScenes.sphere(round / 10.0, 0.5, 0.5);
+            byte[] bytes = whole.getBytes(StandardCharsets.UTF_8);
+            int half = firstHalf(whole).length();
+            try (OutputStream out = Files.newOutputStream(file)) { // truncates, writes in place
+                out.write(bytes, 0, half);
+                out.flush();
+                Thread.sleep(SceneWatcher.PERIOD_MILLIS * 2 / 5); // an editor or a network copy stalls
+                out.write(bytes, half, bytes.length - half);
+            }
+            int expected = round;
+            await(() -> recorder.reports().size() >= expected, 5_000, "round " + round + " loaded");
+        }
+        List<Object> reports = recorder.reports();
+        assertEquals(rounds, reports.size(), "each save once, nothing in between: " + reports);
+        for (int i = 0; i < rounds; i++) {
+            Scene scene = (Scene) reports.get(i);
+            assertEquals(2, scene.objects().size(), "round " + (i + 1) + " loaded whole");
+            assertEquals((i + 1) / 10.0, scene.background().x(), 1e-12);
+        }
+    }
+
+    @Test
+    void theSceneIsReadWithinTheSourcesLimits() throws IOException {
+        watcher.listen(recorder);
+        source.limits(new SceneLimits(SceneLimits.DEFAULT.maxFileBytes(), 1, SceneLimits.DEFAULT.maxLights()));
+        Files.writeString(file, TestScenes.sphere(0.5, 0.5, 0.5));
+        watcher.poll();
+        watcher.poll();
+        InputException e = (InputException) recorder.reports().get(0);
+        assertTrue(e.getMessage().endsWith("too many objects: more than 1 (config key max_objects)"), e.getMessage());
+    }
+
+    @Test
+    void aFileOverTheSizeLimitIsRefusedWithoutReadingIt() throws IOException {
+        watcher.listen(recorder);
+        source.limits(new SceneLimits(1000, SceneLimits.DEFAULT.maxObjects(), SceneLimits.DEFAULT.maxLights()));
+        Files.writeString(file, TestScenes.sphere(0.5, 0.5, 0.5) + "#".repeat(5000) + "\n");
+        watcher.poll();
+        watcher.poll();
+        InputException e = (InputException) recorder.reports().get(0);
+        assertTrue(e.getMessage().endsWith("(config key max_scene_bytes)"), e.getMessage());
+        watcher.poll();
+        assertEquals(1, recorder.reports().size(), "reported once");
+    }
+
+    @Test
+    void aVanishedFileIsReportedOnlyIfItStaysAway() throws IOException {
+        watcher.listen(recorder);
+        String original = Files.readString(file);
+        Files.delete(file);
+        watcher.poll(); // an editor saving by rename: gone for a moment
+        Files.writeString(file, original);
+        watcher.poll();
+        watcher.poll();
+        assertEquals(List.of(), recorder.reports());
+        Files.delete(file);
+        watcher.poll();
+        watcher.poll();
+        assertEquals(file + ": no such file", ((InputException) recorder.reports().get(0)).getMessage());
+    }
+
+    private static void await(BooleanSupplier condition, long deadlineMillis, String what)
+            throws InterruptedException {
+        long start = System.nanoTime();
+        while (!condition.getAsBoolean()) {
+            if (TimeUnit.NANOSECONDS.toMillis(System.nanoTime() - start) > deadlineMillis) {
+                throw new AssertionError(what + ": not within " + deadlineMillis + " ms");
+            }
+            Thread.sleep(5);
+        }
+    }
+}

@@ -1,0 +1,460 @@
+package glint.ui;
+
+import static org.junit.jupiter.api.Assertions.assertEquals;
+import static org.junit.jupiter.api.Assertions.assertFalse;
+import static org.junit.jupiter.api.Assertions.assertTrue;
+
+import glint.config.Config;
+import glint.image.Srgb;
+import glint.math.Vector3d;
+import glint.render.FrameBuffer;
+import glint.render.RenderScene;
+import glint.render.Tracer;
+import glint.scene.Scene;
+import java.awt.GraphicsEnvironment;
+import java.awt.Point;
+import java.awt.Robot;
+import java.awt.event.InputEvent;
+import java.awt.event.KeyEvent;
+import java.awt.image.BufferedImage;
+import java.io.IOException;
+import java.io.PrintWriter;
+import java.io.StringWriter;
+import java.lang.management.ManagementFactory;
+import java.nio.file.Files;
+import java.nio.file.Path;
+import java.util.ArrayList;
+import java.util.List;
+import java.util.Locale;
+import java.util.concurrent.CountDownLatch;
+import java.util.concurrent.TimeUnit;
+import java.util.function.BooleanSupplier;
+import java.util.function.Supplier;
+import javax.swing.SwingUtilities;
+import org.junit.jupiter.api.Tag;
+import org.junit.jupiter.api.Test;
+import org.junit.jupiter.api.Timeout;
+import org.junit.jupiter.api.condition.EnabledIf;
+import org.junit.jupiter.api.io.TempDir;
+
+/**
+ * Load: the real window, 800x600, flown by java.awt.Robot key presses for ten minutes (W/A/S/D, turns,
+ * rolls, Shift, mouse drags and wheel, shading and depth keys, and each minute a screenshot, a scene file
+ * rewritten in place, F5 and a window resize). After each minute the flight pauses until the window is
+ * idle, the heap is collected and its use recorded; at the end the heap after the last minute must be
+ * within {@link #HEAP_GROWTH_LIMIT_MB} of the heap after the first.
+ *
+ * <p>No frame may be torn. Every render gets its own stamp: the sky's colour (0, 0, b) with a blue code
+ * that changes from one render to the next, on a scene whose objects have no blue at all (red and green
+ * matte, ambient light, no highlights). A checker in front of the display looks at every new image
+ * handed over: each pixel with no red and no green is sky and must have the blue of the render that made
+ * the image (for a still image, of the average of its sample passes, worked out as the engine does). A
+ * frame with tiles from two renders, or from an earlier one, fails. The checker also re-reads each image
+ * when the next one arrives: an image must never change after it is handed over.
+ *
+ * <p>Not part of {@code mvn verify} (tag {@code soak}); run it with
+ * {@code xvfb-run -a -s "-screen 0 1600x1200x24" mvn -B -Psoak test} (docs/reliability.md).
+ * {@code -Dglint.soak.minutes=N} shortens or lengthens it.
+ */
+@Tag("soak")
+@EnabledIf("hasDisplay")
+class WindowSoakTest {
+
+    private static final int W = 800;
+    private static final int H = 600;
+    private static final int MINUTES = Integer.getInteger("glint.soak.minutes", 10);
+    /** The heap after the last minute may exceed that after the first by this much, at most. */
+    static final double HEAP_GROWTH_LIMIT_MB = 8;
+    private static final int STAMP_FIRST = 20;
+    private static final int STAMPS = 200;
+
+    @TempDir
+    Path dir;
+
+    private GlintWindow window;
+    private Robot robot;
+    private Path sceneFile;
+    private final StringWriter err = new StringWriter();
+
+    static boolean hasDisplay() {
+        return !GraphicsEnvironment.isHeadless();
+    }
+
+    /** The linear value whose 8-bit sRGB code is {@code code}, at the middle of the code's interval. */
+    static double linear(int code) {
+        double v = code / 255.0;
+        return v <= 0.04045 ? v / 12.92 : Math.pow((v + 0.055) / 1.055, 2.4);
+    }
+
+    /** Red, yellow and green matte objects without highlights: no object pixel has any blue. */
+    static String scene(double sphereX) {
+        return String.format(Locale.ROOT, """
+                camera: {position: [0, 1.2, -7], look_at: [0, 1, 0]}
+                background: [0, 0, 0.5]
+                ambient: [0.1, 0.1, 0.1]
+                lights:
+                  - {type: point, position: [-4, 7, -5], intensity: 120}
+                  - {type: directional, direction: [0.3, -1, 0.4], intensity: 0.8}
+                materials:
+                  red:    {type: matte, color: [0.8, 0.05, 0], ks: 0}
+                  yellow: {type: matte, color: [0.7, 0.6, 0], ks: 0}
+                  green:  {type: matte, color: [0.1, 0.6, 0], ks: 0}
+                objects:
+                  - {type: sphere, center: [%s, 1, 0], radius: 1, material: red}
+                  - {type: sphere, center: [-2.6, 0.8, 1.5], radius: 0.8, material: yellow}
+                  - {type: sphere, center: [2.4, 0.6, -1], radius: 0.6, material: green}
+                  - {type: sphere, center: [1, 2.8, 4], radius: 0.7, material: red}
+                  - {type: plane, point: [0, 0, 0], normal: [0, 1, 0], material: green}
+                """, sphereX);
+    }
+
+    /**
+     * The tracer, on the engine's scene and camera, but with the sky stamped: render n has a sky of blue
+     * code STAMP_FIRST + n mod STAMPS. Remembers the code the sky must have in the image made of it.
+     */
+    static final class StampingTrace implements FrameRenderer.TraceCall {
+
+        private final CountDownLatch ready = new CountDownLatch(1);
+        private volatile Engine engine;
+        private long renders;
+        private double passSum;
+        private int passes;
+        volatile int expectedSky = -1;
+        volatile long movingFrames;
+        volatile long stillPasses;
+
+        void engine(Engine e) {
+            engine = e;
+            ready.countDown();
+        }
+
+        @Override
+        public void trace(Tracer tracer, RenderScene scene, FrameBuffer target, int samples, int pass, int divider) {
+            try {
+                ready.await();
+            } catch (InterruptedException e) {
+                Thread.currentThread().interrupt();
+                throw new IllegalStateException(e);
+            }
+            int code = STAMP_FIRST + (int) (renders++ % STAMPS);
+            float sky = (float) linear(code);
+            Scene s = engine.scene();
+            RenderScene stamped = RenderScene.compile(new Scene(engine.camera(), new Vector3d(0, 0, sky), s.ambient(),
+                    s.lights(), s.objects()), scene.settings());
+            TRACER.trace(tracer, stamped, target, samples, pass, divider);
+            if (pass == WHOLE_FRAME) {
+                expectedSky = Srgb.to8Bit(sky);
+                movingFrames++;
+            } else { // the accumulator's average of the passes so far, in its arithmetic
+                if (pass == 0) {
+                    passSum = 0;
+                    passes = 0;
+                }
+                passSum += sky;
+                passes++;
+                expectedSky = Srgb.to8Bit((float) (passSum * (1.0 / passes)));
+                stillPasses++;
+            }
+        }
+    }
+
+    /** In front of the display: checks every new image handed over, then passes it on. */
+    static final class CheckingPresenter implements Presenter {
+
+        private final Presenter display;
+        private final StampingTrace trace;
+        private BufferedImage previous;
+        private int previousHash;
+        private int[] pixels = new int[0];
+        volatile long images;
+        volatile long presents;
+        volatile long torn;
+        volatile long changedAfterHandover;
+        volatile long imagesWithSky;
+        volatile long skyPixels;
+        final List<String> problems = new ArrayList<>();
+
+        CheckingPresenter(Presenter display, StampingTrace trace) {
+            this.display = display;
+            this.trace = trace;
+        }
+
+        @Override
+        public void present(ShownFrame frame) {
+            presents++;
+            BufferedImage image = frame.image();
+            if (image != null && image != previous) {
+                if (previous != null && hash(previous) != previousHash) {
+                    changedAfterHandover++;
+                    problem("frame before " + frame.serial() + " changed after it was handed over");
+                }
+                check(image, frame);
+                previous = image;
+                previousHash = hash(image);
+            }
+            display.present(frame);
+        }
+
+        private void check(BufferedImage image, ShownFrame frame) {
+            images++;
+            int expected = trace.expectedSky;
+            int n = read(image);
+            long sky = 0;
+            long wrong = 0;
+            int firstWrong = -1;
+            for (int i = 0; i < n; i++) {
+                int p = pixels[i];
+                if ((p & 0xffff00) == 0) { // no red, no green: nothing but sky
+                    if ((p & 0xff) == expected) {
+                        sky++;
+                    } else {
+                        wrong++;
+                        firstWrong = firstWrong < 0 ? i : firstWrong;
+                    }
+                }
+            }
+            skyPixels += sky;
+            if (sky + wrong > 0) {
+                imagesWithSky++;
+            }
+            if (wrong > 0) {
+                torn++;
+                problem(String.format(Locale.ROOT, "frame %d (%dx%d, %s): %d sky pixels not of blue %d, the first at"
+                        + " (%d, %d) blue %d", frame.serial(), image.getWidth(), image.getHeight(),
+                        frame.stats().moving() ? "moving" : "pass " + frame.stats().samplesDone(), wrong, expected,
+                        firstWrong % image.getWidth(), firstWrong / image.getWidth(), pixels[firstWrong] & 0xff));
+            }
+        }
+
+        private int read(BufferedImage image) {
+            int n = image.getWidth() * image.getHeight();
+            if (pixels.length < n) {
+                pixels = new int[n];
+            }
+            image.getRaster().getDataElements(0, 0, image.getWidth(), image.getHeight(), pixels); // a copy
+            return n;
+        }
+
+        private int hash(BufferedImage image) {
+            int n = read(image);
+            int h = 1;
+            for (int i = 0; i < n; i++) {
+                h = 31 * h + pixels[i];
+            }
+            return h;
+        }
+
+        private void problem(String text) {
+            synchronized (problems) {
+                if (problems.size() < 20) {
+                    problems.add(text);
+                }
+            }
+        }
+
+        @Override
+        public void title(String title) {
+            display.title(title);
+        }
+    }
+
+    private record Minute(int minute, double heapMb, long images, long moving, long passes, long torn) {
+    }
+
+    @Test
+    @Timeout(value = 60, unit = TimeUnit.MINUTES)
+    void tenMinutesOfFlightWithoutAGrowingHeapOrATornFrame() throws Exception {
+        for (int code = STAMP_FIRST; code < STAMP_FIRST + STAMPS; code++) {
+            assertEquals(code, Srgb.to8Bit((float) linear(code)), "stamp " + code);
+        }
+        Files.deleteIfExists(Path.of("target", "soak-report.txt"));
+        sceneFile = Files.writeString(dir.resolve("soak.yaml"), scene(0));
+        Config config = Config.defaults().withSize(W, H).withThreads(2);
+        StampingTrace trace = new StampingTrace();
+        CheckingPresenter[] checker = new CheckingPresenter[1];
+        window = GlintWindow.open(config, new SceneSource(sceneFile, () -> config), new Screenshots(dir),
+                new PrintWriter(err, true), new WindowHooks(trace, display -> checker[0] = new CheckingPresenter(display, trace)));
+        trace.engine(window.engine());
+        robot = new Robot();
+        List<Minute> minutes = new ArrayList<>();
+        try {
+            await(() -> window.frame().isShowing() && idle(), 30_000, "the first refined frame");
+            focus();
+            long flightNanos = 0;
+            for (int minute = 1; minute <= MINUTES; minute++) {
+                long start = System.nanoTime();
+                long movingBefore = trace.movingFrames;
+                perMinuteChores(minute);
+                while (System.nanoTime() - start < 60_000_000_000L) {
+                    flyOneRound(start);
+                }
+                flightNanos += System.nanoTime() - start;
+                assertTrue(trace.movingFrames - movingBefore > 100,
+                        "minute " + minute + ": the keys flew the camera (" + (trace.movingFrames - movingBefore)
+                                + " moving frames); err: " + err);
+                await(this::idle, 30_000, "idle after minute " + minute);
+                Minute m = new Minute(minute, usedHeapAfterGc(), checker[0].images, trace.movingFrames,
+                        trace.stillPasses, checker[0].torn);
+                minutes.add(m);
+                report(String.format(Locale.ROOT, "soak: minute %d: heap %.1f MB used after GC; frames %d (moving %d,"
+                        + " still passes %d); torn %d; changed after hand-over %d", m.minute(), m.heapMb(), m.images(),
+                        m.moving(), m.passes(), m.torn(), checker[0].changedAfterHandover));
+            }
+            CheckingPresenter c = checker[0];
+            double growth = minutes.get(minutes.size() - 1).heapMb() - minutes.get(0).heapMb();
+            report(String.format(Locale.ROOT, "soak: %.1f min of flight; %d frames handed over (%d presents), %d with"
+                    + " sky checked (%.1f %%), %d sky pixels checked; torn %d; changed after hand-over %d;"
+                    + " heap growth minute 1 to %d: %+.1f MB (limit %.0f MB); max heap %d MB",
+                    flightNanos / 60e9, c.images, c.presents, c.imagesWithSky, 100.0 * c.imagesWithSky / c.images,
+                    c.skyPixels, c.torn, c.changedAfterHandover, MINUTES, growth, HEAP_GROWTH_LIMIT_MB,
+                    Runtime.getRuntime().maxMemory() >> 20));
+            assertEquals(0, c.torn, () -> "torn frames: " + c.problems);
+            assertEquals(0, c.changedAfterHandover, () -> "images changed after hand-over: " + c.problems);
+            assertTrue(c.imagesWithSky > 0.95 * c.images, "the check saw sky in almost every frame");
+            assertTrue(window.engineAlive());
+            assertTrue(growth <= HEAP_GROWTH_LIMIT_MB, "the heap grew by " + growth + " MB: " + minutes);
+            String errors = err.toString();
+            assertFalse(errors.contains("render failed") || errors.contains("unexpected") || errors.contains("\tat ")
+                    || errors.contains(sceneFile.toString()), () -> "errors on err:\n" + errors);
+        } finally {
+            window.close();
+            assertEquals(0, window.awaitExit());
+        }
+    }
+
+    // ---- the flight ----
+
+    /** One round of the scripted flight, about 20 s; stops early when the minute is over. */
+    private void flyOneRound(long minuteStart) throws Exception {
+        List<ThrowingStep> steps = List.of(
+                () -> hold(1500, KeyEvent.VK_W), () -> pause(400),
+                () -> hold(600, KeyEvent.VK_D), () -> hold(700, KeyEvent.VK_RIGHT), () -> pause(300),
+                () -> hold(1500, KeyEvent.VK_S), () -> hold(600, KeyEvent.VK_A), () -> hold(700, KeyEvent.VK_LEFT),
+                () -> pause(900), // still long enough to refine to the end and go idle
+                () -> hold(300, KeyEvent.VK_SHIFT, KeyEvent.VK_W), () -> hold(1200, KeyEvent.VK_S),
+                () -> hold(400, KeyEvent.VK_Q), () -> hold(400, KeyEvent.VK_E),
+                () -> hold(250, KeyEvent.VK_UP), () -> hold(250, KeyEvent.VK_DOWN),
+                () -> hold(300, KeyEvent.VK_R), () -> hold(300, KeyEvent.VK_F), () -> pause(300),
+                () -> drag(120), () -> pause(200), () -> drag(-120),
+                () -> robot.mouseWheel(-1), () -> hold(500, KeyEvent.VK_W), () -> robot.mouseWheel(1),
+                () -> hold(600, KeyEvent.VK_S), () -> pause(300),
+                () -> tap(KeyEvent.VK_M), () -> hold(800, KeyEvent.VK_A), () -> hold(800, KeyEvent.VK_D),
+                () -> tap(KeyEvent.VK_M), () -> pause(500),
+                () -> tap(KeyEvent.VK_EQUALS), () -> pause(300), () -> tap(KeyEvent.VK_MINUS), () -> pause(300),
+                () -> hold(2000, KeyEvent.VK_LEFT, KeyEvent.VK_W), () -> hold(2000, KeyEvent.VK_RIGHT, KeyEvent.VK_S));
+        for (ThrowingStep step : steps) {
+            if (System.nanoTime() - minuteStart >= 60_000_000_000L) {
+                return;
+            }
+            step.run();
+        }
+    }
+
+    /** Once a minute: a screenshot, the scene file rewritten in place, F5, a resize and back. */
+    private void perMinuteChores(int minute) throws Exception {
+        tap(KeyEvent.VK_F12);
+        Files.writeString(sceneFile, scene(minute % 2 == 0 ? 0 : 0.4)); // truncated, then written: in place
+        pause(1200); // the watcher loads it once it stays the same
+        tap(KeyEvent.VK_F5); // the camera goes back to the file's: the flight stays near the objects
+        SwingUtilities.invokeAndWait(() -> window.frame().setSize(window.frame().getWidth() + 80,
+                window.frame().getHeight() + 60));
+        pause(800);
+        SwingUtilities.invokeAndWait(() -> window.frame().setSize(window.frame().getWidth() - 80,
+                window.frame().getHeight() - 60));
+        pause(500);
+        focus();
+    }
+
+    @FunctionalInterface
+    private interface ThrowingStep {
+        void run() throws Exception;
+    }
+
+    private void hold(long millis, int... keys) throws InterruptedException {
+        for (int key : keys) {
+            robot.keyPress(key);
+        }
+        Thread.sleep(millis); // the script's own timing: how long the keys are held
+        for (int i = keys.length - 1; i >= 0; i--) {
+            robot.keyRelease(keys[i]);
+        }
+    }
+
+    private void tap(int key) {
+        robot.keyPress(key);
+        robot.keyRelease(key);
+    }
+
+    private static void pause(long millis) throws InterruptedException {
+        Thread.sleep(millis); // the script's own timing: time to refine before the next keys
+    }
+
+    private void drag(int dx) throws Exception {
+        Point p = onEventThread(() -> window.display().getLocationOnScreen());
+        int x = p.x + W / 2;
+        int y = p.y + H / 2;
+        robot.mouseMove(x, y);
+        robot.mousePress(InputEvent.BUTTON1_DOWN_MASK);
+        for (int i = 1; i <= 12; i++) {
+            robot.mouseMove(x + dx * i / 12, y + i % 3);
+            Thread.sleep(15);
+        }
+        robot.mouseRelease(InputEvent.BUTTON1_DOWN_MASK);
+    }
+
+    /** Clicks into the view so that it has the keyboard focus. */
+    private void focus() throws Exception {
+        if (window.display().isFocusOwner()) {
+            return;
+        }
+        Point p = onEventThread(() -> window.display().getLocationOnScreen());
+        robot.mouseMove(p.x + W / 2, p.y + H / 2);
+        robot.mousePress(InputEvent.BUTTON1_DOWN_MASK);
+        robot.mouseRelease(InputEvent.BUTTON1_DOWN_MASK);
+        await(() -> window.display().isFocusOwner(), 10_000, "the keyboard focus");
+    }
+
+    // ---- measuring ----
+
+    private boolean idle() {
+        ShownFrame f = window.display().shown();
+        return f != null && f.image() != null && f.stats().refined() && Double.isNaN(f.stats().fps())
+                && f.stats().viewWidth() == W && f.stats().viewHeight() == H;
+    }
+
+    private static double usedHeapAfterGc() throws InterruptedException {
+        for (int i = 0; i < 3; i++) {
+            System.gc();
+            Thread.sleep(300);
+        }
+        return ManagementFactory.getMemoryMXBean().getHeapMemoryUsage().getUsed() / 1048576.0;
+    }
+
+    private static void report(String line) throws IOException {
+        System.out.println(line);
+        Path file = Path.of("target", "soak-report.txt");
+        Files.createDirectories(file.getParent());
+        Files.writeString(file, line + System.lineSeparator(), java.nio.file.StandardOpenOption.CREATE,
+                java.nio.file.StandardOpenOption.APPEND);
+    }
+
+    private long await(BooleanSupplier condition, long deadlineMillis, String what) throws InterruptedException {
+        long start = System.nanoTime();
+        while (!condition.getAsBoolean()) {
+            long elapsed = TimeUnit.NANOSECONDS.toMillis(System.nanoTime() - start);
+            if (elapsed > deadlineMillis) {
+                throw new AssertionError(what + ": not within " + deadlineMillis + " ms; err: " + err);
+            }
+            Thread.sleep(10);
+        }
+        return TimeUnit.NANOSECONDS.toMillis(System.nanoTime() - start);
+    }
+
+    private static <T> T onEventThread(Supplier<T> task) throws Exception {
+        Object[] result = new Object[1];
+        SwingUtilities.invokeAndWait(() -> result[0] = task.get());
+        @SuppressWarnings("unchecked")
+        T t = (T) result[0];
+        return t;
+    }
+}
