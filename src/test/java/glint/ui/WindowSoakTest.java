@@ -6,17 +6,11 @@ import static org.junit.jupiter.api.Assertions.assertTrue;
 
 import glint.config.Config;
 import glint.image.Srgb;
-import glint.math.Vector3d;
-import glint.render.FrameBuffer;
-import glint.render.RenderScene;
-import glint.render.Tracer;
-import glint.scene.Scene;
 import java.awt.GraphicsEnvironment;
 import java.awt.Point;
 import java.awt.Robot;
 import java.awt.event.InputEvent;
 import java.awt.event.KeyEvent;
-import java.awt.image.BufferedImage;
 import java.io.IOException;
 import java.io.PrintWriter;
 import java.io.StringWriter;
@@ -26,7 +20,6 @@ import java.nio.file.Path;
 import java.util.ArrayList;
 import java.util.List;
 import java.util.Locale;
-import java.util.concurrent.CountDownLatch;
 import java.util.concurrent.TimeUnit;
 import java.util.function.BooleanSupplier;
 import java.util.function.Supplier;
@@ -65,8 +58,6 @@ class WindowSoakTest {
     private static final int MINUTES = Integer.getInteger("glint.soak.minutes", 10);
     /** The heap after the last minute may exceed that after the first by this much, at most. */
     static final double HEAP_GROWTH_LIMIT_MB = 8;
-    private static final int STAMP_FIRST = 20;
-    private static final int STAMPS = 200;
 
     @TempDir
     Path dir;
@@ -78,12 +69,6 @@ class WindowSoakTest {
 
     static boolean hasDisplay() {
         return !GraphicsEnvironment.isHeadless();
-    }
-
-    /** The linear value whose 8-bit sRGB code is {@code code}, at the middle of the code's interval. */
-    static double linear(int code) {
-        double v = code / 255.0;
-        return v <= 0.04045 ? v / 12.92 : Math.pow((v + 0.055) / 1.055, 2.4);
     }
 
     /** Red, yellow and green matte objects without highlights: no object pixel has any blue. */
@@ -108,172 +93,23 @@ class WindowSoakTest {
                 """, sphereX);
     }
 
-    /**
-     * The tracer, on the engine's scene and camera, but with the sky stamped: render n has a sky of blue
-     * code STAMP_FIRST + n mod STAMPS. Remembers the code the sky must have in the image made of it.
-     */
-    static final class StampingTrace implements FrameRenderer.TraceCall {
-
-        private final CountDownLatch ready = new CountDownLatch(1);
-        private volatile Engine engine;
-        private long renders;
-        private double passSum;
-        private int passes;
-        volatile int expectedSky = -1;
-        volatile long movingFrames;
-        volatile long stillPasses;
-
-        void engine(Engine e) {
-            engine = e;
-            ready.countDown();
-        }
-
-        @Override
-        public void trace(Tracer tracer, RenderScene scene, FrameBuffer target, int samples, int pass, int divider) {
-            try {
-                ready.await();
-            } catch (InterruptedException e) {
-                Thread.currentThread().interrupt();
-                throw new IllegalStateException(e);
-            }
-            int code = STAMP_FIRST + (int) (renders++ % STAMPS);
-            float sky = (float) linear(code);
-            Scene s = engine.scene();
-            RenderScene stamped = RenderScene.compile(new Scene(engine.camera(), new Vector3d(0, 0, sky), s.ambient(),
-                    s.lights(), s.objects()), scene.settings());
-            TRACER.trace(tracer, stamped, target, samples, pass, divider);
-            if (pass == WHOLE_FRAME) {
-                expectedSky = Srgb.to8Bit(sky);
-                movingFrames++;
-            } else { // the accumulator's average of the passes so far, in its arithmetic
-                if (pass == 0) {
-                    passSum = 0;
-                    passes = 0;
-                }
-                passSum += sky;
-                passes++;
-                expectedSky = Srgb.to8Bit((float) (passSum * (1.0 / passes)));
-                stillPasses++;
-            }
-        }
-    }
-
-    /** In front of the display: checks every new image handed over, then passes it on. */
-    static final class CheckingPresenter implements Presenter {
-
-        private final Presenter display;
-        private final StampingTrace trace;
-        private BufferedImage previous;
-        private int previousHash;
-        private int[] pixels = new int[0];
-        volatile long images;
-        volatile long presents;
-        volatile long torn;
-        volatile long changedAfterHandover;
-        volatile long imagesWithSky;
-        volatile long skyPixels;
-        final List<String> problems = new ArrayList<>();
-
-        CheckingPresenter(Presenter display, StampingTrace trace) {
-            this.display = display;
-            this.trace = trace;
-        }
-
-        @Override
-        public void present(ShownFrame frame) {
-            presents++;
-            BufferedImage image = frame.image();
-            if (image != null && image != previous) {
-                if (previous != null && hash(previous) != previousHash) {
-                    changedAfterHandover++;
-                    problem("frame before " + frame.serial() + " changed after it was handed over");
-                }
-                check(image, frame);
-                previous = image;
-                previousHash = hash(image);
-            }
-            display.present(frame);
-        }
-
-        private void check(BufferedImage image, ShownFrame frame) {
-            images++;
-            int expected = trace.expectedSky;
-            int n = read(image);
-            long sky = 0;
-            long wrong = 0;
-            int firstWrong = -1;
-            for (int i = 0; i < n; i++) {
-                int p = pixels[i];
-                if ((p & 0xffff00) == 0) { // no red, no green: nothing but sky
-                    if ((p & 0xff) == expected) {
-                        sky++;
-                    } else {
-                        wrong++;
-                        firstWrong = firstWrong < 0 ? i : firstWrong;
-                    }
-                }
-            }
-            skyPixels += sky;
-            if (sky + wrong > 0) {
-                imagesWithSky++;
-            }
-            if (wrong > 0) {
-                torn++;
-                problem(String.format(Locale.ROOT, "frame %d (%dx%d, %s): %d sky pixels not of blue %d, the first at"
-                        + " (%d, %d) blue %d", frame.serial(), image.getWidth(), image.getHeight(),
-                        frame.stats().moving() ? "moving" : "pass " + frame.stats().samplesDone(), wrong, expected,
-                        firstWrong % image.getWidth(), firstWrong / image.getWidth(), pixels[firstWrong] & 0xff));
-            }
-        }
-
-        private int read(BufferedImage image) {
-            int n = image.getWidth() * image.getHeight();
-            if (pixels.length < n) {
-                pixels = new int[n];
-            }
-            image.getRaster().getDataElements(0, 0, image.getWidth(), image.getHeight(), pixels); // a copy
-            return n;
-        }
-
-        private int hash(BufferedImage image) {
-            int n = read(image);
-            int h = 1;
-            for (int i = 0; i < n; i++) {
-                h = 31 * h + pixels[i];
-            }
-            return h;
-        }
-
-        private void problem(String text) {
-            synchronized (problems) {
-                if (problems.size() < 20) {
-                    problems.add(text);
-                }
-            }
-        }
-
-        @Override
-        public void title(String title) {
-            display.title(title);
-        }
-    }
-
     private record Minute(int minute, double heapMb, long images, long moving, long passes, long torn) {
     }
 
     @Test
     @Timeout(value = 60, unit = TimeUnit.MINUTES)
     void tenMinutesOfFlightWithoutAGrowingHeapOrATornFrame() throws Exception {
-        for (int code = STAMP_FIRST; code < STAMP_FIRST + STAMPS; code++) {
-            assertEquals(code, Srgb.to8Bit((float) linear(code)), "stamp " + code);
+        for (int code = SoakFrames.STAMP_FIRST; code < SoakFrames.STAMP_FIRST + SoakFrames.STAMPS; code++) {
+            assertEquals(code, Srgb.to8Bit((float) SoakFrames.linear(code)), "stamp " + code);
         }
         Files.deleteIfExists(Path.of("target", "soak-report.txt"));
         sceneFile = Files.writeString(dir.resolve("soak.yaml"), scene(0));
         Config config = Config.defaults().withSize(W, H).withThreads(2);
-        StampingTrace trace = new StampingTrace();
-        CheckingPresenter[] checker = new CheckingPresenter[1];
+        SoakFrames.StampingTrace trace = new SoakFrames.StampingTrace();
+        SoakFrames.CheckingPresenter[] checker = new SoakFrames.CheckingPresenter[1];
         window = GlintWindow.open(config, new SceneSource(sceneFile, () -> config), new Screenshots(dir),
-                new PrintWriter(err, true), new WindowHooks(trace, display -> checker[0] = new CheckingPresenter(display, trace)));
+                new PrintWriter(err, true),
+                new WindowHooks(trace, display -> checker[0] = new SoakFrames.CheckingPresenter(display, trace)));
         trace.engine(window.engine());
         robot = new Robot();
         List<Minute> minutes = new ArrayList<>();
@@ -300,7 +136,7 @@ class WindowSoakTest {
                         + " still passes %d); torn %d; changed after hand-over %d", m.minute(), m.heapMb(), m.images(),
                         m.moving(), m.passes(), m.torn(), checker[0].changedAfterHandover));
             }
-            CheckingPresenter c = checker[0];
+            SoakFrames.CheckingPresenter c = checker[0];
             double growth = minutes.get(minutes.size() - 1).heapMb() - minutes.get(0).heapMb();
             report(String.format(Locale.ROOT, "soak: %.1f min of flight; %d frames handed over (%d presents), %d with"
                     + " sky checked (%.1f %%), %d sky pixels checked; torn %d; changed after hand-over %d;"
