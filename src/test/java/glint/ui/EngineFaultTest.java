@@ -20,7 +20,6 @@ import java.nio.file.Path;
 import java.util.List;
 import java.util.concurrent.TimeUnit;
 import java.util.concurrent.atomic.AtomicInteger;
-import java.util.function.BooleanSupplier;
 import javax.imageio.ImageIO;
 import org.junit.jupiter.api.AfterEach;
 import org.junit.jupiter.api.Test;
@@ -212,7 +211,7 @@ class EngineFaultTest {
         loop.start();
         try {
             long start = System.nanoTime();
-            await(() -> presenter.last() != null && presenter.last().image() != null
+            Poll.until(() -> presenter.last() != null && presenter.last().image() != null
                     && presenter.last().stats().refined(), 20_000, "a refined frame after three failed tries");
             long millis = TimeUnit.NANOSECONDS.toMillis(System.nanoTime() - start);
             assertTrue(millis >= 3 * Engine.RETRY_NANOS / 1_000_000 - 50, "paused between tries: " + millis + " ms");
@@ -357,16 +356,5 @@ class EngineFaultTest {
         assertTrue(engine.isRunning());
         assertEquals(List.of(), errText.toString().lines().filter(l -> l.contains("\tat ")).toList());
         assertNotEquals(0, linesWith("screenshot not saved"));
-    }
-
-    private static void await(BooleanSupplier condition, long deadlineMillis, String what)
-            throws InterruptedException {
-        long start = System.nanoTime();
-        while (!condition.getAsBoolean()) {
-            if (TimeUnit.NANOSECONDS.toMillis(System.nanoTime() - start) > deadlineMillis) {
-                throw new AssertionError(what + ": not within " + deadlineMillis + " ms");
-            }
-            Thread.sleep(5);
-        }
     }
 }

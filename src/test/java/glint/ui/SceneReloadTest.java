@@ -12,8 +12,6 @@ import java.io.PrintWriter;
 import java.io.StringWriter;
 import java.nio.file.Files;
 import java.nio.file.Path;
-import java.util.concurrent.TimeUnit;
-import java.util.function.BooleanSupplier;
 import org.junit.jupiter.api.AfterEach;
 import org.junit.jupiter.api.BeforeEach;
 import org.junit.jupiter.api.Test;
@@ -52,7 +50,7 @@ class SceneReloadTest {
         loop = new Thread(engine, "test-engine");
         loop.start();
         watcher.start(engine);
-        await(() -> shownBackground() == srgb(0.1, 0.2, 0.3), 10_000, "first frame");
+        Poll.until(() -> shownBackground() == srgb(0.1, 0.2, 0.3), 10_000, "first frame");
     }
 
     @AfterEach
@@ -72,29 +70,15 @@ class SceneReloadTest {
         return Srgb.to8Bit(r) << 16 | Srgb.to8Bit(g) << 8 | Srgb.to8Bit(b);
     }
 
-    /** Polls a condition until a deadline; returns the milliseconds it took. */
-    private static long await(BooleanSupplier condition, long deadlineMillis, String what)
-            throws InterruptedException {
-        long start = System.nanoTime();
-        while (!condition.getAsBoolean()) {
-            long elapsed = TimeUnit.NANOSECONDS.toMillis(System.nanoTime() - start);
-            if (elapsed > deadlineMillis) {
-                throw new AssertionError(what + ": not within " + deadlineMillis + " ms");
-            }
-            Thread.sleep(5);
-        }
-        return TimeUnit.NANOSECONDS.toMillis(System.nanoTime() - start);
-    }
-
     @Test
     void aSavedSceneIsOnScreenWithinASecond() throws Exception {
         TestScenes.replace(file, TestScenes.sphere(0.9, 0.1, 0.1));
-        long millis = await(() -> shownBackground() == srgb(0.9, 0.1, 0.1), 5_000, "new background on screen");
+        long millis = Poll.until(() -> shownBackground() == srgb(0.9, 0.1, 0.1), 5_000, "new background on screen");
         assertTrue(millis < 1000, "took " + millis + " ms");
         assertEquals(new Vector3d(0.9, 0.1, 0.1), engine.scene().background());
 
         Files.writeString(file, TestScenes.sphere(0.1, 0.9, 0.1)); // written in place, not renamed
-        millis = await(() -> shownBackground() == srgb(0.1, 0.9, 0.1), 5_000, "second change on screen");
+        millis = Poll.until(() -> shownBackground() == srgb(0.1, 0.9, 0.1), 5_000, "second change on screen");
         assertTrue(millis < 1000, "took " + millis + " ms");
     }
 
@@ -103,9 +87,9 @@ class SceneReloadTest {
         Scene good = engine.scene();
         TestScenes.replace(file, TestScenes.sphere(0.9, 0.1, 0.1).replace("radius: 1", "radiu: 1"));
         String expected = file + ":6:39: unknown key 'radiu' in sphere (did you mean 'radius'?)";
-        long millis = await(() -> expected.equals(engine.error()), 5_000, "the error");
+        long millis = Poll.until(() -> expected.equals(engine.error()), 5_000, "the error");
         assertTrue(millis < 1000, "took " + millis + " ms");
-        await(() -> presenter.last().stats().error().equals(expected), 5_000, "the error in the overlay");
+        Poll.until(() -> presenter.last().stats().error().equals(expected), 5_000, "the error in the overlay");
         assertEquals(good, engine.scene());
         assertEquals(srgb(0.1, 0.2, 0.3), shownBackground(), "the old scene stays on screen");
         assertTrue(err.toString().contains(expected), err.toString());
@@ -114,7 +98,7 @@ class SceneReloadTest {
 
         // mended: the error goes, the new scene comes
         TestScenes.replace(file, TestScenes.sphere(0.9, 0.1, 0.1));
-        await(() -> shownBackground() == srgb(0.9, 0.1, 0.1), 5_000, "mended scene on screen");
+        Poll.until(() -> shownBackground() == srgb(0.9, 0.1, 0.1), 5_000, "mended scene on screen");
         assertEquals("", engine.error());
     }
 
@@ -123,9 +107,9 @@ class SceneReloadTest {
         Scene good = engine.scene();
         Files.delete(file);
         String expected = file + ": no such file";
-        await(() -> expected.equals(engine.error()), 5_000, "the error");
+        Poll.until(() -> expected.equals(engine.error()), 5_000, "the error");
         assertEquals(good, engine.scene());
         Files.writeString(file, TestScenes.sphere(0.1, 0.2, 0.3));
-        await(() -> engine.error().isEmpty(), 5_000, "back again");
+        Poll.until(() -> engine.error().isEmpty(), 5_000, "back again");
     }
 }

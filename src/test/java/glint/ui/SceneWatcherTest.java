@@ -14,8 +14,6 @@ import java.nio.file.Files;
 import java.nio.file.Path;
 import java.util.ArrayList;
 import java.util.List;
-import java.util.concurrent.TimeUnit;
-import java.util.function.BooleanSupplier;
 import org.junit.jupiter.api.AfterEach;
 import org.junit.jupiter.api.BeforeEach;
 import org.junit.jupiter.api.Test;
@@ -128,7 +126,7 @@ class SceneWatcherTest {
                 out.write(bytes, half, bytes.length - half);
             }
             int expected = round;
-            await(() -> recorder.reports().size() >= expected, 5_000, "round " + round + " loaded");
+            Poll.until(() -> recorder.reports().size() >= expected, 5_000, "round " + round + " loaded");
         }
         List<Object> reports = recorder.reports();
         assertEquals(rounds, reports.size(), "each save once, nothing in between: " + reports);
@@ -177,16 +175,5 @@ class SceneWatcherTest {
         watcher.poll();
         watcher.poll();
         assertEquals(file + ": no such file", ((InputException) recorder.reports().get(0)).getMessage());
-    }
-
-    private static void await(BooleanSupplier condition, long deadlineMillis, String what)
-            throws InterruptedException {
-        long start = System.nanoTime();
-        while (!condition.getAsBoolean()) {
-            if (TimeUnit.NANOSECONDS.toMillis(System.nanoTime() - start) > deadlineMillis) {
-                throw new AssertionError(what + ": not within " + deadlineMillis + " ms");
-            }
-            Thread.sleep(5);
-        }
     }
 }

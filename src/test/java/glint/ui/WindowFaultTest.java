@@ -11,8 +11,6 @@ import java.io.PrintWriter;
 import java.io.StringWriter;
 import java.nio.file.Files;
 import java.nio.file.Path;
-import java.util.concurrent.TimeUnit;
-import java.util.function.BooleanSupplier;
 import javax.swing.SwingUtilities;
 import org.junit.jupiter.api.AfterEach;
 import org.junit.jupiter.api.Test;
@@ -66,10 +64,10 @@ class WindowFaultTest {
         trace.faults.set(4);
         Config config = Config.defaults().withSize(W, H).withSamples(4).withThreads(2);
         open(config, trace);
-        await(() -> shown() != null && shown().stats().renderError().startsWith("render failed: a render worker"),
-                10_000, "the error in the overlay");
+        Poll.until(() -> shown() != null && shown().stats().renderError().startsWith("render failed: a render worker"),
+                10_000, () -> "the error in the overlay; err: " + err);
         assertTrue(window.engineAlive());
-        await(() -> shown().stats().refined() && shown().image() != null, 20_000,
+        Poll.until(() -> shown().stats().refined() && shown().image() != null, 20_000,
                 "a refined frame, with no key pressed");
         assertEquals("", shown().stats().renderError());
         assertEquals(1, err.toString().lines().filter(l -> l.contains("render failed")).count(), err.toString());
@@ -83,12 +81,13 @@ class WindowFaultTest {
                 Limits.DEFAULT.maxLights(), Limits.DEFAULT.maxRecursion());
         Config config = Config.defaults().withSize(W, H).withSamples(1).withThreads(2).withLimits(limits);
         open(config, FrameRenderer.TraceCall.TRACER);
-        await(() -> shown() != null && shown().image() != null && shown().stats().refined(), 20_000, "first frame");
+        Poll.until(() -> shown() != null && shown().image() != null && shown().stats().refined(),
+                20_000, () -> "first frame; err: " + err);
         assertEquals(W * H, shown().image().getWidth() * shown().image().getHeight(), "76,800 pixels: allowed");
 
         SwingUtilities.invokeAndWait(() -> window.frame().setSize(window.frame().getWidth() + 240,
                 window.frame().getHeight() + 180));
-        await(() -> shown().stats().viewWidth() == W + 240 && shown().stats().refined(), 20_000,
+        Poll.until(() -> shown().stats().viewWidth() == W + 240 && shown().stats().refined(), 20_000,
                 "a refined frame at the new size");
         FrameStats s = shown().stats();
         long pixels = (long) shown().image().getWidth() * shown().image().getHeight();
@@ -97,17 +96,5 @@ class WindowFaultTest {
         assertTrue(OverlayText.lines(s).contains(new OverlayText.Line(
                 "window too large: rendered at most 100,000 pixels (max_image_pixels)", OverlayText.Tone.NOTE)));
         assertTrue(err.toString().contains("glint: the window is " + (W + 240) + "x" + (H + 180)), err.toString());
-    }
-
-    private long await(BooleanSupplier condition, long deadlineMillis, String what) throws InterruptedException {
-        long start = System.nanoTime();
-        while (!condition.getAsBoolean()) {
-            long elapsed = TimeUnit.NANOSECONDS.toMillis(System.nanoTime() - start);
-            if (elapsed > deadlineMillis) {
-                throw new AssertionError(what + ": not within " + deadlineMillis + " ms; err: " + err);
-            }
-            Thread.sleep(10);
-        }
-        return TimeUnit.NANOSECONDS.toMillis(System.nanoTime() - start);
     }
 }

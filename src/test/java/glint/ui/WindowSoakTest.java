@@ -21,8 +21,6 @@ import java.util.ArrayList;
 import java.util.List;
 import java.util.Locale;
 import java.util.concurrent.TimeUnit;
-import java.util.function.BooleanSupplier;
-import java.util.function.Supplier;
 import javax.swing.SwingUtilities;
 import org.junit.jupiter.api.Tag;
 import org.junit.jupiter.api.Test;
@@ -114,7 +112,8 @@ class WindowSoakTest {
         robot = new Robot();
         List<Minute> minutes = new ArrayList<>();
         try {
-            await(() -> window.frame().isShowing() && idle(), 30_000, "the first refined frame");
+            Poll.until(() -> window.frame().isShowing() && idle(),
+                    30_000, () -> "the first refined frame; err: " + err);
             focus();
             long flightNanos = 0;
             for (int minute = 1; minute <= MINUTES; minute++) {
@@ -128,7 +127,7 @@ class WindowSoakTest {
                 assertTrue(trace.movingFrames - movingBefore > 100,
                         "minute " + minute + ": the keys flew the camera (" + (trace.movingFrames - movingBefore)
                                 + " moving frames); err: " + err);
-                await(this::idle, 30_000, "idle after minute " + minute);
+                Poll.until(this::idle, 30_000, "idle after minute " + minute);
                 Minute m = new Minute(minute, usedHeapAfterGc(), checker[0].images, trace.movingFrames,
                         trace.stillPasses, checker[0].torn);
                 minutes.add(m);
@@ -226,7 +225,7 @@ class WindowSoakTest {
     }
 
     private void drag(int dx) throws Exception {
-        Point p = onEventThread(() -> window.display().getLocationOnScreen());
+        Point p = Poll.onEventThread(() -> window.display().getLocationOnScreen());
         int x = p.x + W / 2;
         int y = p.y + H / 2;
         robot.mouseMove(x, y);
@@ -243,11 +242,11 @@ class WindowSoakTest {
         if (window.display().isFocusOwner()) {
             return;
         }
-        Point p = onEventThread(() -> window.display().getLocationOnScreen());
+        Point p = Poll.onEventThread(() -> window.display().getLocationOnScreen());
         robot.mouseMove(p.x + W / 2, p.y + H / 2);
         robot.mousePress(InputEvent.BUTTON1_DOWN_MASK);
         robot.mouseRelease(InputEvent.BUTTON1_DOWN_MASK);
-        await(() -> window.display().isFocusOwner(), 10_000, "the keyboard focus");
+        Poll.until(() -> window.display().isFocusOwner(), 10_000, () -> "the keyboard focus; err: " + err);
     }
 
     // ---- measuring ----
@@ -272,25 +271,5 @@ class WindowSoakTest {
         Files.createDirectories(file.getParent());
         Files.writeString(file, line + System.lineSeparator(), java.nio.file.StandardOpenOption.CREATE,
                 java.nio.file.StandardOpenOption.APPEND);
-    }
-
-    private long await(BooleanSupplier condition, long deadlineMillis, String what) throws InterruptedException {
-        long start = System.nanoTime();
-        while (!condition.getAsBoolean()) {
-            long elapsed = TimeUnit.NANOSECONDS.toMillis(System.nanoTime() - start);
-            if (elapsed > deadlineMillis) {
-                throw new AssertionError(what + ": not within " + deadlineMillis + " ms; err: " + err);
-            }
-            Thread.sleep(10);
-        }
-        return TimeUnit.NANOSECONDS.toMillis(System.nanoTime() - start);
-    }
-
-    private static <T> T onEventThread(Supplier<T> task) throws Exception {
-        Object[] result = new Object[1];
-        SwingUtilities.invokeAndWait(() -> result[0] = task.get());
-        @SuppressWarnings("unchecked")
-        T t = (T) result[0];
-        return t;
     }
 }

@@ -22,9 +22,6 @@ import java.nio.file.Path;
 import java.util.Arrays;
 import java.util.List;
 import java.util.Optional;
-import java.util.concurrent.TimeUnit;
-import java.util.function.BooleanSupplier;
-import java.util.function.Supplier;
 import javax.imageio.ImageIO;
 import javax.swing.SwingUtilities;
 import org.junit.jupiter.api.AfterEach;
@@ -63,15 +60,16 @@ class WindowTest {
         window = GlintWindow.open(config, new SceneSource(scene, () -> config), new Screenshots(dir),
                 new PrintWriter(err, true));
         robot = new Robot();
-        await(() -> window.frame().isShowing() && refined(), 20_000, "the window shows a refined frame");
-        Point centre = onEventThread(() -> {
+        Poll.until(() -> window.frame().isShowing() && refined(),
+                20_000, () -> "the window shows a refined frame; err: " + err);
+        Point centre = Poll.onEventThread(() -> {
             Point p = window.display().getLocationOnScreen();
             return new Point(p.x + W / 2, p.y + H / 2);
         });
         robot.mouseMove(centre.x, centre.y);
         robot.mousePress(InputEvent.BUTTON1_DOWN_MASK);
         robot.mouseRelease(InputEvent.BUTTON1_DOWN_MASK);
-        await(() -> window.display().isFocusOwner(), 10_000, "the keyboard focus");
+        Poll.until(() -> window.display().isFocusOwner(), 10_000, () -> "the keyboard focus; err: " + err);
     }
 
     @AfterEach
@@ -98,9 +96,9 @@ class WindowTest {
         Thread.sleep(millis); // the duration of the key press itself
         robot.keyRelease(keyCode);
         double seconds = (System.nanoTime() - start) / 1e9;
-        await(() -> !window.input().isDown(Action.FORWARD) && !window.input().isDown(Action.YAW_RIGHT)
-                && !window.input().isDown(Action.RIGHT), 5_000, "the key up");
-        await(this::refined, 20_000, "still again");
+        Poll.until(() -> !window.input().isDown(Action.FORWARD) && !window.input().isDown(Action.YAW_RIGHT)
+                && !window.input().isDown(Action.RIGHT), 5_000, () -> "the key up; err: " + err);
+        Poll.until(this::refined, 20_000, () -> "still again; err: " + err);
         return seconds;
     }
 
@@ -110,7 +108,7 @@ class WindowTest {
     }
 
     private BufferedImage capture() throws Exception {
-        Rectangle area = onEventThread(() -> new Rectangle(window.display().getLocationOnScreen(),
+        Rectangle area = Poll.onEventThread(() -> new Rectangle(window.display().getLocationOnScreen(),
                 window.display().getSize()));
         return robot.createScreenCapture(area);
     }
@@ -123,27 +121,6 @@ class WindowTest {
             p[i] &= 0xffffff;
         }
         return p;
-    }
-
-    private long await(BooleanSupplier condition, long deadlineMillis, String what)
-            throws InterruptedException {
-        long start = System.nanoTime();
-        while (!condition.getAsBoolean()) {
-            long elapsed = TimeUnit.NANOSECONDS.toMillis(System.nanoTime() - start);
-            if (elapsed > deadlineMillis) {
-                throw new AssertionError(what + ": not within " + deadlineMillis + " ms; err: " + err);
-            }
-            Thread.sleep(10);
-        }
-        return TimeUnit.NANOSECONDS.toMillis(System.nanoTime() - start);
-    }
-
-    private static <T> T onEventThread(Supplier<T> task) throws Exception {
-        Object[] result = new Object[1];
-        SwingUtilities.invokeAndWait(() -> result[0] = task.get());
-        @SuppressWarnings("unchecked")
-        T t = (T) result[0];
-        return t;
     }
 
     private static double yawDegrees(Vector3d forward) {
@@ -184,7 +161,7 @@ class WindowTest {
 
     @Test
     void draggingTheMouseLooksAround() throws Exception {
-        Point start = onEventThread(() -> window.display().getLocationOnScreen());
+        Point start = Poll.onEventThread(() -> window.display().getLocationOnScreen());
         robot.mouseMove(start.x + 100, start.y + 120);
         robot.mousePress(InputEvent.BUTTON1_DOWN_MASK);
         for (int dx = 10; dx <= 100; dx += 10) {
@@ -192,7 +169,7 @@ class WindowTest {
         }
         robot.mouseRelease(InputEvent.BUTTON1_DOWN_MASK);
         double expected = 100 * CameraController.DRAG_DEGREES_PER_PIXEL;
-        await(() -> Math.abs(yawDegrees(window.engine().camera().orientation().forward()) - expected) < 1e-6,
+        Poll.until(() -> Math.abs(yawDegrees(window.engine().camera().orientation().forward()) - expected) < 1e-6,
                 5_000, "turned right by " + expected + " degrees");
     }
 
@@ -213,9 +190,9 @@ class WindowTest {
     @Test
     void f12WritesAPngOfWhatTheWindowShows() throws Exception {
         tap(KeyEvent.VK_H); // the overlay off: the window is the view alone
-        await(() -> !window.display().overlayVisible(), 5_000, "overlay hidden");
+        Poll.until(() -> !window.display().overlayVisible(), 5_000, () -> "overlay hidden; err: " + err);
         tap(KeyEvent.VK_F12);
-        await(() -> pngs().size() == 1, 5_000, "a PNG in " + dir);
+        Poll.until(() -> pngs().size() == 1, 5_000, "a PNG in " + dir);
         Path png = pngs().get(0);
         assertTrue(png.getFileName().toString().matches("glint-\\d{8}-\\d{6}-\\d{3}\\.png"), png.toString());
         BufferedImage saved = ImageIO.read(png.toFile());
@@ -229,7 +206,7 @@ class WindowTest {
     private void awaitWindowShows(int[] expected) throws Exception {
         int[][] last = new int[1][];
         try {
-            await(() -> {
+            Poll.until(() -> {
                 try {
                     last[0] = pixels(capture());
                     return Arrays.equals(expected, last[0]);
@@ -264,7 +241,7 @@ class WindowTest {
     void resizingRendersAtTheNewSize() throws Exception {
         SwingUtilities.invokeAndWait(() -> window.frame().setSize(window.frame().getWidth() + 80,
                 window.frame().getHeight() + 40));
-        await(() -> {
+        Poll.until(() -> {
             ShownFrame f = window.display().shown();
             return f.stats().refined() && f.stats().viewWidth() == W + 80 && f.image().getWidth() == W + 80
                     && f.image().getHeight() == H + 40;
@@ -275,16 +252,16 @@ class WindowTest {
     void closingTheWindowEndsTheEngine() throws Exception {
         SwingUtilities.invokeAndWait(() -> window.frame().dispatchEvent(
                 new WindowEvent(window.frame(), WindowEvent.WINDOW_CLOSING)));
-        await(() -> !window.engineAlive(), 10_000, "the engine ended");
+        Poll.until(() -> !window.engineAlive(), 10_000, () -> "the engine ended; err: " + err);
         assertEquals(0, window.awaitExit());
-        await(() -> !window.frame().isDisplayable(), 5_000, "the window disposed");
+        Poll.until(() -> !window.frame().isDisplayable(), 5_000, () -> "the window disposed; err: " + err);
         window = null;
     }
 
     @Test
     void escapeQuits() throws Exception {
         tap(KeyEvent.VK_ESCAPE);
-        await(() -> !window.engineAlive(), 10_000, "the engine ended");
+        Poll.until(() -> !window.engineAlive(), 10_000, () -> "the engine ended; err: " + err);
         assertEquals(0, window.awaitExit());
         window = null;
     }
@@ -295,9 +272,9 @@ class WindowTest {
         robot.keyPress(KeyEvent.VK_SHIFT);
         tap(KeyEvent.VK_SLASH); // '?' on a US keyboard
         robot.keyRelease(KeyEvent.VK_SHIFT);
-        await(() -> window.display().helpVisible(), 5_000, "the help key");
+        Poll.until(() -> window.display().helpVisible(), 5_000, () -> "the help key; err: " + err);
         int[] a = pixels(before);
-        await(() -> {
+        Poll.until(() -> {
             try {
                 return !Arrays.equals(a, pixels(capture()));
             } catch (Exception e) {
