@@ -29,7 +29,7 @@ public final class BenchReport {
     static final String END = "<!-- results:end -->";
 
     /** One benchmark result: name, parameters, score and its 99.9% error, in ms per frame. */
-    record Result(String benchmark, Map<String, String> params, double score, double error) {
+    record Result(String benchmark, Map<String, String> params, double score, double error, String unit) {
 
         String param(String key) {
             return params.getOrDefault(key, "");
@@ -83,7 +83,8 @@ public final class BenchReport {
                 map.forEach((k, v) -> params.put(String.valueOf(k), String.valueOf(v)));
             }
             results.add(new Result(String.valueOf(entry.get("benchmark")), params,
-                    number(metric.get("score")), number(metric.get("scoreError"))));
+                    number(metric.get("score")), number(metric.get("scoreError")),
+                    String.valueOf(metric.get("scoreUnit"))));
         }
         return results;
     }
@@ -116,11 +117,14 @@ public final class BenchReport {
         StringBuilder md = new StringBuilder();
         md.append(String.format(Locale.ROOT, "Generated from `%s` by `java -cp target/glint.jar glint.bench.BenchReport %s`.%n%n",
                 source, source));
-        md.append("| benchmark | parameters | ms per frame | ± (99.9%) | frames per second |\n|---|---|---:|---:|---:|\n");
+        md.append("| benchmark | parameters | score | ± (99.9%) | unit | frames per second |\n"
+                + "|---|---|---:|---:|---|---:|\n");
         for (Result r : results) {
             String name = r.benchmark().substring(r.benchmark().lastIndexOf('.', r.benchmark().lastIndexOf('.') - 1) + 1);
-            md.append(String.format(Locale.ROOT, "| %s | %s | %.2f | %.2f | %.1f |%n", name,
-                    r.params().toString().replace("{", "").replace("}", ""), r.score(), r.error(), 1000 / r.score()));
+            boolean frameTime = r.unit().equals("ms/op"); // a frame per operation: its rate means something
+            md.append(String.format(Locale.ROOT, "| %s | %s | %.2f | %.2f | %s | %s |%n", name,
+                    r.params().toString().replace("{", "").replace("}", ""), r.score(), r.error(), r.unit(),
+                    frameTime ? String.format(Locale.ROOT, "%.1f", 1000 / r.score()) : ""));
         }
         return md.toString();
     }
