@@ -31,6 +31,9 @@ final class TracerWorker {
     // the direction Optics.refract writes
     private final double[] refracted = new double[3];
 
+    // unit directions of the current tile row's camera rays, 3 doubles a ray (grows, never shrinks)
+    private double[] rowDirections = new double[0];
+
     /** Rays this worker has cast (camera, reflected, refracted and shadow rays). */
     long raysCast() {
         return caster.rays;
@@ -52,27 +55,67 @@ final class TracerWorker {
         screenOffsetY = halfHeight;
         caster.prepareEye(renderScene);
         int side = (int) Math.round(Math.sqrt(samples));
+        int rowRays = (x1 - x0) * sampleCount;
+        if (rowDirections.length < 3 * rowRays) {
+            rowDirections = new double[3 * rowRays];
+        }
         for (int y = y0; y < y1; y++) {
-            for (int x = x0; x < x1; x++) {
-                renderPixel(frame, x, y, side, firstSample, sampleCount, frameIndex);
+            aimRow(frame.width(), y, x0, x1, side, firstSample, sampleCount, frameIndex);
+            int ray = 0;
+            for (int x = x0; x < x1; x++, ray += sampleCount) {
+                renderPixel(frame, x, y, side, ray, sampleCount);
             }
         }
     }
 
-    private void renderPixel(FrameBuffer frame, int x, int y, int side, int firstSample, int sampleCount,
-                             int frameIndex) {
+    /**
+     * Fills rowDirections with the camera-ray directions of pixels [x0, x1) of row y, sample after
+     * sample: done for the whole row before any is traced, so that the square roots and divisions
+     * of many rays overlap instead of each stalling the start of its own ray.
+     */
+    private void aimRow(int width, int y, int x0, int x1, int side, int firstSample, int sampleCount,
+                        int frameIndex) {
+        int ray = 0;
+        for (int x = x0; x < x1; x++) {
+            if (side == 1) {
+                aim(ray++, x + 0.5, y + 0.5);
+                continue;
+            }
+            int pixelIndex = y * width + x;
+            for (int sample = firstSample, end = firstSample + sampleCount; sample < end; sample++) {
+                int cellX = sample % side, cellY = sample / side;
+                long h = SamplePattern.hash(pixelIndex, frameIndex, sample);
+                aim(ray++, x + (cellX + SamplePattern.jitterU(h)) / side,
+                        y + (cellY + SamplePattern.jitterV(h)) / side);
+            }
+        }
+    }
+
+    /** Stores the unit direction of the camera ray through image point (px, py), in pixels from the top-left. */
+    private void aim(int ray, double px, double py) {
+        CameraBasis camera = scene.camera;
+        double screenX = px * screenScaleX + screenOffsetX;
+        double screenY = py * screenScaleY + screenOffsetY;
+        double dx = camera.forwardX + screenX * camera.rightX + screenY * camera.upX;
+        double dy = camera.forwardY + screenX * camera.rightY + screenY * camera.upY;
+        double dz = camera.forwardZ + screenX * camera.rightZ + screenY * camera.upZ;
+        double inv = 1 / Math.sqrt(dx * dx + dy * dy + dz * dz);
+        int i = 3 * ray;
+        rowDirections[i] = dx * inv;
+        rowDirections[i + 1] = dy * inv;
+        rowDirections[i + 2] = dz * inv;
+    }
+
+    /** Traces the pixel's sampleCount camera rays, aimed from rowDirections[3 firstRay] on, into the frame. */
+    private void renderPixel(FrameBuffer frame, int x, int y, int side, int firstRay, int sampleCount) {
         if (side == 1) {
-            cameraSample(x + 0.5, y + 0.5);
+            cameraSample(firstRay);
             frame.set(x, y, outR, outG, outB);
             return;
         }
         double sumR = 0, sumG = 0, sumB = 0;
-        int pixelIndex = y * frame.width() + x;
-        for (int sample = firstSample, end = firstSample + sampleCount; sample < end; sample++) {
-            int cellX = sample % side, cellY = sample / side;
-            long h = SamplePattern.hash(pixelIndex, frameIndex, sample);
-            cameraSample(x + (cellX + SamplePattern.jitterU(h)) / side,
-                    y + (cellY + SamplePattern.jitterV(h)) / side);
+        for (int ray = firstRay, end = firstRay + sampleCount; ray < end; ray++) {
+            cameraSample(ray);
             sumR += outR;
             sumG += outG;
             sumB += outB;
@@ -81,16 +124,12 @@ final class TracerWorker {
         frame.set(x, y, sumR * inv, sumG * inv, sumB * inv);
     }
 
-    /** Traces the camera ray through image point (px, py) in pixels from the top-left corner. */
-    private void cameraSample(double px, double py) {
-        RenderScene s = scene;
-        double screenX = px * screenScaleX + screenOffsetX;
-        double screenY = py * screenScaleY + screenOffsetY;
-        double dx = s.camera.forwardX + screenX * s.camera.rightX + screenY * s.camera.upX;
-        double dy = s.camera.forwardY + screenX * s.camera.rightY + screenY * s.camera.upY;
-        double dz = s.camera.forwardZ + screenX * s.camera.rightZ + screenY * s.camera.upZ;
-        double inv = 1 / Math.sqrt(dx * dx + dy * dy + dz * dz);
-        trace(s.camera.eyeX, s.camera.eyeY, s.camera.eyeZ, dx * inv, dy * inv, dz * inv, s.settings.recursionMax(), 1, EYE);
+    /** Traces camera ray {@code ray} of the current row. */
+    private void cameraSample(int ray) {
+        CameraBasis camera = scene.camera;
+        int i = 3 * ray;
+        trace(camera.eyeX, camera.eyeY, camera.eyeZ, rowDirections[i], rowDirections[i + 1], rowDirections[i + 2],
+                scene.settings.recursionMax(), 1, EYE);
     }
 
     /**
