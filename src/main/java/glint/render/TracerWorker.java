@@ -15,6 +15,13 @@ final class TracerWorker {
 
     private RenderScene scene;
 
+    // the scene's settings, read once per tile rather than through the record on every ray
+    private int recursionMax;
+    private double epsilon;
+    private double minWeight;
+    private boolean phong;
+    private boolean exactFresnel;
+
     private final RayCaster caster = new RayCaster();
 
     // per frame: screen x = px * screenScaleX + screenOffsetX, likewise y
@@ -46,6 +53,12 @@ final class TracerWorker {
     void renderTile(RenderScene renderScene, FrameBuffer frame, int samples, int firstSample, int sampleCount,
                     int frameIndex, int x0, int y0, int x1, int y1) {
         this.scene = renderScene;
+        RenderSettings settings = renderScene.settings;
+        recursionMax = settings.recursionMax();
+        epsilon = settings.epsilon();
+        minWeight = settings.minWeight();
+        phong = settings.shading() == Shading.PHONG;
+        exactFresnel = settings.glassFresnel() == RenderSettings.GlassFresnel.EXACT;
         // image point (px, py) in pixels -> screen (x, y) on the image plane at distance 1
         double halfWidth = renderScene.camera.tanHalfFov;
         double halfHeight = halfWidth * frame.height() / frame.width();
@@ -129,7 +142,7 @@ final class TracerWorker {
         CameraBasis camera = scene.camera;
         int i = 3 * ray;
         trace(camera.eyeX, camera.eyeY, camera.eyeZ, rowDirections[i], rowDirections[i + 1], rowDirections[i + 2],
-                scene.settings.recursionMax(), 1, EYE);
+                recursionMax, 1, EYE);
     }
 
     /**
@@ -176,7 +189,7 @@ final class TracerWorker {
             pz -= off * nz;
             material = s.planeMaterial[hit.hitPlane];
         }
-        double offset = s.settings.epsilon() * Math.max(1, Math.sqrt(px * px + py * py + pz * pz));
+        double offset = epsilon * atLeastOne(Math.sqrt(px * px + py * py + pz * pz));
         double cosIncident = -(dx * nx + dy * ny + dz * nz); // > 0 when the ray meets the front side
         boolean entering = cosIncident >= 0;
         if (!entering) {
@@ -190,7 +203,7 @@ final class TracerWorker {
         int self = RayCaster.surfaceId(hit.hitSphere, hit.hitPlane);
         int skipNear = hit.hitPlane >= 0 || entering ? self : 0;
         int skipFar = hit.hitPlane >= 0 || !entering ? self : 0;
-        if (s.settings.shading() == Shading.PHONG) {
+        if (phong) {
             shadePhong(material, px, py, pz, nx, ny, nz, dx, dy, dz, cosIncident, entering, offset, hitsLeft, weight,
                     skipNear, skipFar);
             return;
@@ -255,7 +268,7 @@ final class TracerWorker {
         if (hitsLeft > 1) {
             double fR = Optics.schlick(f0R, cosView), fG = Optics.schlick(f0G, cosView), fB = Optics.schlick(f0B, cosView);
             double childWeight = weight * Math.max(fR, Math.max(fG, fB));
-            if (childWeight >= s.settings.minWeight()) {
+            if (childWeight >= minWeight) {
                 double k = 2 * cosView;
                 trace(ox, oy, oz, dx + k * nx, dy + k * ny, dz + k * nz, hitsLeft - 1, childWeight, skipNear);
                 sumR += fR * outR;
@@ -276,9 +289,8 @@ final class TracerWorker {
         double sumR = 0, sumG = 0, sumB = 0;
         if (hitsLeft > 1) {
             double eta = entering ? 1 / s.ior[m] : s.ior[m];
-            double reflectance = s.settings.glassFresnel() == RenderSettings.GlassFresnel.EXACT
+            double reflectance = exactFresnel
                     ? Optics.fresnelDielectric(cosIncident, eta) : Optics.schlickDielectric(cosIncident, eta);
-            double minWeight = s.settings.minWeight();
             if (weight * reflectance >= minWeight) {
                 double k = 2 * cosIncident;
                 trace(px + offset * nx, py + offset * ny, pz + offset * nz,
@@ -364,7 +376,6 @@ final class TracerWorker {
         double sumG = kd * colorG * diffuseG + ks * specG;
         double sumB = kd * colorB * diffuseB + ks * specB;
         if (hitsLeft > 1) {
-            double minWeight = s.settings.minWeight();
             double k = 2 * cosIncident;
             double rx = dx + k * nx, ry = dy + k * ny, rz = dz + k * nz;
             if (weight * ks >= minWeight) {
@@ -386,6 +397,14 @@ final class TracerWorker {
         outR = sumR;
         outG = sumG;
         outB = sumB;
+    }
+
+    /**
+     * max(1, distance) for a distance (>= 0, not NaN): one comparison, where Math.max's handling of
+     * NaN and -0 costs a blend sequence on the path from the hit point to the spawned rays.
+     */
+    private static double atLeastOne(double distance) {
+        return distance > 1 ? distance : 1;
     }
 
     // ---- lights and visibility ----------------------------------------------------------------
