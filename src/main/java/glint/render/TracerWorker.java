@@ -72,7 +72,10 @@ final class TracerWorker {
         if (rowDirections.length < 3 * rowRays) {
             rowDirections = new double[3 * rowRays];
         }
+        // the tile's screen x range, then each row's y range (y grows downwards in pixels, upwards on screen)
+        double xLow = x0 * screenScaleX + screenOffsetX, xHigh = x1 * screenScaleX + screenOffsetX;
         for (int y = y0; y < y1; y++) {
+            caster.aimEye(renderScene, xLow, xHigh, (y + 1) * screenScaleY + screenOffsetY, y * screenScaleY + screenOffsetY);
             aimRow(frame.width(), y, x0, x1, side, firstSample, sampleCount, frameIndex);
             int ray = 0;
             for (int x = x0; x < x1; x++, ray += sampleCount) {
