@@ -21,6 +21,8 @@ final class RayCaster {
     long rays;
 
     private final int[] stack = new int[STACK_DEPTH];
+    /** Where the ray enters the box of each node on the nearest-hit stack, found when it was pushed. */
+    private final double[] stackEntry = new double[STACK_DEPTH];
 
     /** The surface the current query ignores (see {@link #surfaceId}); 0 = none. */
     private int skip;
@@ -85,10 +87,12 @@ final class RayCaster {
         SphereBvh bvh = s.bvh;
         double ix = 1 / nonZero(dx), iy = 1 / nonZero(dy), iz = 1 / nonZero(dz);
         int top = 0;
-        stack[top++] = 0;
+        stack[top] = 0;
+        stackEntry[top++] = boxEntry(bvh.bounds, 0, ox, oy, oz, ix, iy, iz);
         while (top > 0) {
             int node = stack[--top];
-            if (boxEntry(bvh.bounds, node, ox, oy, oz, ix, iy, iz) >= hitT) {
+            // a nearer hit may have been found since the node was pushed
+            if (stackEntry[top] >= hitT) {
                 continue;
             }
             int count = bvh.links[2 * node + 1];
@@ -101,19 +105,11 @@ final class RayCaster {
             double left = boxEntry(bvh.bounds, link, ox, oy, oz, ix, iy, iz);
             double right = boxEntry(bvh.bounds, link + 1, ox, oy, oz, ix, iy, iz);
             if (left <= right) {
-                if (right < hitT) {
-                    stack[top++] = link + 1;
-                }
-                if (left < hitT) {
-                    stack[top++] = link;
-                }
+                top = pushIfBefore(top, link + 1, right);
+                top = pushIfBefore(top, link, left);
             } else {
-                if (left < hitT) {
-                    stack[top++] = link;
-                }
-                if (right < hitT) {
-                    stack[top++] = link + 1;
-                }
+                top = pushIfBefore(top, link, left);
+                top = pushIfBefore(top, link + 1, right);
             }
         }
     }
@@ -287,6 +283,16 @@ final class RayCaster {
             }
         }
         return false;
+    }
+
+    /** Pushes the node with its box entry distance when that comes before the nearest hit so far; returns the new top. */
+    private int pushIfBefore(int top, int node, double entry) {
+        if (entry < hitT) {
+            stack[top] = node;
+            stackEntry[top] = entry;
+            return top + 1;
+        }
+        return top;
     }
 
     private boolean anySphereInBvh(RenderScene s, double ox, double oy, double oz,
