@@ -21,6 +21,8 @@ final class RayCaster {
     long rays;
 
     private final int[] stack = new int[STACK_DEPTH];
+    /** Where the ray enters the box of each node on the nearest-hit stack, found when it was pushed. */
+    private final double[] stackEntry = new double[STACK_DEPTH];
 
     /** The surface the current query ignores (see {@link #surfaceId}); 0 = none. */
     private int skip;
@@ -85,10 +87,12 @@ final class RayCaster {
         SphereBvh bvh = s.bvh;
         double ix = 1 / nonZero(dx), iy = 1 / nonZero(dy), iz = 1 / nonZero(dz);
         int top = 0;
-        stack[top++] = 0;
+        stack[top] = 0;
+        stackEntry[top++] = boxEntry(bvh.bounds, 0, ox, oy, oz, ix, iy, iz);
         while (top > 0) {
             int node = stack[--top];
-            if (boxEntry(bvh.bounds, node, ox, oy, oz, ix, iy, iz) >= hitT) {
+            // a nearer hit may have been found since the node was pushed
+            if (stackEntry[top] >= hitT) {
                 continue;
             }
             int count = bvh.links[2 * node + 1];
@@ -101,19 +105,11 @@ final class RayCaster {
             double left = boxEntry(bvh.bounds, link, ox, oy, oz, ix, iy, iz);
             double right = boxEntry(bvh.bounds, link + 1, ox, oy, oz, ix, iy, iz);
             if (left <= right) {
-                if (right < hitT) {
-                    stack[top++] = link + 1;
-                }
-                if (left < hitT) {
-                    stack[top++] = link;
-                }
+                top = pushIfBefore(top, link + 1, right);
+                top = pushIfBefore(top, link, left);
             } else {
-                if (left < hitT) {
-                    stack[top++] = link;
-                }
-                if (right < hitT) {
-                    stack[top++] = link + 1;
-                }
+                top = pushIfBefore(top, link, left);
+                top = pushIfBefore(top, link + 1, right);
             }
         }
     }
@@ -124,6 +120,20 @@ final class RayCaster {
     private double[] eyeC = new double[0];
     private double[] eyePlaneNumerator = new double[0];
 
+    /**
+     * Widening of a sphere's screen range, relative to its size: far above the rounding of the
+     * range, of a camera ray's direction and of the sphere test (all near 1e-16), so a ray outside
+     * the widened range certainly misses; far below a pixel, so it culls nearly as much as the range.
+     */
+    private static final double SCREEN_MARGIN = 1e-6;
+
+    // per sphere, the screen x range then the screen y range (image plane at distance 1) outside
+    // which no camera ray meets it, widened by SCREEN_MARGIN; infinite unless it is wholly in front
+    private double[] eyeScreenRange = new double[0];
+    // the spheres that camera rays of the current screen rectangle may meet, in scene order
+    private int[] eyeCandidates = new int[0];
+    private int eyeCandidateCount;
+
     /** Precomputes what every camera ray of a frame shares: they all start at the eye. */
     void prepareEye(RenderScene s) {
         if (s.bvh != null) {
@@ -132,6 +142,8 @@ final class RayCaster {
         if (eyeC.length < s.sphereCount) {
             eyeC = new double[s.sphereCount];
             eyeToCentre = new double[3 * s.sphereCount];
+            eyeScreenRange = new double[4 * s.sphereCount];
+            eyeCandidates = new int[s.sphereCount];
         }
         if (eyePlaneNumerator.length < s.planeCount) {
             eyePlaneNumerator = new double[s.planeCount];
@@ -144,7 +156,15 @@ final class RayCaster {
             eyeToCentre[3 * i + 1] = fy;
             eyeToCentre[3 * i + 2] = fz;
             eyeC[i] = fx * fx + fy * fy + fz * fz - r * r;
+            // the centre in camera space: across (right), up and along (forward) the view
+            CameraBasis camera = s.camera;
+            double across = -(fx * camera.rightX + fy * camera.rightY + fz * camera.rightZ);
+            double up = -(fx * camera.upX + fy * camera.upY + fz * camera.upZ);
+            double along = -(fx * camera.forwardX + fy * camera.forwardY + fz * camera.forwardZ);
+            screenRange(across, along, r, eyeScreenRange, 4 * i);
+            screenRange(up, along, r, eyeScreenRange, 4 * i + 2);
         }
+        eyeCandidateCount = 0;
         double[] planes = s.planes;
         for (int i = 0; i < s.planeCount; i++) {
             int k = 4 * i;
@@ -152,7 +172,50 @@ final class RayCaster {
         }
     }
 
-    /** {@link #nearest} for a camera ray (from the eye, after {@link #prepareEye}). */
+    /**
+     * Writes to out[at], out[at + 1] the range of screen coordinate a / z over a sphere whose centre
+     * is at (a, z) in a plane through the eye (a across, z along the view), widened by the margin;
+     * the whole line when the sphere is not wholly in front of the eye. The ends are the planes
+     * through the eye tangent to the sphere: |a - s z| = r sqrt(1 + s^2).
+     */
+    private static void screenRange(double a, double z, double r, double[] out, int at) {
+        double denominator = z * z - r * r;
+        if (!(z > r) || !(denominator > 0)) {
+            out[at] = Double.NEGATIVE_INFINITY;
+            out[at + 1] = Double.POSITIVE_INFINITY;
+            return;
+        }
+        double root = r * Math.sqrt(a * a + denominator);
+        double low = (a * z - root) / denominator, high = (a * z + root) / denominator;
+        double margin = SCREEN_MARGIN * (1 + Math.abs(low) + Math.abs(high));
+        out[at] = low - margin;
+        out[at + 1] = high + margin;
+    }
+
+    /**
+     * Keeps for the camera rays to come only the spheres whose screen range meets the rectangle
+     * [xLow, xHigh] x [yLow, yHigh] (screen coordinates, after {@link #prepareEye}): the others
+     * would be tested and missed by every one of those rays.
+     */
+    void aimEye(RenderScene s, double xLow, double xHigh, double yLow, double yHigh) {
+        if (s.bvh != null) {
+            return;
+        }
+        int count = 0;
+        for (int i = 0; i < s.sphereCount; i++) {
+            int k = 4 * i;
+            if (eyeScreenRange[k] <= xHigh && eyeScreenRange[k + 1] >= xLow
+                    && eyeScreenRange[k + 2] <= yHigh && eyeScreenRange[k + 3] >= yLow) {
+                eyeCandidates[count++] = i;
+            }
+        }
+        eyeCandidateCount = count;
+    }
+
+    /**
+     * {@link #nearest} for a camera ray (from the eye, after {@link #prepareEye} and {@link #aimEye}
+     * for a screen rectangle holding the ray).
+     */
     boolean nearestFromEye(RenderScene s, double dx, double dy, double dz) {
         if (s.bvh != null) {
             return nearest(s, s.camera.eyeX, s.camera.eyeY, s.camera.eyeZ, dx, dy, dz, 0);
@@ -162,7 +225,8 @@ final class RayCaster {
         hitSphere = -1;
         hitPlane = -1;
         double[] spheres = s.spheres;
-        for (int i = 0, n = s.sphereCount; i < n; i++) {
+        for (int j = 0, n = eyeCandidateCount; j < n; j++) {
+            int i = eyeCandidates[j];
             double t = Intersect.sphereFrom(eyeToCentre[3 * i], eyeToCentre[3 * i + 1], eyeToCentre[3 * i + 2],
                     eyeC[i], spheres[4 * i + 3], dx, dy, dz, hitT);
             if (t < hitT) {
@@ -219,6 +283,16 @@ final class RayCaster {
             }
         }
         return false;
+    }
+
+    /** Pushes the node with its box entry distance when that comes before the nearest hit so far; returns the new top. */
+    private int pushIfBefore(int top, int node, double entry) {
+        if (entry < hitT) {
+            stack[top] = node;
+            stackEntry[top] = entry;
+            return top + 1;
+        }
+        return top;
     }
 
     private boolean anySphereInBvh(RenderScene s, double ox, double oy, double oz,

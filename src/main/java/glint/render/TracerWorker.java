@@ -15,6 +15,13 @@ final class TracerWorker {
 
     private RenderScene scene;
 
+    // the scene's settings, read once per tile rather than through the record on every ray
+    private int recursionMax;
+    private double epsilon;
+    private double minWeight;
+    private boolean phong;
+    private boolean exactFresnel;
+
     private final RayCaster caster = new RayCaster();
 
     // per frame: screen x = px * screenScaleX + screenOffsetX, likewise y
@@ -31,6 +38,9 @@ final class TracerWorker {
     // the direction Optics.refract writes
     private final double[] refracted = new double[3];
 
+    // unit directions of the current tile row's camera rays, 3 doubles a ray (grows, never shrinks)
+    private double[] rowDirections = new double[0];
+
     /** Rays this worker has cast (camera, reflected, refracted and shadow rays). */
     long raysCast() {
         return caster.rays;
@@ -43,6 +53,12 @@ final class TracerWorker {
     void renderTile(RenderScene renderScene, FrameBuffer frame, int samples, int firstSample, int sampleCount,
                     int frameIndex, int x0, int y0, int x1, int y1) {
         this.scene = renderScene;
+        RenderSettings settings = renderScene.settings;
+        recursionMax = settings.recursionMax();
+        epsilon = settings.epsilon();
+        minWeight = settings.minWeight();
+        phong = settings.shading() == Shading.PHONG;
+        exactFresnel = settings.glassFresnel() == RenderSettings.GlassFresnel.EXACT;
         // image point (px, py) in pixels -> screen (x, y) on the image plane at distance 1
         double halfWidth = renderScene.camera.tanHalfFov;
         double halfHeight = halfWidth * frame.height() / frame.width();
@@ -52,27 +68,70 @@ final class TracerWorker {
         screenOffsetY = halfHeight;
         caster.prepareEye(renderScene);
         int side = (int) Math.round(Math.sqrt(samples));
+        int rowRays = (x1 - x0) * sampleCount;
+        if (rowDirections.length < 3 * rowRays) {
+            rowDirections = new double[3 * rowRays];
+        }
+        // the tile's screen x range, then each row's y range (y grows downwards in pixels, upwards on screen)
+        double xLow = x0 * screenScaleX + screenOffsetX, xHigh = x1 * screenScaleX + screenOffsetX;
         for (int y = y0; y < y1; y++) {
-            for (int x = x0; x < x1; x++) {
-                renderPixel(frame, x, y, side, firstSample, sampleCount, frameIndex);
+            caster.aimEye(renderScene, xLow, xHigh, (y + 1) * screenScaleY + screenOffsetY, y * screenScaleY + screenOffsetY);
+            aimRow(frame.width(), y, x0, x1, side, firstSample, sampleCount, frameIndex);
+            int ray = 0;
+            for (int x = x0; x < x1; x++, ray += sampleCount) {
+                renderPixel(frame, x, y, side, ray, sampleCount);
             }
         }
     }
 
-    private void renderPixel(FrameBuffer frame, int x, int y, int side, int firstSample, int sampleCount,
-                             int frameIndex) {
+    /**
+     * Fills rowDirections with the camera-ray directions of pixels [x0, x1) of row y, sample after
+     * sample: done for the whole row before any is traced, so that the square roots and divisions
+     * of many rays overlap instead of each stalling the start of its own ray.
+     */
+    private void aimRow(int width, int y, int x0, int x1, int side, int firstSample, int sampleCount,
+                        int frameIndex) {
+        int ray = 0;
+        for (int x = x0; x < x1; x++) {
+            if (side == 1) {
+                aim(ray++, x + 0.5, y + 0.5);
+                continue;
+            }
+            int pixelIndex = y * width + x;
+            for (int sample = firstSample, end = firstSample + sampleCount; sample < end; sample++) {
+                int cellX = sample % side, cellY = sample / side;
+                long h = SamplePattern.hash(pixelIndex, frameIndex, sample);
+                aim(ray++, x + (cellX + SamplePattern.jitterU(h)) / side,
+                        y + (cellY + SamplePattern.jitterV(h)) / side);
+            }
+        }
+    }
+
+    /** Stores the unit direction of the camera ray through image point (px, py), in pixels from the top-left. */
+    private void aim(int ray, double px, double py) {
+        CameraBasis camera = scene.camera;
+        double screenX = px * screenScaleX + screenOffsetX;
+        double screenY = py * screenScaleY + screenOffsetY;
+        double dx = camera.forwardX + screenX * camera.rightX + screenY * camera.upX;
+        double dy = camera.forwardY + screenX * camera.rightY + screenY * camera.upY;
+        double dz = camera.forwardZ + screenX * camera.rightZ + screenY * camera.upZ;
+        double inv = 1 / Math.sqrt(dx * dx + dy * dy + dz * dz);
+        int i = 3 * ray;
+        rowDirections[i] = dx * inv;
+        rowDirections[i + 1] = dy * inv;
+        rowDirections[i + 2] = dz * inv;
+    }
+
+    /** Traces the pixel's sampleCount camera rays, aimed from rowDirections[3 firstRay] on, into the frame. */
+    private void renderPixel(FrameBuffer frame, int x, int y, int side, int firstRay, int sampleCount) {
         if (side == 1) {
-            cameraSample(x + 0.5, y + 0.5);
+            cameraSample(firstRay);
             frame.set(x, y, outR, outG, outB);
             return;
         }
         double sumR = 0, sumG = 0, sumB = 0;
-        int pixelIndex = y * frame.width() + x;
-        for (int sample = firstSample, end = firstSample + sampleCount; sample < end; sample++) {
-            int cellX = sample % side, cellY = sample / side;
-            long h = SamplePattern.hash(pixelIndex, frameIndex, sample);
-            cameraSample(x + (cellX + SamplePattern.jitterU(h)) / side,
-                    y + (cellY + SamplePattern.jitterV(h)) / side);
+        for (int ray = firstRay, end = firstRay + sampleCount; ray < end; ray++) {
+            cameraSample(ray);
             sumR += outR;
             sumG += outG;
             sumB += outB;
@@ -81,16 +140,12 @@ final class TracerWorker {
         frame.set(x, y, sumR * inv, sumG * inv, sumB * inv);
     }
 
-    /** Traces the camera ray through image point (px, py) in pixels from the top-left corner. */
-    private void cameraSample(double px, double py) {
-        RenderScene s = scene;
-        double screenX = px * screenScaleX + screenOffsetX;
-        double screenY = py * screenScaleY + screenOffsetY;
-        double dx = s.camera.forwardX + screenX * s.camera.rightX + screenY * s.camera.upX;
-        double dy = s.camera.forwardY + screenX * s.camera.rightY + screenY * s.camera.upY;
-        double dz = s.camera.forwardZ + screenX * s.camera.rightZ + screenY * s.camera.upZ;
-        double inv = 1 / Math.sqrt(dx * dx + dy * dy + dz * dz);
-        trace(s.camera.eyeX, s.camera.eyeY, s.camera.eyeZ, dx * inv, dy * inv, dz * inv, s.settings.recursionMax(), 1, EYE);
+    /** Traces camera ray {@code ray} of the current row. */
+    private void cameraSample(int ray) {
+        CameraBasis camera = scene.camera;
+        int i = 3 * ray;
+        trace(camera.eyeX, camera.eyeY, camera.eyeZ, rowDirections[i], rowDirections[i + 1], rowDirections[i + 2],
+                recursionMax, 1, EYE);
     }
 
     /**
@@ -137,7 +192,7 @@ final class TracerWorker {
             pz -= off * nz;
             material = s.planeMaterial[hit.hitPlane];
         }
-        double offset = s.settings.epsilon() * Math.max(1, Math.sqrt(px * px + py * py + pz * pz));
+        double offset = epsilon * atLeastOne(Math.sqrt(px * px + py * py + pz * pz));
         double cosIncident = -(dx * nx + dy * ny + dz * nz); // > 0 when the ray meets the front side
         boolean entering = cosIncident >= 0;
         if (!entering) {
@@ -151,7 +206,7 @@ final class TracerWorker {
         int self = RayCaster.surfaceId(hit.hitSphere, hit.hitPlane);
         int skipNear = hit.hitPlane >= 0 || entering ? self : 0;
         int skipFar = hit.hitPlane >= 0 || !entering ? self : 0;
-        if (s.settings.shading() == Shading.PHONG) {
+        if (phong) {
             shadePhong(material, px, py, pz, nx, ny, nz, dx, dy, dz, cosIncident, entering, offset, hitsLeft, weight,
                     skipNear, skipFar);
             return;
@@ -216,7 +271,7 @@ final class TracerWorker {
         if (hitsLeft > 1) {
             double fR = Optics.schlick(f0R, cosView), fG = Optics.schlick(f0G, cosView), fB = Optics.schlick(f0B, cosView);
             double childWeight = weight * Math.max(fR, Math.max(fG, fB));
-            if (childWeight >= s.settings.minWeight()) {
+            if (childWeight >= minWeight) {
                 double k = 2 * cosView;
                 trace(ox, oy, oz, dx + k * nx, dy + k * ny, dz + k * nz, hitsLeft - 1, childWeight, skipNear);
                 sumR += fR * outR;
@@ -237,9 +292,8 @@ final class TracerWorker {
         double sumR = 0, sumG = 0, sumB = 0;
         if (hitsLeft > 1) {
             double eta = entering ? 1 / s.ior[m] : s.ior[m];
-            double reflectance = s.settings.glassFresnel() == RenderSettings.GlassFresnel.EXACT
+            double reflectance = exactFresnel
                     ? Optics.fresnelDielectric(cosIncident, eta) : Optics.schlickDielectric(cosIncident, eta);
-            double minWeight = s.settings.minWeight();
             if (weight * reflectance >= minWeight) {
                 double k = 2 * cosIncident;
                 trace(px + offset * nx, py + offset * ny, pz + offset * nz,
@@ -325,7 +379,6 @@ final class TracerWorker {
         double sumG = kd * colorG * diffuseG + ks * specG;
         double sumB = kd * colorB * diffuseB + ks * specB;
         if (hitsLeft > 1) {
-            double minWeight = s.settings.minWeight();
             double k = 2 * cosIncident;
             double rx = dx + k * nx, ry = dy + k * ny, rz = dz + k * nz;
             if (weight * ks >= minWeight) {
@@ -347,6 +400,14 @@ final class TracerWorker {
         outR = sumR;
         outG = sumG;
         outB = sumB;
+    }
+
+    /**
+     * max(1, distance) for a distance (>= 0, not NaN): one comparison, where Math.max's handling of
+     * NaN and -0 costs a blend sequence on the path from the hit point to the spawned rays.
+     */
+    private static double atLeastOne(double distance) {
+        return distance > 1 ? distance : 1;
     }
 
     // ---- lights and visibility ----------------------------------------------------------------
