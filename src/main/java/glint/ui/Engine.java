@@ -1,10 +1,8 @@
 package glint.ui;
 
 import glint.config.Config;
-import glint.config.Limits;
 import glint.config.Shading;
 import glint.input.InputException;
-import glint.render.RenderException;
 import glint.render.RenderScene;
 import glint.render.RenderSettings;
 import glint.scene.Camera;
@@ -29,7 +27,7 @@ import java.util.concurrent.atomic.AtomicReference;
  *
  * <p>Faults do not end it: a frame that fails to render (a render worker threw, memory ran out) keeps the
  * last good frame on screen, shows why in the overlay, says so once on standard error, and is tried again
- * after {@link #RETRY_NANOS} without waiting for input. A window larger than the config's
+ * after {@link RenderFaults#RETRY_NANOS} without waiting for input. A window larger than the config's
  * {@code max_image_pixels} (or than half the heap can hold) is rendered smaller and scaled up.
  */
 public final class Engine implements Runnable, SceneWatcher.Listener {
@@ -38,13 +36,8 @@ public final class Engine implements Runnable, SceneWatcher.Listener {
     public static final long MOTION_HOLD_NANOS = 150_000_000L;
     /** What {@link #step} returns when there is nothing to do until the user does something. */
     public static final long IDLE = Long.MAX_VALUE;
-    /** After a frame failed to render, it is tried again this much later (sooner would only spin). */
-    public static final long RETRY_NANOS = 500_000_000L;
-    /**
-     * Heap bytes per rendered pixel: the float frame buffer (12), the accumulated sum and mean (24 + 12),
-     * the image on screen, the one being made and a screenshot's (3 x 4).
-     */
-    static final long BYTES_PER_PIXEL = 60;
+    /** After a frame failed to render, it is tried again this much later. */
+    public static final long RETRY_NANOS = RenderFaults.RETRY_NANOS;
 
     private final SceneSource source;
     private final InputState input;
@@ -79,11 +72,9 @@ public final class Engine implements Runnable, SceneWatcher.Listener {
     private String message = "";
     private String error = "";
     private boolean statusChanged;
-    private long pixelBudget;     // most pixels a frame may have
+    private FrameBudget budget;
     private String sizeLimit = ""; // why frames are smaller than the window, or empty
-    private int failedFrames;     // frames that failed to render since the last good one
-    private String renderError = "";
-    private long retryAt;
+    private final RenderFaults faults = new RenderFaults();
 
     private volatile boolean running = true;
     private volatile boolean failed;
@@ -118,18 +109,6 @@ public final class Engine implements Runnable, SceneWatcher.Listener {
         source.limits(config.limits().scene());
         checkSize();
         setScene(scene, true);
-    }
-
-    /** The most pixels a window frame may have: max_image_pixels, and what half of the heap can hold. */
-    static long pixelBudget(Limits limits, long maxHeapBytes) {
-        return Math.max(1, Math.min(limits.maxImagePixels(), maxHeapBytes / 2 / BYTES_PER_PIXEL));
-    }
-
-    /** Why frames are at most {@link #pixelBudget} pixels, for the overlay: {@code 10,000 pixels (max_image_pixels)}. */
-    static String budgetText(Limits limits, long maxHeapBytes) {
-        long budget = pixelBudget(limits, maxHeapBytes);
-        return String.format(Locale.ROOT, "%,d pixels (%s)", budget,
-                budget == limits.maxImagePixels() ? "max_image_pixels" : "half the Java heap, -Xmx");
     }
 
     // ---- what other threads may ask or tell ----
@@ -251,17 +230,17 @@ public final class Engine implements Runnable, SceneWatcher.Listener {
         }
         boolean moving = moved || in.motionHeld() || start - lastMotion < MOTION_HOLD_NANOS;
         boolean frameDue = moving ? needFrame : passesDone < config.samples();
-        if (frameDue && start < retryAt) { // the last try failed: the next one comes when the pause is over
+        if (frameDue && start < faults.retryAt()) { // the last try failed: the next one comes when the pause is over
             if (statusChanged) {
                 presentStatus();
             }
-            return retryAt - start;
+            return faults.retryAt() - start;
         }
         if (moving && needFrame) {
-            return renderMoving(start) ? 0 : retryAt - clock.nanoTime();
+            return renderMoving(start) ? 0 : faults.retryAt() - clock.nanoTime();
         }
         if (!moving && passesDone < config.samples()) {
-            return renderPass(start) ? 0 : retryAt - clock.nanoTime();
+            return renderPass(start) ? 0 : faults.retryAt() - clock.nanoTime();
         }
         if (moving) { // nothing new to draw yet: wait for input, or for the end of the motion hold
             if (statusChanged) {
@@ -279,8 +258,7 @@ public final class Engine implements Runnable, SceneWatcher.Listener {
 
     /** Renders and shows a moving frame; false if it failed (shown, and tried again later). */
     private boolean renderMoving(long start) {
-        ResolutionGovernor.Size size = ResolutionGovernor.renderSize(viewWidth, viewHeight, governor.scale(),
-                pixelBudget);
+        ResolutionGovernor.Size size = budget.fit(viewWidth, viewHeight, governor.scale());
         BufferedImage image;
         try {
             image = renderer.renderMoving(compiled(), size.width(), size.height());
@@ -300,7 +278,7 @@ public final class Engine implements Runnable, SceneWatcher.Listener {
 
     /** Renders and shows the next still pass; false if it failed (shown, and tried again later). */
     private boolean renderPass(long start) {
-        ResolutionGovernor.Size size = ResolutionGovernor.renderSize(viewWidth, viewHeight, 1, pixelBudget);
+        ResolutionGovernor.Size size = budget.fit(viewWidth, viewHeight, 1);
         BufferedImage image;
         try {
             image = renderer.renderPass(compiled(), size.width(), size.height(), config.samples(), passesDone);
@@ -322,7 +300,7 @@ public final class Engine implements Runnable, SceneWatcher.Listener {
         lastImage = image;
         lastStats = new FrameStats(meter.fps(), nanos / 1e6, image.getWidth(), image.getHeight(),
                 viewWidth, viewHeight, samples, config.samples(), moving, renderer.threads(), shading, depth,
-                controller.speed(), source.scenePath().toString(), message, error, sizeLimit, renderError);
+                controller.speed(), source.scenePath().toString(), message, error, sizeLimit, faults.overlayLine());
         publish();
         if (config.debug() && meter.windowClosed()) {
             err.println(String.format(Locale.ROOT, "glint: window %.1f fps, %.1f ms/frame, %dx%d of %dx%d, %s",
@@ -337,11 +315,11 @@ public final class Engine implements Runnable, SceneWatcher.Listener {
         lastStats = s == null
                 ? new FrameStats(Double.NaN, 0, 0, 0, viewWidth, viewHeight, 0, config.samples(), false,
                         renderer.threads(), shading, depth, controller.speed(), source.scenePath().toString(),
-                        message, error, sizeLimit, renderError)
+                        message, error, sizeLimit, faults.overlayLine())
                 : new FrameStats(meter.fps(), s.msPerFrame(), s.renderWidth(), s.renderHeight(), s.viewWidth(),
                         s.viewHeight(), s.samplesDone(), config.samples(), s.moving() && passesDone == 0,
                         renderer.threads(), shading, depth, controller.speed(), s.scene(), message, error, sizeLimit,
-                        renderError);
+                        faults.overlayLine());
         publish();
     }
 
@@ -357,14 +335,10 @@ public final class Engine implements Runnable, SceneWatcher.Listener {
      * says so once, not once a frame; the frame is tried again after {@link #RETRY_NANOS}, input or not.
      */
     private void frameFailed(Throwable e) {
-        String why = "render failed: " + (e instanceof RenderException ? e.getMessage()
-                : e instanceof OutOfMemoryError ? "out of memory (" + e.getMessage() + ")" : e.toString());
-        if (failedFrames == 0) {
-            err.println("glint: " + why + "; trying again every " + RETRY_NANOS / 1_000_000 + " ms");
+        String line = faults.failed(e, clock.nanoTime());
+        if (line != null) {
+            err.println(line);
         }
-        failedFrames++;
-        renderError = why + (failedFrames == 1 ? "" : " (" + failedFrames + " tries)") + "; trying again";
-        retryAt = clock.nanoTime() + RETRY_NANOS;
         needFrame = true;
         passesDone = 0; // a failed pass may have reached the average: the refinement starts over
         statusChanged = true;
@@ -372,30 +346,25 @@ public final class Engine implements Runnable, SceneWatcher.Listener {
 
     /** A frame was made: a run of failures, if any, is over. */
     private void rendered() {
-        if (failedFrames > 0) {
-            err.println("glint: rendering works again after " + failedFrames + " failed "
-                    + (failedFrames == 1 ? "try" : "tries"));
+        String line = faults.rendered();
+        if (line != null) {
+            err.println(line);
             note("rendering works again");
-            failedFrames = 0;
-            renderError = "";
         }
     }
 
     /** The frame size budget for the window's size now; says once when it starts to bind. */
     private void checkSize() {
-        Limits limits = config.limits();
-        long maxHeap = Runtime.getRuntime().maxMemory();
-        pixelBudget = pixelBudget(limits, maxHeap);
-        boolean over = (long) viewWidth * viewHeight > pixelBudget;
-        String limit = over ? budgetText(limits, maxHeap) : "";
+        budget = FrameBudget.of(config.limits(), Runtime.getRuntime().maxMemory());
+        boolean over = budget.binds(viewWidth, viewHeight);
         if (over && sizeLimit.isEmpty()) {
-            ResolutionGovernor.Size size = ResolutionGovernor.renderSize(viewWidth, viewHeight, 1, pixelBudget);
+            ResolutionGovernor.Size size = budget.fit(viewWidth, viewHeight, 1);
             String line = String.format(Locale.ROOT, "the window is %dx%d; frames are rendered at %dx%d, at most %s",
-                    viewWidth, viewHeight, size.width(), size.height(), limit);
+                    viewWidth, viewHeight, size.width(), size.height(), budget.why());
             err.println("glint: " + line);
             note(line);
         }
-        sizeLimit = limit;
+        sizeLimit = over ? budget.why() : "";
     }
 
     // ---- what changes the view ----
@@ -451,7 +420,7 @@ public final class Engine implements Runnable, SceneWatcher.Listener {
             return;
         }
         // the window's size, or at most the frame size budget (a huge window: the largest frame allowed)
-        ResolutionGovernor.Size size = ResolutionGovernor.renderSize(viewWidth, viewHeight, 1, pixelBudget);
+        ResolutionGovernor.Size size = budget.fit(viewWidth, viewHeight, 1);
         try {
             Path file = screenshots.save(WindowImages.scaled(lastImage, size.width(), size.height()));
             note("saved " + file + (sizeLimit.isEmpty() ? ""

@@ -291,10 +291,10 @@ class EngineFaultTest {
     @Test
     void theFrameBudgetIsAlsoWhatHalfTheHeapHolds() {
         long gigabyte = 1L << 30;
-        assertEquals(Limits.DEFAULT.maxImagePixels(), Engine.pixelBudget(Limits.DEFAULT, 64 * gigabyte));
-        assertEquals(gigabyte / 2 / Engine.BYTES_PER_PIXEL, Engine.pixelBudget(Limits.DEFAULT, gigabyte));
-        assertEquals("8,947,848 pixels (half the Java heap, -Xmx)", Engine.budgetText(Limits.DEFAULT, gigabyte));
-        assertEquals("33,177,600 pixels (max_image_pixels)", Engine.budgetText(Limits.DEFAULT, 64 * gigabyte));
+        assertEquals(Limits.DEFAULT.maxImagePixels(), FrameBudget.of(Limits.DEFAULT, 64 * gigabyte).pixels());
+        assertEquals(gigabyte / 2 / FrameBudget.BYTES_PER_PIXEL, FrameBudget.of(Limits.DEFAULT, gigabyte).pixels());
+        assertEquals("8,947,848 pixels (half the Java heap, -Xmx)", FrameBudget.of(Limits.DEFAULT, gigabyte).why());
+        assertEquals("33,177,600 pixels (max_image_pixels)", FrameBudget.of(Limits.DEFAULT, 64 * gigabyte).why());
     }
 
     @Test
