@@ -60,9 +60,8 @@ public final class Engine implements Runnable, SceneWatcher.Listener {
 
     private int viewWidth;
     private int viewHeight;
+    private final CompiledScenes compiledScenes = new CompiledScenes();
     private RenderScene compiled; // null: compile again before the next frame
-    private RenderScene compiledBase; // the scene and settings compiled, from any camera
-    private Scene compiledFrom;
     private boolean needFrame = true;
     private int passesDone;
     private long lastMotion;
@@ -298,9 +297,8 @@ public final class Engine implements Runnable, SceneWatcher.Listener {
     private void show(BufferedImage image, long end, long nanos, int samples, boolean moving) {
         meter.frame(end);
         lastImage = image;
-        lastStats = new FrameStats(meter.fps(), nanos / 1e6, image.getWidth(), image.getHeight(),
-                viewWidth, viewHeight, samples, config.samples(), moving, renderer.threads(), shading, depth,
-                controller.speed(), source.scenePath().toString(), message, error, sizeLimit, faults.overlayLine());
+        lastStats = stats(meter.fps(), nanos / 1e6, image.getWidth(), image.getHeight(), viewWidth, viewHeight,
+                samples, moving);
         publish();
         if (config.debug() && meter.windowClosed()) {
             err.println(String.format(Locale.ROOT, "glint: window %.1f fps, %.1f ms/frame, %dx%d of %dx%d, %s",
@@ -313,14 +311,18 @@ public final class Engine implements Runnable, SceneWatcher.Listener {
     private void presentStatus() {
         FrameStats s = lastStats;
         lastStats = s == null
-                ? new FrameStats(Double.NaN, 0, 0, 0, viewWidth, viewHeight, 0, config.samples(), false,
-                        renderer.threads(), shading, depth, controller.speed(), source.scenePath().toString(),
-                        message, error, sizeLimit, faults.overlayLine())
-                : new FrameStats(meter.fps(), s.msPerFrame(), s.renderWidth(), s.renderHeight(), s.viewWidth(),
-                        s.viewHeight(), s.samplesDone(), config.samples(), s.moving() && passesDone == 0,
-                        renderer.threads(), shading, depth, controller.speed(), s.scene(), message, error, sizeLimit,
-                        faults.overlayLine());
+                ? stats(Double.NaN, 0, 0, 0, viewWidth, viewHeight, 0, false)
+                : stats(meter.fps(), s.msPerFrame(), s.renderWidth(), s.renderHeight(), s.viewWidth(), s.viewHeight(),
+                        s.samplesDone(), s.moving() && passesDone == 0);
         publish();
+    }
+
+    /** The overlay's figures for a frame of this size, with the engine's settings and messages now. */
+    private FrameStats stats(double fps, double msPerFrame, int renderWidth, int renderHeight, int frameViewWidth,
+                             int frameViewHeight, int samplesDone, boolean moving) {
+        return new FrameStats(fps, msPerFrame, renderWidth, renderHeight, frameViewWidth, frameViewHeight,
+                samplesDone, config.samples(), moving, renderer.threads(), shading, depth, controller.speed(),
+                source.scenePath().toString(), message, error, sizeLimit, faults.overlayLine());
     }
 
     private void publish() {
@@ -372,11 +374,7 @@ public final class Engine implements Runnable, SceneWatcher.Listener {
     private RenderScene compiled() {
         if (compiled == null) {
             RenderSettings settings = RenderSettings.of(config.withShading(shading).withRecursionMax(depth));
-            if (compiledBase == null || compiledFrom != scene || !settings.equals(compiledBase.settings())) {
-                compiledBase = RenderScene.compile(scene, settings); // a camera move does not recompile
-                compiledFrom = scene;
-            }
-            compiled = compiledBase.withCamera(controller.camera());
+            compiled = compiledScenes.of(scene, settings, controller.camera());
         }
         return compiled;
     }
@@ -452,8 +450,7 @@ public final class Engine implements Runnable, SceneWatcher.Listener {
     private void applyConfig(Config c) {
         config = c;
         shading = c.shading();
-        depth = c.recursionMax();
-        depth = Math.min(depth, c.limits().maxRecursion());
+        depth = c.recursionMax(); // at most max_recursion: the config loader refuses more
         controller.setSpeeds(c.moveSpeed(), c.turnSpeed());
         governor.setLimits(c.targetFps(), c.displayScale());
         renderer.configure(c.effectiveThreads(), c.screenDivider());
