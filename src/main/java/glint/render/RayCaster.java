@@ -28,6 +28,23 @@ final class RayCaster {
     private int skip;
 
     /**
+     * The {@code skip} code of a ray that starts inside sphere i, leaving it on its inner side: it
+     * skips nothing, and when the sphere is empty only that sphere needs testing.
+     */
+    static int insideOf(int sphere) {
+        return INSIDE_BASE + sphere;
+    }
+
+    private static final int INSIDE_BASE = Integer.MIN_VALUE + 1;
+    /** Codes below this are {@link #insideOf} codes (or the camera's); sphere counts stay far below 2^30. */
+    private static final int INSIDE_END = Integer.MIN_VALUE / 2;
+
+    /** The surface a query with this skip code leaves out: 0 (none) for a ray inside a sphere. */
+    private static int skipped(int skipCode) {
+        return skipCode < INSIDE_END ? 0 : skipCode;
+    }
+
+    /**
      * A surface's id for {@code skip}: sphere i is i + 1, plane j is -(j + 1). A ray leaving a
      * plane, or leaving a sphere on its outer side, cannot meet that surface again (both are
      * convex), so it is left out of the ray's tests: no self-intersection at any scale.
@@ -38,11 +55,14 @@ final class RayCaster {
 
     /** Nearest hit along the ray; sets hitT and hitSphere or hitPlane (the other is -1). */
     boolean nearest(RenderScene s, double ox, double oy, double oz, double dx, double dy, double dz, int skipSurface) {
-        skip = skipSurface;
         rays++;
         hitT = Intersect.MISS;
         hitSphere = -1;
         hitPlane = -1;
+        if (skipSurface < INSIDE_END && leavesEmptySphere(s, skipSurface - INSIDE_BASE, ox, oy, oz, dx, dy, dz)) {
+            return true;
+        }
+        skip = skipped(skipSurface);
         if (s.bvh == null) {
             nearestSphereIn(s, 0, s.sphereCount, ox, oy, oz, dx, dy, dz);
         } else {
@@ -63,6 +83,26 @@ final class RayCaster {
             }
         }
         return hitT < Intersect.MISS;
+    }
+
+    /**
+     * For a ray inside sphere i: when nothing else reaches into it, sets the hit where the ray
+     * leaves it and returns true; otherwise (or should rounding put the origin outside) false.
+     */
+    private boolean leavesEmptySphere(RenderScene s, int i, double ox, double oy, double oz,
+                                      double dx, double dy, double dz) {
+        if (!s.sphereIsEmpty[i]) {
+            return false;
+        }
+        int k = 4 * i;
+        double t = Intersect.sphereBefore(s.spheres[k], s.spheres[k + 1], s.spheres[k + 2], s.spheres[k + 3],
+                ox, oy, oz, dx, dy, dz, Intersect.MISS);
+        if (t == Intersect.MISS) {
+            return false;
+        }
+        hitT = t;
+        hitSphere = i;
+        return true;
     }
 
     private void nearestSphereIn(RenderScene s, int first, int end,
@@ -251,7 +291,7 @@ final class RayCaster {
     /** True when anything lies on the ray before distance tMax (any hit, not the nearest). */
     boolean occluded(RenderScene s, double ox, double oy, double oz, double dx, double dy, double dz, double tMax,
                      int skipSurface) {
-        skip = skipSurface;
+        skip = skipped(skipSurface);
         rays++;
         double[] planes = s.planes;
         for (int i = 0, n = s.planeCount; i < n; i++) {
@@ -326,7 +366,8 @@ final class RayCaster {
      * any hits; a product over all hits is rare enough to need neither).
      */
     double transmittance(RenderScene s, double ox, double oy, double oz, double dx, double dy, double dz,
-                         double tMax, int skipSurface) {
+                         double tMax, int skipCode) {
+        int skipSurface = skipped(skipCode);
         rays++;
         double pass = 1;
         double[] planes = s.planes;

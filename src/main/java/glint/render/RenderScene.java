@@ -41,6 +41,8 @@ public final class RenderScene {
     final int[] sphereMaterial;
     /** Hierarchy over the spheres (which are stored in its order), or null for few spheres. */
     final SphereBvh bvh;
+    /** Per sphere, whether nothing else reaches into it ({@link EmptySpheres}). */
+    final boolean[] sphereIsEmpty;
 
     // planes: unit normal x, y, z and offset n.p, 4 doubles each
     final int planeCount;
@@ -97,6 +99,7 @@ public final class RenderScene {
             put4(planes, i, p.normal(), p.normal().dot(p.point()));
             planeMaterial[i] = indexOf(materials, planeObjects.get(i).material());
         }
+        sphereIsEmpty = EmptySpheres.find(spheres, sphereCount, planes, planeCount, bvh);
 
         int m = materials.size();
         materialType = new int[m];
@@ -152,6 +155,7 @@ public final class RenderScene {
         spheres = base.spheres;
         sphereMaterial = base.sphereMaterial;
         bvh = base.bvh;
+        sphereIsEmpty = base.sphereIsEmpty;
         planeCount = base.planeCount;
         planes = base.planes;
         planeMaterial = base.planeMaterial;

@@ -166,6 +166,10 @@ final class TracerWorker {
         }
         double t = hit.hitT;
         double px = ox + t * dx, py = oy + t * dy, pz = oz + t * dz;
+        // the offset scales with |p|, taken before p is refined below: the refinement moves p by
+        // far less than a rounding step of the scale, and this way the square root runs alongside
+        // the normal's rather than after it
+        double offset = epsilon * atLeastOne(Math.sqrt(px * px + py * py + pz * pz));
         double nx, ny, nz;
         int material;
         if (hit.hitSphere >= 0) {
@@ -192,7 +196,6 @@ final class TracerWorker {
             pz -= off * nz;
             material = s.planeMaterial[hit.hitPlane];
         }
-        double offset = epsilon * atLeastOne(Math.sqrt(px * px + py * py + pz * pz));
         double cosIncident = -(dx * nx + dy * ny + dz * nz); // > 0 when the ray meets the front side
         boolean entering = cosIncident >= 0;
         if (!entering) {
@@ -202,10 +205,12 @@ final class TracerWorker {
             nz = -nz;
             cosIncident = -cosIncident;
         }
-        // rays spawned on the outer side of this surface leave it out of their tests
+        // rays spawned on the outer side of this surface leave it out of their tests; rays spawned
+        // inside a sphere say so, and need test only that sphere when nothing else reaches into it
         int self = RayCaster.surfaceId(hit.hitSphere, hit.hitPlane);
-        int skipNear = hit.hitPlane >= 0 || entering ? self : 0;
-        int skipFar = hit.hitPlane >= 0 || !entering ? self : 0;
+        boolean plane = hit.hitPlane >= 0;
+        int skipNear = plane || entering ? self : RayCaster.insideOf(hit.hitSphere);
+        int skipFar = plane || !entering ? self : RayCaster.insideOf(hit.hitSphere);
         if (phong) {
             shadePhong(material, px, py, pz, nx, ny, nz, dx, dy, dz, cosIncident, entering, offset, hitsLeft, weight,
                     skipNear, skipFar);
