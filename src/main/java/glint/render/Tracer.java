@@ -19,6 +19,9 @@ public final class Tracer implements AutoCloseable {
     private final ExecutorService pool;
     private final AtomicInteger nextTile = new AtomicInteger();
     private final AtomicReference<Throwable> failure = new AtomicReference<>();
+    /** The workers' tasks and the barrier a frame ends at, made once: a frame allocates nothing of its own. */
+    private final Runnable[] tasks;
+    private final Phaser frameDone;
 
     // the frame being rendered; written before the workers start, read by them
     private volatile RenderScene scene;
@@ -45,6 +48,12 @@ public final class Tracer implements AutoCloseable {
             return t;
         };
         this.pool = Executors.newFixedThreadPool(threads, factory);
+        this.frameDone = new Phaser(threads + 1);
+        this.tasks = new Runnable[threads];
+        for (int i = 0; i < threads; i++) {
+            TracerWorker worker = workers[i];
+            tasks[i] = () -> runWorker(worker);
+        }
     }
 
     /** Rays cast by all workers so far (camera, reflected, refracted and shadow rays). */
@@ -94,18 +103,17 @@ public final class Tracer implements AutoCloseable {
         this.divider = Math.max(1, Math.min(divider, Math.min(target.width(), target.height())));
         nextTile.set(0);
         failure.set(null);
-        Phaser done = new Phaser(threads + 1);
-        for (TracerWorker worker : workers) {
-            pool.execute(() -> runWorker(worker, done));
+        for (Runnable task : tasks) {
+            pool.execute(task);
         }
-        done.arriveAndAwaitAdvance();
+        frameDone.arriveAndAwaitAdvance();
         Throwable error = failure.get();
         if (error != null) {
             throw new RenderException("a render worker failed: " + error, error);
         }
     }
 
-    private void runWorker(TracerWorker worker, Phaser done) {
+    private void runWorker(TracerWorker worker) {
         try {
             int tiles = divider * divider;
             for (int tile = nextTile.getAndIncrement(); tile < tiles; tile = nextTile.getAndIncrement()) {
@@ -114,7 +122,7 @@ public final class Tracer implements AutoCloseable {
         } catch (Throwable t) {
             failure.compareAndSet(null, t);
         } finally {
-            done.arrive();
+            frameDone.arrive();
         }
     }
 
