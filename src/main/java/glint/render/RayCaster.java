@@ -54,15 +54,15 @@ final class RayCaster {
     }
 
     /** Nearest hit along the ray; sets hitT and hitSphere or hitPlane (the other is -1). */
-    boolean nearest(RenderScene s, double ox, double oy, double oz, double dx, double dy, double dz, int skipSurface) {
+    boolean nearest(RenderScene s, double ox, double oy, double oz, double dx, double dy, double dz, int skipCode) {
         rays++;
         hitT = Intersect.MISS;
         hitSphere = -1;
         hitPlane = -1;
-        if (skipSurface < INSIDE_END && leavesEmptySphere(s, skipSurface - INSIDE_BASE, ox, oy, oz, dx, dy, dz)) {
+        if (skipCode < INSIDE_END && leavesEmptySphere(s, skipCode - INSIDE_BASE, ox, oy, oz, dx, dy, dz)) {
             return true;
         }
-        skip = skipped(skipSurface);
+        skip = skipped(skipCode);
         if (s.bvh == null) {
             nearestSphereIn(s, 0, s.sphereCount, ox, oy, oz, dx, dy, dz);
         } else {
@@ -290,8 +290,8 @@ final class RayCaster {
 
     /** True when anything lies on the ray before distance tMax (any hit, not the nearest). */
     boolean occluded(RenderScene s, double ox, double oy, double oz, double dx, double dy, double dz, double tMax,
-                     int skipSurface) {
-        skip = skipped(skipSurface);
+                     int skipCode) {
+        skip = skipped(skipCode);
         rays++;
         double[] planes = s.planes;
         for (int i = 0, n = s.planeCount; i < n; i++) {
