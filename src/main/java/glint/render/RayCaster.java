@@ -174,6 +174,27 @@ final class RayCaster {
     private int[] eyeCandidates = new int[0];
     private int eyeCandidateCount;
 
+    // the camera-ray terms for the packet path ({@link CameraPackets}), valid after prepareEye and aimEye
+    double[] eyeToCentre() {
+        return eyeToCentre;
+    }
+
+    double[] eyeC() {
+        return eyeC;
+    }
+
+    double[] eyePlaneNumerator() {
+        return eyePlaneNumerator;
+    }
+
+    int[] eyeCandidates() {
+        return eyeCandidates;
+    }
+
+    int eyeCandidateCount() {
+        return eyeCandidateCount;
+    }
+
     /** Precomputes what every camera ray of a frame shares: they all start at the eye. */
     void prepareEye(RenderScene s) {
         if (s.bvh != null) {

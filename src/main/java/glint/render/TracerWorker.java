@@ -38,8 +38,13 @@ final class TracerWorker {
     // the direction Optics.refract writes
     private final double[] refracted = new double[3];
 
-    // unit directions of the current tile row's camera rays, 3 doubles a ray (grows, never shrinks)
-    private double[] rowDirections = new double[0];
+    // unit directions of the current tile row's camera rays, a coordinate an array (grow, never shrink)
+    private double[] rowDirX = new double[0], rowDirY = new double[0], rowDirZ = new double[0];
+    // radiance of the current tile row's camera rays, for the packet path (grow, never shrink)
+    private double[] rowR = new double[0], rowG = new double[0], rowB = new double[0];
+
+    /** Traces camera rays four at a time where the Vector API is loaded; null where it is not. */
+    private final CameraPackets packets = CameraPackets.load();
 
     /** Rays this worker has cast (camera, reflected, refracted and shadow rays). */
     long raysCast() {
@@ -69,14 +74,26 @@ final class TracerWorker {
         caster.prepareEye(renderScene);
         int side = (int) Math.round(Math.sqrt(samples));
         int rowRays = (x1 - x0) * sampleCount;
-        if (rowDirections.length < 3 * rowRays) {
-            rowDirections = new double[3 * rowRays];
+        if (rowDirX.length < rowRays) {
+            rowDirX = new double[rowRays];
+            rowDirY = new double[rowRays];
+            rowDirZ = new double[rowRays];
+        }
+        boolean inPackets = packets != null && settings.simd() && packets.handles(renderScene);
+        if (inPackets && rowR.length < rowRays) {
+            rowR = new double[rowRays];
+            rowG = new double[rowRays];
+            rowB = new double[rowRays];
         }
         // the tile's screen x range, then each row's y range (y grows downwards in pixels, upwards on screen)
         double xLow = x0 * screenScaleX + screenOffsetX, xHigh = x1 * screenScaleX + screenOffsetX;
         for (int y = y0; y < y1; y++) {
             caster.aimEye(renderScene, xLow, xHigh, (y + 1) * screenScaleY + screenOffsetY, y * screenScaleY + screenOffsetY);
             aimRow(frame.width(), y, x0, x1, side, firstSample, sampleCount, frameIndex);
+            if (inPackets) {
+                renderRowInPackets(frame, y, x0, x1, sampleCount);
+                continue;
+            }
             int ray = 0;
             for (int x = x0; x < x1; x++, ray += sampleCount) {
                 renderPixel(frame, x, y, side, ray, sampleCount);
@@ -85,7 +102,49 @@ final class TracerWorker {
     }
 
     /**
-     * Fills rowDirections with the camera-ray directions of pixels [x0, x1) of row y, sample after
+     * Traces the row's camera rays four at a time through {@link #packets}, one by one where a
+     * packet does not stay together, then averages each pixel's samples into the frame: the same
+     * sums in the same order as {@link #renderPixel}.
+     */
+    private void renderRowInPackets(FrameBuffer frame, int y, int x0, int x1, int sampleCount) {
+        int rays = (x1 - x0) * sampleCount;
+        int ray = 0;
+        for (; ray + CameraPackets.LANES <= rays; ray += CameraPackets.LANES) {
+            if (!packets.trace(scene, caster, rowDirX, rowDirY, rowDirZ, ray, rowR, rowG, rowB)) {
+                traceOneByOne(ray, ray + CameraPackets.LANES);
+            }
+        }
+        traceOneByOne(ray, rays);
+        ray = 0;
+        for (int x = x0; x < x1; x++) {
+            if (sampleCount == 1) {
+                frame.set(x, y, rowR[ray], rowG[ray], rowB[ray]);
+                ray++;
+                continue;
+            }
+            double sumR = 0, sumG = 0, sumB = 0;
+            for (int end = ray + sampleCount; ray < end; ray++) {
+                sumR += rowR[ray];
+                sumG += rowG[ray];
+                sumB += rowB[ray];
+            }
+            double inv = 1.0 / sampleCount;
+            frame.set(x, y, sumR * inv, sumG * inv, sumB * inv);
+        }
+    }
+
+    /** Traces camera rays [first, end) of the row one at a time, into the row's radiance. */
+    private void traceOneByOne(int first, int end) {
+        for (int ray = first; ray < end; ray++) {
+            cameraSample(ray);
+            rowR[ray] = outR;
+            rowG[ray] = outG;
+            rowB[ray] = outB;
+        }
+    }
+
+    /**
+     * Fills rowDirX/Y/Z with the camera-ray directions of pixels [x0, x1) of row y, sample after
      * sample: done for the whole row before any is traced, so that the square roots and divisions
      * of many rays overlap instead of each stalling the start of its own ray.
      */
@@ -116,13 +175,12 @@ final class TracerWorker {
         double dy = camera.forwardY + screenX * camera.rightY + screenY * camera.upY;
         double dz = camera.forwardZ + screenX * camera.rightZ + screenY * camera.upZ;
         double inv = 1 / Math.sqrt(dx * dx + dy * dy + dz * dz);
-        int i = 3 * ray;
-        rowDirections[i] = dx * inv;
-        rowDirections[i + 1] = dy * inv;
-        rowDirections[i + 2] = dz * inv;
+        rowDirX[ray] = dx * inv;
+        rowDirY[ray] = dy * inv;
+        rowDirZ[ray] = dz * inv;
     }
 
-    /** Traces the pixel's sampleCount camera rays, aimed from rowDirections[3 firstRay] on, into the frame. */
+    /** Traces the pixel's sampleCount camera rays, aimed from rowDirX/Y/Z[firstRay] on, into the frame. */
     private void renderPixel(FrameBuffer frame, int x, int y, int side, int firstRay, int sampleCount) {
         if (side == 1) {
             cameraSample(firstRay);
@@ -143,9 +201,7 @@ final class TracerWorker {
     /** Traces camera ray {@code ray} of the current row. */
     private void cameraSample(int ray) {
         CameraBasis camera = scene.camera;
-        int i = 3 * ray;
-        trace(camera.eyeX, camera.eyeY, camera.eyeZ, rowDirections[i], rowDirections[i + 1], rowDirections[i + 2],
-                recursionMax, 1, EYE);
+        trace(camera.eyeX, camera.eyeY, camera.eyeZ, rowDirX[ray], rowDirY[ray], rowDirZ[ray], recursionMax, 1, EYE);
     }
 
     /**

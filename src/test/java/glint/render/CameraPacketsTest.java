@@ -1,0 +1,134 @@
+package glint.render;
+
+import static org.junit.jupiter.api.Assertions.assertArrayEquals;
+import static org.junit.jupiter.api.Assertions.assertEquals;
+import static org.junit.jupiter.api.Assertions.assertNotNull;
+import static org.junit.jupiter.api.Assertions.assertTrue;
+
+import glint.config.Shading;
+import glint.input.InputException;
+import glint.scene.Scene;
+import glint.scene.SceneLimits;
+import glint.scene.SceneLoader;
+import java.io.IOException;
+import java.nio.file.Path;
+import java.util.Locale;
+import java.util.Random;
+import org.junit.jupiter.api.Test;
+import org.junit.jupiter.params.ParameterizedTest;
+import org.junit.jupiter.params.provider.ValueSource;
+
+/**
+ * The SIMD path (camera rays in packets of four through the Vector API; the test JVM loads the
+ * module) gives the plain path's image bit for bit and casts the same rays, wherever packets
+ * stay together and wherever they must fall back to single rays.
+ */
+class CameraPacketsTest {
+
+    @Test
+    void theVectorApiIsLoadedForTheTests() {
+        assertTrue(CameraPackets.available(), "surefire starts the test JVM with --add-modules jdk.incubator.vector");
+        assertNotNull(CameraPackets.load());
+    }
+
+    @ParameterizedTest
+    @ValueSource(ints = {1, 4, 9})
+    void theDefaultSceneIsTheSameAtAnySampleCount(int samples) throws IOException, InputException {
+        Scene scene = SceneLoader.load(Path.of("scenes/default.yaml"), SceneLimits.DEFAULT);
+        assertSameImage(scene, 161, 120, samples);
+    }
+
+    @Test
+    void severalLightsOfBothKindsOverlappingSpheresAndTouchingOnes() {
+        assertSameImage(Renders.scene("""
+                camera: {position: [0, 2, -7], look_at: [0, 0.8, 0], fov: 55}
+                lights:
+                  - {type: point, position: [-4, 6, -5], color: [1, 0.9, 0.8], intensity: 80}
+                  - {type: point, position: [3, 2, -1], color: [0.3, 0.4, 1], intensity: 20}
+                  - {type: directional, direction: [0.3, -1, 0.4], color: [1, 1, 1], intensity: 0.7}
+                objects:
+                  - {type: sphere, center: [-1, 1, 0], radius: 1, material: {type: matte, color: [0.8, 0.2, 0.2]}}
+                  - {type: sphere, center: [0.2, 1, 0.3], radius: 0.8, material: {type: matte, color: [0.2, 0.8, 0.2]}}
+                  - {type: sphere, center: [2, 0.5, -1], radius: 0.5, material: {type: metal, color: [0.9, 0.9, 0.9], roughness: 0.2}}
+                  - {type: sphere, center: [-2.5, 0.6, -1.5], radius: 0.6, material: {type: glass, ior: 1.5}}
+                  - {type: plane, point: [0, 0, 0], normal: [0, 1, 0], material: {type: matte, color: [0.6, 0.6, 0.6]}}
+                  - {type: plane, point: [0, 0, 4], normal: [0, 0, -1], material: {type: matte, color: [0.3, 0.3, 0.5]}}
+                """), 97, 64, 1);
+    }
+
+    @Test
+    void anEyeInsideASphereOrBelowTheFloorMeetsSurfacesFromBehind() {
+        String objects = """
+                lights: [{type: point, position: [0, 3, 0], color: [1, 1, 1], intensity: 30}]
+                objects:
+                  - {type: sphere, center: [0, 1, 0], radius: 6, material: {type: matte, color: [0.7, 0.7, 0.7]}}
+                  - {type: sphere, center: [1, 1, 2], radius: 0.7, material: {type: matte, color: [0.2, 0.3, 0.9]}}
+                  - {type: plane, point: [0, 0, 0], normal: [0, 1, 0], material: {type: matte, color: [0.5, 0.4, 0.3]}}
+                """;
+        assertSameImage(Renders.scene("camera: {position: [0, 1.5, -3], look_at: [1, 0.5, 2], fov: 70}\n" + objects),
+                80, 60, 1);
+        assertSameImage(Renders.scene("camera: {position: [0, -1, -3], look_at: [0, 1, 2], fov: 70}\n" + objects),
+                80, 60, 1);
+    }
+
+    @Test
+    void randomScenesOfUpToSixSpheres() {
+        Random random = new Random(20261122);
+        for (int scene = 0; scene < 24; scene++) {
+            assertSameImage(Renders.scene(randomScene(random)), 67, 50, scene % 3 == 0 ? 4 : 1);
+        }
+    }
+
+    /** A scene of 1 to 6 spheres (few enough to be searched one by one), a floor, 1 to 3 lights and a random camera. */
+    private static String randomScene(Random random) {
+        StringBuilder yaml = new StringBuilder();
+        yaml.append(String.format(Locale.ROOT, "camera: {position: [%s, %s, %s], look_at: [%s, %s, %s], fov: %d}%n",
+                coordinate(random, 6), 0.3 + 4 * random.nextDouble(), -4 - 4 * random.nextDouble(),
+                coordinate(random, 1), random.nextDouble(), coordinate(random, 1), 30 + random.nextInt(60)));
+        yaml.append("lights:\n");
+        for (int i = 0, n = 1 + random.nextInt(3); i < n; i++) {
+            if (random.nextInt(3) == 0) {
+                yaml.append(String.format(Locale.ROOT,
+                        "  - {type: directional, direction: [%s, -1, %s], color: [1, 1, 1], intensity: 1}%n",
+                        coordinate(random, 1), coordinate(random, 1)));
+            } else {
+                yaml.append(String.format(Locale.ROOT,
+                        "  - {type: point, position: [%s, %s, %s], color: [1, 1, 1], intensity: 60}%n",
+                        coordinate(random, 5), 1 + 6 * random.nextDouble(), coordinate(random, 5)));
+            }
+        }
+        yaml.append("objects:\n");
+        String[] materials = {"{type: matte, color: [0.7, 0.3, 0.2]}", "{type: matte, color: [0.2, 0.6, 0.8]}",
+                "{type: metal, color: [0.9, 0.8, 0.5], roughness: 0.1}", "{type: glass, ior: 1.5}"};
+        for (int i = 0, n = 1 + random.nextInt(6); i < n; i++) {
+            double radius = 0.2 + random.nextDouble();
+            yaml.append(String.format(Locale.ROOT, "  - {type: sphere, center: [%s, %s, %s], radius: %s, material: %s}%n",
+                    coordinate(random, 3), radius * random.nextDouble() * 2, coordinate(random, 3), radius,
+                    materials[random.nextInt(4) < 3 ? random.nextInt(2) : 2 + random.nextInt(2)]));
+        }
+        yaml.append("  - {type: plane, point: [0, 0, 0], normal: [0, 1, 0], material: {type: matte, color: [0.5, 0.5, 0.5]}}\n");
+        return yaml.toString();
+    }
+
+    private static double coordinate(Random random, double extent) {
+        return extent * (2 * random.nextDouble() - 1);
+    }
+
+    /** Renders the scene through both paths and compares every pixel and the ray counts. */
+    private static void assertSameImage(Scene scene, int width, int height, int samples) {
+        RenderSettings plain = new RenderSettings(Shading.COOK_TORRANCE, 5, 1e-3, Renders.EPSILON);
+        FrameBuffer expected = new FrameBuffer(width, height);
+        FrameBuffer actual = new FrameBuffer(width, height);
+        long plainRays, packetRays;
+        try (Tracer tracer = new Tracer(2)) {
+            tracer.render(RenderScene.compile(scene, plain), expected, samples, 0, 3);
+            plainRays = tracer.raysCast();
+        }
+        try (Tracer tracer = new Tracer(2)) {
+            tracer.render(RenderScene.compile(scene, plain.withSimd(true)), actual, samples, 0, 3);
+            packetRays = tracer.raysCast();
+        }
+        assertArrayEquals(expected.rgb(), actual.rgb());
+        assertEquals(plainRays, packetRays, "rays cast");
+    }
+}
