@@ -24,9 +24,6 @@ final class TracerWorker {
 
     private final RayCaster caster = new RayCaster();
 
-    // per frame: screen x = px * screenScaleX + screenOffsetX, likewise y
-    private double screenScaleX, screenOffsetX, screenScaleY, screenOffsetY;
-
     // radiance returned by trace()
     private double outR, outG, outB;
 
@@ -38,10 +35,8 @@ final class TracerWorker {
     // the direction Optics.refract writes
     private final double[] refracted = new double[3];
 
-    // unit directions of the current tile row's camera rays, a coordinate an array (grow, never shrink)
-    private double[] rowDirX = new double[0], rowDirY = new double[0], rowDirZ = new double[0];
-    // radiance of the current tile row's camera rays, for the packet path (grow, never shrink)
-    private double[] rowR = new double[0], rowG = new double[0], rowB = new double[0];
+    /** The current tile row's camera rays and their radiance. */
+    private final CameraRows rows = new CameraRows();
 
     /** Traces camera rays four at a time where the Vector API is loaded; null where it is not. */
     private final CameraPackets packets = CameraPackets.load();
@@ -64,144 +59,50 @@ final class TracerWorker {
         minWeight = settings.minWeight();
         phong = settings.shading() == Shading.PHONG;
         exactFresnel = settings.glassFresnel() == RenderSettings.GlassFresnel.EXACT;
-        // image point (px, py) in pixels -> screen (x, y) on the image plane at distance 1
-        double halfWidth = renderScene.camera.tanHalfFov;
-        double halfHeight = halfWidth * frame.height() / frame.width();
-        screenScaleX = 2 * halfWidth / frame.width();
-        screenOffsetX = -halfWidth;
-        screenScaleY = -2 * halfHeight / frame.height();
-        screenOffsetY = halfHeight;
+        int rowRays = (x1 - x0) * sampleCount;
+        rows.prepare(renderScene.camera, frame.width(), frame.height(), rowRays);
         caster.prepareEye(renderScene);
         int side = (int) Math.round(Math.sqrt(samples));
-        int rowRays = (x1 - x0) * sampleCount;
-        if (rowDirX.length < rowRays) {
-            rowDirX = new double[rowRays];
-            rowDirY = new double[rowRays];
-            rowDirZ = new double[rowRays];
-        }
         boolean inPackets = packets != null && settings.simd() && packets.handles(renderScene);
-        if (inPackets && rowR.length < rowRays) {
-            rowR = new double[rowRays];
-            rowG = new double[rowRays];
-            rowB = new double[rowRays];
-        }
         // the tile's screen x range, then each row's y range (y grows downwards in pixels, upwards on screen)
-        double xLow = x0 * screenScaleX + screenOffsetX, xHigh = x1 * screenScaleX + screenOffsetX;
+        double xLow = rows.screenX(x0), xHigh = rows.screenX(x1);
         for (int y = y0; y < y1; y++) {
-            caster.aimEye(renderScene, xLow, xHigh, (y + 1) * screenScaleY + screenOffsetY, y * screenScaleY + screenOffsetY);
-            aimRow(frame.width(), y, x0, x1, side, firstSample, sampleCount, frameIndex);
+            caster.aimEye(renderScene, xLow, xHigh, rows.screenY(y + 1), rows.screenY(y));
+            rows.aim(renderScene.camera, frame.width(), y, x0, x1, side, firstSample, sampleCount, frameIndex);
             if (inPackets) {
-                renderRowInPackets(frame, y, x0, x1, sampleCount);
-                continue;
+                traceInPackets(rowRays);
+            } else {
+                traceOneByOne(0, rowRays);
             }
-            int ray = 0;
-            for (int x = x0; x < x1; x++, ray += sampleCount) {
-                renderPixel(frame, x, y, side, ray, sampleCount);
-            }
+            rows.writeRow(frame, y, x0, x1, sampleCount);
         }
     }
 
     /**
-     * Traces the row's camera rays four at a time through {@link #packets}, one by one where a
-     * packet does not stay together, then averages each pixel's samples into the frame: the same
-     * sums in the same order as {@link #renderPixel}.
+     * Traces the row's camera rays [0, rays) four at a time through {@link #packets}, one by one
+     * where a packet does not stay together.
      */
-    private void renderRowInPackets(FrameBuffer frame, int y, int x0, int x1, int sampleCount) {
-        int rays = (x1 - x0) * sampleCount;
+    private void traceInPackets(int rays) {
+        CameraRows r = rows;
         int ray = 0;
         for (; ray + CameraPackets.LANES <= rays; ray += CameraPackets.LANES) {
-            if (!packets.trace(scene, caster, rowDirX, rowDirY, rowDirZ, ray, rowR, rowG, rowB)) {
+            if (!packets.trace(scene, caster, r.dirX, r.dirY, r.dirZ, ray, r.radianceR, r.radianceG, r.radianceB)) {
                 traceOneByOne(ray, ray + CameraPackets.LANES);
             }
         }
         traceOneByOne(ray, rays);
-        ray = 0;
-        for (int x = x0; x < x1; x++) {
-            if (sampleCount == 1) {
-                frame.set(x, y, rowR[ray], rowG[ray], rowB[ray]);
-                ray++;
-                continue;
-            }
-            double sumR = 0, sumG = 0, sumB = 0;
-            for (int end = ray + sampleCount; ray < end; ray++) {
-                sumR += rowR[ray];
-                sumG += rowG[ray];
-                sumB += rowB[ray];
-            }
-            double inv = 1.0 / sampleCount;
-            frame.set(x, y, sumR * inv, sumG * inv, sumB * inv);
-        }
     }
 
     /** Traces camera rays [first, end) of the row one at a time, into the row's radiance. */
     private void traceOneByOne(int first, int end) {
+        CameraRows r = rows;
+        CameraBasis camera = scene.camera;
         for (int ray = first; ray < end; ray++) {
-            cameraSample(ray);
-            rowR[ray] = outR;
-            rowG[ray] = outG;
-            rowB[ray] = outB;
+            trace(camera.eyeX, camera.eyeY, camera.eyeZ, r.dirX[ray], r.dirY[ray], r.dirZ[ray], recursionMax, 1, EYE);
+            r.radianceR[ray] = outR;
+            r.radianceG[ray] = outG;
+            r.radianceB[ray] = outB;
         }
-    }
-
-    /**
-     * Fills rowDirX/Y/Z with the camera-ray directions of pixels [x0, x1) of row y, sample after
-     * sample: done for the whole row before any is traced, so that the square roots and divisions
-     * of many rays overlap instead of each stalling the start of its own ray.
-     */
-    private void aimRow(int width, int y, int x0, int x1, int side, int firstSample, int sampleCount,
-                        int frameIndex) {
-        int ray = 0;
-        for (int x = x0; x < x1; x++) {
-            if (side == 1) {
-                aim(ray++, x + 0.5, y + 0.5);
-                continue;
-            }
-            int pixelIndex = y * width + x;
-            for (int sample = firstSample, end = firstSample + sampleCount; sample < end; sample++) {
-                int cellX = sample % side, cellY = sample / side;
-                long h = SamplePattern.hash(pixelIndex, frameIndex, sample);
-                aim(ray++, x + (cellX + SamplePattern.jitterU(h)) / side,
-                        y + (cellY + SamplePattern.jitterV(h)) / side);
-            }
-        }
-    }
-
-    /** Stores the unit direction of the camera ray through image point (px, py), in pixels from the top-left. */
-    private void aim(int ray, double px, double py) {
-        CameraBasis camera = scene.camera;
-        double screenX = px * screenScaleX + screenOffsetX;
-        double screenY = py * screenScaleY + screenOffsetY;
-        double dx = camera.forwardX + screenX * camera.rightX + screenY * camera.upX;
-        double dy = camera.forwardY + screenX * camera.rightY + screenY * camera.upY;
-        double dz = camera.forwardZ + screenX * camera.rightZ + screenY * camera.upZ;
-        double inv = 1 / Math.sqrt(dx * dx + dy * dy + dz * dz);
-        rowDirX[ray] = dx * inv;
-        rowDirY[ray] = dy * inv;
-        rowDirZ[ray] = dz * inv;
-    }
-
-    /** Traces the pixel's sampleCount camera rays, aimed from rowDirX/Y/Z[firstRay] on, into the frame. */
-    private void renderPixel(FrameBuffer frame, int x, int y, int side, int firstRay, int sampleCount) {
-        if (side == 1) {
-            cameraSample(firstRay);
-            frame.set(x, y, outR, outG, outB);
-            return;
-        }
-        double sumR = 0, sumG = 0, sumB = 0;
-        for (int ray = firstRay, end = firstRay + sampleCount; ray < end; ray++) {
-            cameraSample(ray);
-            sumR += outR;
-            sumG += outG;
-            sumB += outB;
-        }
-        double inv = 1.0 / sampleCount;
-        frame.set(x, y, sumR * inv, sumG * inv, sumB * inv);
-    }
-
-    /** Traces camera ray {@code ray} of the current row. */
-    private void cameraSample(int ray) {
-        CameraBasis camera = scene.camera;
-        trace(camera.eyeX, camera.eyeY, camera.eyeZ, rowDirX[ray], rowDirY[ray], rowDirZ[ray], recursionMax, 1, EYE);
     }
 
     /**
