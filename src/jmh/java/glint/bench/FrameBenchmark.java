@@ -1,11 +1,7 @@
 package glint.bench;
 
-import glint.config.Shading;
 import glint.input.InputException;
 import glint.render.FrameBuffer;
-import glint.render.RenderScene;
-import glint.render.RenderSettings;
-import glint.render.Tracer;
 import glint.scene.SceneLoader;
 import java.util.concurrent.TimeUnit;
 import org.openjdk.jmh.annotations.Benchmark;
@@ -43,26 +39,21 @@ public class FrameBenchmark {
     @Param({"matte", "glass"})
     public String material;
 
-    private RenderScene scene;
-    private FrameBuffer frame;
-    private Tracer tracer;
+    private BenchFrames frames;
 
     @Setup(Level.Trial)
     public void setUp() throws InputException {
-        scene = RenderScene.compile(SceneLoader.parse("bench", BenchScenes.row(spheres, material)),
-                new RenderSettings(Shading.COOK_TORRANCE, 5, 1e-3, 1e-9));
-        frame = new FrameBuffer(800, 600);
-        tracer = new Tracer(threads);
+        frames = new BenchFrames(SceneLoader.parse("bench", BenchScenes.row(spheres, material)), BenchFrames.SETTINGS,
+                threads);
     }
 
     @TearDown(Level.Trial)
     public void tearDown() {
-        tracer.close();
+        frames.close();
     }
 
     @Benchmark
     public FrameBuffer renderFrame() {
-        tracer.render(scene, frame, 1, 0, 8);
-        return frame;
+        return frames.render();
     }
 }

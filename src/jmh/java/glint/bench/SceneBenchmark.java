@@ -1,11 +1,7 @@
 package glint.bench;
 
-import glint.config.Shading;
 import glint.input.InputException;
 import glint.render.FrameBuffer;
-import glint.render.RenderScene;
-import glint.render.RenderSettings;
-import glint.render.Tracer;
 import glint.scene.SceneLoader;
 import java.nio.file.Path;
 import java.util.concurrent.TimeUnit;
@@ -42,9 +38,7 @@ public class SceneBenchmark {
     @Param({"1", "2"})
     public int threads;
 
-    private RenderScene compiled;
-    private FrameBuffer frame;
-    private Tracer tracer;
+    private BenchFrames frames;
 
     @Setup(Level.Trial)
     public void setUp() throws InputException {
@@ -53,20 +47,17 @@ public class SceneBenchmark {
             case "field-1000" -> BenchScenes.field(1000);
             default -> null;
         };
-        compiled = RenderScene.compile(text == null ? SceneLoader.load(Path.of("scenes/default.yaml"))
-                : SceneLoader.parse(scene, text), new RenderSettings(Shading.COOK_TORRANCE, 5, 1e-3, 1e-9));
-        frame = new FrameBuffer(800, 600);
-        tracer = new Tracer(threads);
+        frames = new BenchFrames(text == null ? SceneLoader.load(Path.of("scenes/default.yaml"))
+                : SceneLoader.parse(scene, text), BenchFrames.SETTINGS, threads);
     }
 
     @TearDown(Level.Trial)
     public void tearDown() {
-        tracer.close();
+        frames.close();
     }
 
     @Benchmark
     public FrameBuffer renderFrame() {
-        tracer.render(compiled, frame, 1, 0, 8);
-        return frame;
+        return frames.render();
     }
 }

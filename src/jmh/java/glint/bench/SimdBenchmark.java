@@ -1,11 +1,8 @@
 package glint.bench;
 
-import glint.config.Shading;
 import glint.input.InputException;
 import glint.render.FrameBuffer;
-import glint.render.RenderScene;
-import glint.render.RenderSettings;
-import glint.render.Tracer;
+import glint.scene.Scene;
 import glint.scene.SceneLoader;
 import java.nio.file.Path;
 import java.util.concurrent.TimeUnit;
@@ -42,27 +39,22 @@ public class SimdBenchmark {
     @Param({"plain", "simd"})
     public String path;
 
-    private RenderScene compiled;
-    private FrameBuffer frame;
-    private Tracer tracer;
+    private BenchFrames frames;
 
     @Setup(Level.Trial)
     public void setUp() throws InputException {
-        RenderSettings settings = new RenderSettings(Shading.COOK_TORRANCE, 5, 1e-3, 1e-9).withSimd(path.equals("simd"));
-        compiled = RenderScene.compile(scene.equals("default") ? SceneLoader.load(Path.of("scenes/default.yaml"))
-                : SceneLoader.parse(scene, BenchScenes.row(5, "matte")), settings);
-        frame = new FrameBuffer(800, 600);
-        tracer = new Tracer(2);
+        Scene rendered = scene.equals("default") ? SceneLoader.load(Path.of("scenes/default.yaml"))
+                : SceneLoader.parse(scene, BenchScenes.row(5, "matte"));
+        frames = new BenchFrames(rendered, BenchFrames.SETTINGS.withSimd(path.equals("simd")), 2);
     }
 
     @TearDown(Level.Trial)
     public void tearDown() {
-        tracer.close();
+        frames.close();
     }
 
     @Benchmark
     public FrameBuffer renderFrame() {
-        tracer.render(compiled, frame, 1, 0, 8);
-        return frame;
+        return frames.render();
     }
 }

@@ -1,0 +1,37 @@
+package glint.bench;
+
+import glint.config.Shading;
+import glint.render.FrameBuffer;
+import glint.render.RenderScene;
+import glint.render.RenderSettings;
+import glint.render.Tracer;
+import glint.scene.Scene;
+
+/**
+ * What the frame benchmarks render with: a compiled scene, an 800x600 frame and a tracer, one
+ * sample per pixel in 8 x 8 tiles, depth 5, cook-torrance, min_weight 0.001, epsilon 1e-9.
+ */
+final class BenchFrames implements AutoCloseable {
+
+    static final RenderSettings SETTINGS = new RenderSettings(Shading.COOK_TORRANCE, 5, 1e-3, 1e-9);
+
+    private final RenderScene scene;
+    private final FrameBuffer frame = new FrameBuffer(800, 600);
+    private final Tracer tracer;
+
+    BenchFrames(Scene scene, RenderSettings settings, int threads) {
+        this.scene = RenderScene.compile(scene, settings);
+        this.tracer = new Tracer(threads);
+    }
+
+    /** Renders one frame; the frame is returned so that JMH keeps the work. */
+    FrameBuffer render() {
+        tracer.render(scene, frame, 1, 0, 8);
+        return frame;
+    }
+
+    @Override
+    public void close() {
+        tracer.close();
+    }
+}
