@@ -1,12 +1,12 @@
 package glint.render;
 
-import static jdk.incubator.vector.VectorOperators.EQ;
 import static jdk.incubator.vector.VectorOperators.GE;
 import static jdk.incubator.vector.VectorOperators.GT;
 import static jdk.incubator.vector.VectorOperators.LT;
 import static jdk.incubator.vector.VectorOperators.NE;
 
 import glint.config.Shading;
+import java.util.Arrays;
 import jdk.incubator.vector.DoubleVector;
 import jdk.incubator.vector.VectorMask;
 import jdk.incubator.vector.VectorSpecies;
@@ -68,9 +68,9 @@ final class VectorCameraPackets implements CameraPackets {
         if (s.materialType[material] != RenderScene.MATTE || !surfacePoints(s, sphere, plane, dirX, dirY, dirZ, first)) {
             return false;
         }
-        java.util.Arrays.fill(sumR, 0);
-        java.util.Arrays.fill(sumG, 0);
-        java.util.Arrays.fill(sumB, 0);
+        Arrays.fill(sumR, 0);
+        Arrays.fill(sumG, 0);
+        Arrays.fill(sumB, 0);
         for (int light = 0; light < s.lightCount; light++) {
             if (aimShadowRays(s, light)) {
                 eye.rays += shadowRayCount();
@@ -201,9 +201,9 @@ final class VectorCameraPackets implements CameraPackets {
         px.sub(off.mul(nx)).intoArray(pointX, 0);
         py.sub(off.mul(ny)).intoArray(pointY, 0);
         pz.sub(off.mul(nz)).intoArray(pointZ, 0);
-        java.util.Arrays.fill(normalX, nx);
-        java.util.Arrays.fill(normalY, ny);
-        java.util.Arrays.fill(normalZ, nz);
+        Arrays.fill(normalX, nx);
+        Arrays.fill(normalY, ny);
+        Arrays.fill(normalZ, nz);
     }
 
     /** Whether every ray meets the surface from its front: -(d.n) >= 0. */
@@ -254,12 +254,12 @@ final class VectorCameraPackets implements CameraPackets {
     /** Along directional light i: its direction, no distance limit, no falloff. */
     private void alongDirection(RenderScene s, int light) {
         int j = 3 * light;
-        java.util.Arrays.fill(toLightX, s.lightVector[j]);
-        java.util.Arrays.fill(toLightY, s.lightVector[j + 1]);
-        java.util.Arrays.fill(toLightZ, s.lightVector[j + 2]);
-        java.util.Arrays.fill(lightDistance, Double.POSITIVE_INFINITY);
-        java.util.Arrays.fill(falloff, 1);
-        java.util.Arrays.fill(shadowLanes, 1);
+        Arrays.fill(toLightX, s.lightVector[j]);
+        Arrays.fill(toLightY, s.lightVector[j + 1]);
+        Arrays.fill(toLightZ, s.lightVector[j + 2]);
+        Arrays.fill(lightDistance, Double.POSITIVE_INFINITY);
+        Arrays.fill(falloff, 1);
+        Arrays.fill(shadowLanes, 1);
     }
 
     private int shadowRayCount() {
