@@ -8,8 +8,6 @@ package glint.render;
  */
 final class RayCaster {
 
-    private static final int STACK_DEPTH = 128;
-
     /** Distance to the last nearest hit. */
     double hitT;
     /** The sphere of the last nearest hit, or -1. */
@@ -20,9 +18,10 @@ final class RayCaster {
     /** Rays cast so far (nearest and shadow queries), for rays-per-second figures. */
     long rays;
 
-    private final int[] stack = new int[STACK_DEPTH];
+    /** Nodes a traversal will visit later; grown to the deepest hierarchy seen. */
+    private int[] stack = new int[64];
     /** Where the ray enters the box of each node on the nearest-hit stack, found when it was pushed. */
-    private final double[] stackEntry = new double[STACK_DEPTH];
+    private double[] stackEntry = new double[64];
 
     /** The surface the current query ignores (see {@link #surfaceId}); 0 = none. */
     private int skip;
@@ -65,9 +64,16 @@ final class RayCaster {
         skip = skipped(skipCode);
         if (s.bvh == null) {
             nearestSphereIn(s, 0, s.sphereCount, ox, oy, oz, dx, dy, dz);
+            nearestPlane(s, ox, oy, oz, dx, dy, dz);
         } else {
+            // the planes first: their distance bounds the search of the hierarchy
+            nearestPlane(s, ox, oy, oz, dx, dy, dz);
             nearestSphereInBvh(s, ox, oy, oz, dx, dy, dz);
         }
+        return hitT < Intersect.MISS;
+    }
+
+    private void nearestPlane(RenderScene s, double ox, double oy, double oz, double dx, double dy, double dz) {
         double[] planes = s.planes;
         for (int i = 0, n = s.planeCount; i < n; i++) {
             if (-(i + 1) == skip) {
@@ -82,7 +88,6 @@ final class RayCaster {
                 hitSphere = -1;
             }
         }
-        return hitT < Intersect.MISS;
     }
 
     /**
@@ -118,6 +123,7 @@ final class RayCaster {
             if (t < hitT) {
                 hitT = t;
                 hitSphere = i;
+                hitPlane = -1;
             }
         }
     }
@@ -125,32 +131,44 @@ final class RayCaster {
     private void nearestSphereInBvh(RenderScene s, double ox, double oy, double oz,
                                     double dx, double dy, double dz) {
         SphereBvh bvh = s.bvh;
+        double[] bounds = bvh.bounds;
+        int[] links = bvh.links;
+        fitStack(bvh);
         double ix = 1 / nonZero(dx), iy = 1 / nonZero(dy), iz = 1 / nonZero(dz);
+        if (boxEntry(bounds, 0, ox, oy, oz, ix, iy, iz) >= hitT) {
+            return;
+        }
+        int node = 0;
         int top = 0;
-        stack[top] = 0;
-        stackEntry[top++] = boxEntry(bvh.bounds, 0, ox, oy, oz, ix, iy, iz);
-        while (top > 0) {
-            int node = stack[--top];
-            // a nearer hit may have been found since the node was pushed
-            if (stackEntry[top] >= hitT) {
-                continue;
-            }
-            int count = bvh.links[2 * node + 1];
-            int link = bvh.links[2 * node];
+        while (true) {
+            int link = links[2 * node];
+            int count = links[2 * node + 1];
             if (count > 0) {
                 nearestSphereIn(s, link, link + count, ox, oy, oz, dx, dy, dz);
-                continue;
-            }
-            // visit the nearer child first: push it last
-            double left = boxEntry(bvh.bounds, link, ox, oy, oz, ix, iy, iz);
-            double right = boxEntry(bvh.bounds, link + 1, ox, oy, oz, ix, iy, iz);
-            if (left <= right) {
-                top = pushIfBefore(top, link + 1, right);
-                top = pushIfBefore(top, link, left);
             } else {
-                top = pushIfBefore(top, link, left);
-                top = pushIfBefore(top, link + 1, right);
+                double left = boxEntry(bounds, link, ox, oy, oz, ix, iy, iz);
+                double right = boxEntry(bounds, link + 1, ox, oy, oz, ix, iy, iz);
+                boolean hitsLeft = left < hitT, hitsRight = right < hitT;
+                if (hitsLeft && hitsRight) {
+                    // go on with the nearer child; the farther waits on the stack
+                    boolean leftFirst = left <= right;
+                    stack[top] = leftFirst ? link + 1 : link;
+                    stackEntry[top++] = leftFirst ? right : left;
+                    node = leftFirst ? link : link + 1;
+                    continue;
+                }
+                if (hitsLeft || hitsRight) {
+                    node = hitsLeft ? link : link + 1;
+                    continue;
+                }
             }
+            // a nearer hit may have been found since a node was pushed
+            do {
+                if (top == 0) {
+                    return;
+                }
+                node = stack[--top];
+            } while (stackEntry[top] >= hitT);
         }
     }
 
@@ -346,39 +364,56 @@ final class RayCaster {
         return false;
     }
 
-    /** Pushes the node with its box entry distance when that comes before the nearest hit so far; returns the new top. */
-    private int pushIfBefore(int top, int node, double entry) {
-        if (entry < hitT) {
-            stack[top] = node;
-            stackEntry[top] = entry;
-            return top + 1;
+    /**
+     * Makes room on the stack for a traversal of this hierarchy: it descends into one child and
+     * keeps at most the other waiting, one node per level.
+     */
+    private void fitStack(SphereBvh bvh) {
+        if (stack.length < bvh.depth) {
+            stack = new int[bvh.depth];
+            stackEntry = new double[bvh.depth];
         }
-        return top;
     }
 
     private boolean anySphereInBvh(RenderScene s, double ox, double oy, double oz,
                                    double dx, double dy, double dz, double tMax) {
         SphereBvh bvh = s.bvh;
+        double[] bounds = bvh.bounds;
+        int[] links = bvh.links;
+        fitStack(bvh);
         double ix = 1 / nonZero(dx), iy = 1 / nonZero(dy), iz = 1 / nonZero(dz);
+        if (boxEntry(bounds, 0, ox, oy, oz, ix, iy, iz) >= tMax) {
+            return false;
+        }
+        int node = 0;
         int top = 0;
-        stack[top++] = 0;
-        while (top > 0) {
-            int node = stack[--top];
-            if (boxEntry(bvh.bounds, node, ox, oy, oz, ix, iy, iz) >= tMax) {
-                continue;
-            }
-            int count = bvh.links[2 * node + 1];
-            int link = bvh.links[2 * node];
+        while (true) {
+            int link = links[2 * node];
+            int count = links[2 * node + 1];
             if (count > 0) {
                 if (anySphereIn(s, link, link + count, ox, oy, oz, dx, dy, dz, tMax)) {
                     return true;
                 }
             } else {
-                stack[top++] = link + 1;
-                stack[top++] = link;
+                boolean hitsLeft = boxEntry(bounds, link, ox, oy, oz, ix, iy, iz) < tMax;
+                boolean hitsRight = boxEntry(bounds, link + 1, ox, oy, oz, ix, iy, iz) < tMax;
+                if (hitsLeft) {
+                    if (hitsRight) {
+                        stack[top++] = link + 1;
+                    }
+                    node = link;
+                    continue;
+                }
+                if (hitsRight) {
+                    node = link + 1;
+                    continue;
+                }
             }
+            if (top == 0) {
+                return false;
+            }
+            node = stack[--top];
         }
-        return false;
     }
 
     /**

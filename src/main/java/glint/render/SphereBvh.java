@@ -21,6 +21,8 @@ final class SphereBvh {
      */
     final int[] links;
     final int nodeCount;
+    /** Levels below the root on the longest path to a leaf: a traversal keeps at most this many nodes waiting. */
+    final int depth;
     /** The sphere order the arrays were rearranged into: position i holds the old sphere order[i]. */
     final int[] order;
 
@@ -46,7 +48,7 @@ final class SphereBvh {
         bounds = new double[6 * maxNodes];
         links = new int[2 * maxNodes];
         used = 1;
-        build(0, 0, count);
+        depth = build(0, 0, count);
         nodeCount = used;
     }
 
@@ -55,11 +57,12 @@ final class SphereBvh {
         return new SphereBvh(spheres, count);
     }
 
-    private void build(int node, int first, int count) {
+    /** Builds the subtree of {@code node} over spheres [first, first + count); returns its depth. */
+    private int build(int node, int first, int count) {
         fitBounds(node, first, count);
         if (count <= LEAF_SIZE) {
             makeLeaf(node, first, count);
-            return;
+            return 0;
         }
         int axis = widestCentroidAxis(first, count);
         int split = partition(first, count, axis);
@@ -71,8 +74,9 @@ final class SphereBvh {
         used += 2;
         links[2 * node] = left;
         links[2 * node + 1] = 0;
-        build(left, first, split - first);
-        build(left + 1, split, first + count - split);
+        int leftDepth = build(left, first, split - first);
+        int rightDepth = build(left + 1, split, first + count - split);
+        return 1 + Math.max(leftDepth, rightDepth);
     }
 
     private void makeLeaf(int node, int first, int count) {
