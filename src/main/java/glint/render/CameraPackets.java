@@ -22,7 +22,7 @@ interface CameraPackets {
 
     /**
      * Traces camera rays [first, first + 4) of a row, aimed along dirX/Y/Z and after
-     * {@link RayCaster#aimEye} for a screen rectangle holding them, into radianceR/G/B at the same
+     * {@link EyeRays#aimRow} for the row holding them, into radianceR/G/B at the same
      * indices; returns false, having written nothing, when the packet does not stay together.
      */
     boolean trace(RenderScene scene, RayCaster eye, double[] dirX, double[] dirY, double[] dirZ, int first,

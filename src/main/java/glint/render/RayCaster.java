@@ -172,151 +172,73 @@ final class RayCaster {
         }
     }
 
-    // camera-ray constants of the current frame: per sphere f = eye - centre and f.f - r^2, per
-    // plane offset - n.eye (only for scenes searched sphere by sphere)
-    private double[] eyeToCentre = new double[0];
-    private double[] eyeC = new double[0];
-    private double[] eyePlaneNumerator = new double[0];
+    /** The camera rays' shared terms and the spheres each pixel can show. */
+    final EyeRays eye = new EyeRays();
 
     /**
-     * Widening of a sphere's screen range, relative to its size: far above the rounding of the
-     * range, of a camera ray's direction and of the sphere test (all near 1e-16), so a ray outside
-     * the widened range certainly misses; far below a pixel, so it culls nearly as much as the range.
+     * A camera ray whose pixel can show more spheres than this searches the hierarchy instead,
+     * where the scene has one: past this, a sphere test each costs more than the search.
      */
-    private static final double SCREEN_MARGIN = 1e-6;
+    static final int MOST_SPHERES_SWEPT = 12;
 
-    // per sphere, the screen x range then the screen y range (image plane at distance 1) outside
-    // which no camera ray meets it, widened by SCREEN_MARGIN; infinite unless it is wholly in front
-    private double[] eyeScreenRange = new double[0];
-    // the spheres that camera rays of the current screen rectangle may meet, in scene order
-    private int[] eyeCandidates = new int[0];
-    private int eyeCandidateCount;
-
-    // the camera-ray terms for the packet path ({@link CameraPackets}), valid after prepareEye and aimEye
+    // the camera-ray terms for the packet path ({@link CameraPackets}), valid for the current row
     double[] eyeToCentre() {
-        return eyeToCentre;
+        return eye.toCentre;
     }
 
     double[] eyeC() {
-        return eyeC;
+        return eye.c;
     }
 
     double[] eyePlaneNumerator() {
-        return eyePlaneNumerator;
+        return eye.planeNumerator;
     }
 
     int[] eyeCandidates() {
-        return eyeCandidates;
+        return eye.rowSpheres;
     }
 
     int eyeCandidateCount() {
-        return eyeCandidateCount;
-    }
-
-    /** Precomputes what every camera ray of a frame shares: they all start at the eye. */
-    void prepareEye(RenderScene s) {
-        if (s.bvh != null) {
-            return;
-        }
-        if (eyeC.length < s.sphereCount) {
-            eyeC = new double[s.sphereCount];
-            eyeToCentre = new double[3 * s.sphereCount];
-            eyeScreenRange = new double[4 * s.sphereCount];
-            eyeCandidates = new int[s.sphereCount];
-        }
-        if (eyePlaneNumerator.length < s.planeCount) {
-            eyePlaneNumerator = new double[s.planeCount];
-        }
-        double[] spheres = s.spheres;
-        for (int i = 0; i < s.sphereCount; i++) {
-            double fx = s.camera.eyeX - spheres[4 * i], fy = s.camera.eyeY - spheres[4 * i + 1], fz = s.camera.eyeZ - spheres[4 * i + 2];
-            double r = spheres[4 * i + 3];
-            eyeToCentre[3 * i] = fx;
-            eyeToCentre[3 * i + 1] = fy;
-            eyeToCentre[3 * i + 2] = fz;
-            eyeC[i] = fx * fx + fy * fy + fz * fz - r * r;
-            // the centre in camera space: across (right), up and along (forward) the view
-            CameraBasis camera = s.camera;
-            double across = -(fx * camera.rightX + fy * camera.rightY + fz * camera.rightZ);
-            double up = -(fx * camera.upX + fy * camera.upY + fz * camera.upZ);
-            double along = -(fx * camera.forwardX + fy * camera.forwardY + fz * camera.forwardZ);
-            screenRange(across, along, r, eyeScreenRange, 4 * i);
-            screenRange(up, along, r, eyeScreenRange, 4 * i + 2);
-        }
-        eyeCandidateCount = 0;
-        double[] planes = s.planes;
-        for (int i = 0; i < s.planeCount; i++) {
-            int k = 4 * i;
-            eyePlaneNumerator[i] = planes[k + 3] - (planes[k] * s.camera.eyeX + planes[k + 1] * s.camera.eyeY + planes[k + 2] * s.camera.eyeZ);
-        }
+        return eye.rowCount;
     }
 
     /**
-     * Writes to out[at], out[at + 1] the range of screen coordinate a / z over a sphere whose centre
-     * is at (a, z) in a plane through the eye (a across, z along the view), widened by the margin;
-     * the whole line when the sphere is not wholly in front of the eye. The ends are the planes
-     * through the eye tangent to the sphere: |a - s z| = r sqrt(1 + s^2).
-     */
-    private static void screenRange(double a, double z, double r, double[] out, int at) {
-        double denominator = z * z - r * r;
-        if (!(z > r) || !(denominator > 0)) {
-            out[at] = Double.NEGATIVE_INFINITY;
-            out[at + 1] = Double.POSITIVE_INFINITY;
-            return;
-        }
-        double root = r * Math.sqrt(a * a + denominator);
-        double low = (a * z - root) / denominator, high = (a * z + root) / denominator;
-        double margin = SCREEN_MARGIN * (1 + Math.abs(low) + Math.abs(high));
-        out[at] = low - margin;
-        out[at + 1] = high + margin;
-    }
-
-    /**
-     * Keeps for the camera rays to come only the spheres whose screen range meets the rectangle
-     * [xLow, xHigh] x [yLow, yHigh] (screen coordinates, after {@link #prepareEye}): the others
-     * would be tested and missed by every one of those rays.
-     */
-    void aimEye(RenderScene s, double xLow, double xHigh, double yLow, double yHigh) {
-        if (s.bvh != null) {
-            return;
-        }
-        int count = 0;
-        for (int i = 0; i < s.sphereCount; i++) {
-            int k = 4 * i;
-            if (eyeScreenRange[k] <= xHigh && eyeScreenRange[k + 1] >= xLow
-                    && eyeScreenRange[k + 2] <= yHigh && eyeScreenRange[k + 3] >= yLow) {
-                eyeCandidates[count++] = i;
-            }
-        }
-        eyeCandidateCount = count;
-    }
-
-    /**
-     * {@link #nearest} for a camera ray (from the eye, after {@link #prepareEye} and {@link #aimEye}
-     * for a screen rectangle holding the ray).
+     * {@link #nearest} for a camera ray: from the eye, through the pixel {@link EyeRays#aimPixel}
+     * was last given.
      */
     boolean nearestFromEye(RenderScene s, double dx, double dy, double dz) {
-        if (s.bvh != null) {
-            return nearest(s, s.camera.eyeX, s.camera.eyeY, s.camera.eyeZ, dx, dy, dz, 0);
+        EyeRays e = eye;
+        if (e.pixelCount > MOST_SPHERES_SWEPT && s.bvh != null) {
+            return nearestFromEyeInBvh(s, dx, dy, dz);
         }
         rays++;
         hitT = Intersect.MISS;
         hitSphere = -1;
         hitPlane = -1;
-        double[] spheres = s.spheres;
-        for (int j = 0, n = eyeCandidateCount; j < n; j++) {
-            int i = eyeCandidates[j];
-            double t = Intersect.sphereFrom(eyeToCentre[3 * i], eyeToCentre[3 * i + 1], eyeToCentre[3 * i + 2],
-                    eyeC[i], spheres[4 * i + 3], dx, dy, dz, hitT);
+        double[] spheres = s.spheres, toCentre = e.toCentre, c = e.c;
+        int[] candidates = e.pixelSpheres;
+        for (int j = 0, n = e.pixelCount; j < n; j++) {
+            int i = candidates[j];
+            double t = Intersect.sphereFrom(toCentre[3 * i], toCentre[3 * i + 1], toCentre[3 * i + 2],
+                    c[i], spheres[4 * i + 3], dx, dy, dz, hitT);
             if (t < hitT) {
                 hitT = t;
                 hitSphere = i;
             }
         }
-        double[] planes = s.planes;
+        nearestPlaneFromEye(s, dx, dy, dz);
+        return hitT < Intersect.MISS;
+    }
+
+    private boolean nearestFromEyeInBvh(RenderScene s, double dx, double dy, double dz) {
+        return nearest(s, s.camera.eyeX, s.camera.eyeY, s.camera.eyeZ, dx, dy, dz, 0);
+    }
+
+    private void nearestPlaneFromEye(RenderScene s, double dx, double dy, double dz) {
+        double[] planes = s.planes, numerators = eye.planeNumerator;
         for (int i = 0, n = s.planeCount; i < n; i++) {
             int k = 4 * i;
-            double t = Intersect.planeFrom(eyePlaneNumerator[i], planes[k] * dx + planes[k + 1] * dy + planes[k + 2] * dz,
+            double t = Intersect.planeFrom(numerators[i], planes[k] * dx + planes[k + 1] * dy + planes[k + 2] * dz,
                     hitT);
             if (t < hitT) {
                 hitT = t;
@@ -324,7 +246,6 @@ final class RayCaster {
                 hitSphere = -1;
             }
         }
-        return hitT < Intersect.MISS;
     }
 
     /** True when anything lies on the ray before distance tMax (any hit, not the nearest). */

@@ -37,6 +37,8 @@ final class TracerWorker {
 
     /** The current tile row's camera rays and their radiance. */
     private final CameraRows rows = new CameraRows();
+    /** The image x of the current row's first pixel, and the camera rays each pixel of it gets. */
+    private int rowX0, raysPerPixel;
 
     /** Traces camera rays four at a time where the Vector API is loaded; null where it is not. */
     private final CameraPackets packets = CameraPackets.load();
@@ -61,13 +63,16 @@ final class TracerWorker {
         exactFresnel = settings.glassFresnel() == RenderSettings.GlassFresnel.EXACT;
         int rowRays = (x1 - x0) * sampleCount;
         rows.prepare(renderScene.camera, frame.width(), frame.height(), rowRays);
-        caster.prepareEye(renderScene);
+        rowX0 = x0;
+        raysPerPixel = sampleCount;
+        EyeRays eye = caster.eye;
+        eye.prepare(renderScene);
+        // screen y grows upwards, image y downwards
+        eye.aimTile(rows.screenX(x0), rows.screenX(x1), rows.screenY(y1), rows.screenY(y0));
         int side = (int) Math.round(Math.sqrt(samples));
         boolean inPackets = packets != null && settings.simd() && packets.handles(renderScene);
-        // the tile's screen x range, then each row's y range (y grows downwards in pixels, upwards on screen)
-        double xLow = rows.screenX(x0), xHigh = rows.screenX(x1);
         for (int y = y0; y < y1; y++) {
-            caster.aimEye(renderScene, xLow, xHigh, rows.screenY(y + 1), rows.screenY(y));
+            eye.aimRow(rows.screenY(y + 1), rows.screenY(y));
             rows.aim(renderScene.camera, frame.width(), y, x0, x1, side, firstSample, sampleCount, frameIndex);
             if (inPackets) {
                 traceInPackets(rowRays);
@@ -93,8 +98,26 @@ final class TracerWorker {
         traceOneByOne(ray, rays);
     }
 
-    /** Traces camera rays [first, end) of the row one at a time, into the row's radiance. */
+    /**
+     * Traces camera rays [first, end) of the row one at a time, into the row's radiance. Calls for
+     * one row come left to right: the eye's sweep follows the pixels.
+     */
     private void traceOneByOne(int first, int end) {
+        if (caster.eye.rowCount == 0) {
+            traceFromEye(first, end); // no sphere in the row: no pixel shows one
+            return;
+        }
+        int pixel = first / raysPerPixel; // of the row
+        for (int ray = first, pixelEnd = (pixel + 1) * raysPerPixel; ray < end; pixel++, pixelEnd += raysPerPixel) {
+            caster.eye.aimPixel(rows.screenX(rowX0 + pixel), rows.screenX(rowX0 + pixel + 1));
+            int stop = Math.min(end, pixelEnd);
+            traceFromEye(ray, stop);
+            ray = stop;
+        }
+    }
+
+    /** Traces camera rays [first, end) of the row, after the eye's sweep has reached their pixels, into the row's radiance. */
+    private void traceFromEye(int first, int end) {
         CameraRows r = rows;
         CameraBasis camera = scene.camera;
         for (int ray = first; ray < end; ray++) {
