@@ -11,13 +11,6 @@ package glint.render;
  */
 final class EyeRays {
 
-    /**
-     * Widening of a sphere's screen range, relative to its size: far above the rounding of the
-     * range, of a camera ray's direction and of the sphere test (all near 1e-16), so a ray outside
-     * the widened range certainly misses; far below a pixel, so it culls nearly as much as the range.
-     */
-    private static final double SCREEN_MARGIN = 1e-6;
-
     /** The scene (and so the camera) the per-sphere terms were computed for. */
     private RenderScene preparedFor;
 
@@ -28,8 +21,8 @@ final class EyeRays {
     /** Per plane, offset - n.eye. */
     double[] planeNumerator = new double[0];
     /**
-     * Per sphere, its screen x range then its screen y range (4 doubles a sphere), widened by
-     * SCREEN_MARGIN; the whole line unless the sphere is wholly in front of the eye.
+     * Per sphere, its screen x range then its screen y range (4 doubles a sphere; see
+     * {@link ScreenRange}); the whole line unless the sphere is wholly in front of the eye.
      */
     private double[] screenRange = new double[0];
     /** Every sphere, by the left edge of its screen range. */
@@ -85,8 +78,8 @@ final class EyeRays {
             double across = -(fx * camera.rightX + fy * camera.rightY + fz * camera.rightZ);
             double up = -(fx * camera.upX + fy * camera.upY + fz * camera.upZ);
             double along = -(fx * camera.forwardX + fy * camera.forwardY + fz * camera.forwardZ);
-            screenRange(across, along, r, screenRange, k);
-            screenRange(up, along, r, screenRange, k + 2);
+            ScreenRange.of(across, along, r, screenRange, k);
+            ScreenRange.of(up, along, r, screenRange, k + 2);
             byLeftEdge[i] = i;
         }
         sortByLeftEdge(spheres);
@@ -100,26 +93,6 @@ final class EyeRays {
         pixelCount = 0;
         rowNext = 0;
         preparedFor = s;
-    }
-
-    /**
-     * Writes to out[at], out[at + 1] the range of screen coordinate a / z over a sphere whose centre
-     * is at (a, z) in a plane through the eye (a across, z along the view), widened by the margin;
-     * the whole line when the sphere is not wholly in front of the eye. The ends are the planes
-     * through the eye tangent to the sphere: |a - s z| = r sqrt(1 + s^2).
-     */
-    private static void screenRange(double a, double z, double r, double[] out, int at) {
-        double denominator = z * z - r * r;
-        if (!(z > r) || !(denominator > 0)) {
-            out[at] = Double.NEGATIVE_INFINITY;
-            out[at + 1] = Double.POSITIVE_INFINITY;
-            return;
-        }
-        double root = r * Math.sqrt(a * a + denominator);
-        double low = (a * z - root) / denominator, high = (a * z + root) / denominator;
-        double margin = SCREEN_MARGIN * (1 + Math.abs(low) + Math.abs(high));
-        out[at] = low - margin;
-        out[at + 1] = high + margin;
     }
 
     /** Keeps the spheres whose screen range meets the tile's rectangle [xLow, xHigh] x [yLow, yHigh]. */

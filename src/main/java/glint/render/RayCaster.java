@@ -251,6 +251,35 @@ final class RayCaster {
     /** True when anything lies on the ray before distance tMax (any hit, not the nearest). */
     boolean occluded(RenderScene s, double ox, double oy, double oz, double dx, double dy, double dz, double tMax,
                      int skipCode) {
+        return anyPlaneBefore(s, ox, oy, oz, dx, dy, dz, tMax, skipCode)
+                || (s.bvh == null
+                ? anySphereIn(s, 0, s.sphereCount, ox, oy, oz, dx, dy, dz, tMax)
+                : anySphereInBvh(s, ox, oy, oz, dx, dy, dz, tMax));
+    }
+
+    /**
+     * {@link #occluded} for a shadow ray towards light {@code light}, leaving from a point
+     * {@code offset} from the surface: tests only the spheres the light's {@link LightBuffer} lists
+     * for its direction, where it can.
+     */
+    boolean shadowed(RenderScene s, double ox, double oy, double oz, double dx, double dy, double dz, double tMax,
+                     int skipCode, int light, double offset) {
+        LightBuffer buffer = s.lightBuffers[light];
+        if (buffer == null || offset > buffer.maxOffset) {
+            return occluded(s, ox, oy, oz, dx, dy, dz, tMax, skipCode);
+        }
+        int cell = buffer.cell(-dx, -dy, -dz);
+        int first = buffer.cellStart[cell], end = buffer.cellStart[cell + 1];
+        if (s.bvh != null && end - first > MOST_SPHERES_LISTED) {
+            return occluded(s, ox, oy, oz, dx, dy, dz, tMax, skipCode);
+        }
+        return anyPlaneBefore(s, ox, oy, oz, dx, dy, dz, tMax, skipCode)
+                || anyListedSphere(s, buffer.cellSpheres, first, end, ox, oy, oz, dx, dy, dz, tMax);
+    }
+
+    /** Whether a plane lies on the ray before tMax; sets {@link #skip} for the sphere tests that follow. */
+    private boolean anyPlaneBefore(RenderScene s, double ox, double oy, double oz, double dx, double dy, double dz,
+                                   double tMax, int skipCode) {
         skip = skipped(skipCode);
         rays++;
         double[] planes = s.planes;
@@ -264,9 +293,31 @@ final class RayCaster {
                 return true;
             }
         }
-        return s.bvh == null
-                ? anySphereIn(s, 0, s.sphereCount, ox, oy, oz, dx, dy, dz, tMax)
-                : anySphereInBvh(s, ox, oy, oz, dx, dy, dz, tMax);
+        return false;
+    }
+
+    /**
+     * A shadow ray whose light-buffer cell lists more spheres than this searches the hierarchy
+     * instead, where the scene has one.
+     */
+    static final int MOST_SPHERES_LISTED = 12;
+
+    /** Whether any of spheres list[first, end) lies on the ray before tMax. */
+    private boolean anyListedSphere(RenderScene s, int[] list, int first, int end, double ox, double oy, double oz,
+                                    double dx, double dy, double dz, double tMax) {
+        double[] spheres = s.spheres;
+        for (int j = first; j < end; j++) {
+            int i = list[j];
+            if (i + 1 == skip) {
+                continue;
+            }
+            int k = 4 * i;
+            if (Intersect.sphereBefore(spheres[k], spheres[k + 1], spheres[k + 2], spheres[k + 3],
+                    ox, oy, oz, dx, dy, dz, tMax) < tMax) {
+                return true;
+            }
+        }
+        return false;
     }
 
     private boolean anySphereIn(RenderScene s, int first, int end, double ox, double oy, double oz,

@@ -64,6 +64,8 @@ public final class RenderScene {
     final boolean[] lightIsPoint;
     final double[] lightVector; // 3 per light
     final double[] lightPower;  // 3 per light: color x intensity
+    /** Per light, the spheres that can shadow it by direction; null for a directional light. */
+    final LightBuffer[] lightBuffers;
 
     final double backgroundR, backgroundG, backgroundB;
     final double ambientR, ambientG, ambientB;
@@ -137,6 +139,13 @@ public final class RenderScene {
             }
             put3(lightPower, i, light.color().scale(light.intensity()));
         }
+        lightBuffers = new LightBuffer[lightCount];
+        for (int i = 0; i < lightCount; i++) {
+            if (lightIsPoint[i]) {
+                lightBuffers[i] = LightBuffer.build(spheres, sphereCount,
+                        lightVector[3 * i], lightVector[3 * i + 1], lightVector[3 * i + 2]);
+            }
+        }
 
         backgroundR = scene.background().x();
         backgroundG = scene.background().y();
@@ -171,6 +180,7 @@ public final class RenderScene {
         lightIsPoint = base.lightIsPoint;
         lightVector = base.lightVector;
         lightPower = base.lightPower;
+        lightBuffers = base.lightBuffers;
         backgroundR = base.backgroundR;
         backgroundG = base.backgroundG;
         backgroundB = base.backgroundB;

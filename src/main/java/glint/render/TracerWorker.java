@@ -215,7 +215,8 @@ final class TracerWorker {
         double ox = px + offset * nx, oy = py + offset * ny, oz = pz + offset * nz;
         for (int light = 0; light < s.lightCount; light++) {
             double cosLight = lightAt(light, px, py, pz, nx, ny, nz);
-            if (cosLight > 0 && !caster.occluded(s, ox, oy, oz, toLightX, toLightY, toLightZ, lightDistance, skipNear)) {
+            if (cosLight > 0 && !caster.shadowed(s, ox, oy, oz, toLightX, toLightY, toLightZ, lightDistance, skipNear,
+                    light, offset)) {
                 sumR += irradianceR * cosLight;
                 sumG += irradianceG * cosLight;
                 sumB += irradianceB * cosLight;
@@ -240,7 +241,8 @@ final class TracerWorker {
         if (alpha > 0 && cosView > 0) {
             for (int light = 0; light < s.lightCount; light++) {
                 double cosLight = lightAt(light, px, py, pz, nx, ny, nz);
-                if (cosLight <= 0 || caster.occluded(s, ox, oy, oz, toLightX, toLightY, toLightZ, lightDistance, skipNear)) {
+                if (cosLight <= 0 || caster.shadowed(s, ox, oy, oz, toLightX, toLightY, toLightZ, lightDistance,
+                        skipNear, light, offset)) {
                     continue;
                 }
                 double hx = toLightX - dx, hy = toLightY - dy, hz = toLightZ - dz;
