@@ -20,44 +20,59 @@ final class LightBuffer {
     static final double ANGLE_MARGIN = 1e-4;
     private static final int FACES = 6;
 
-    private final double lightX, lightY, lightZ;
     /** Shadow rays whose origin lies further than this from the surface point must take the full test. */
     final double maxOffset;
     /** Cell c lists cellSpheres[cellStart[c] .. cellStart[c + 1]). */
     final int[] cellStart;
     final int[] cellSpheres;
 
-    private LightBuffer(double[] spheres, int count, double lightX, double lightY, double lightZ) {
-        this.lightX = lightX;
-        this.lightY = lightY;
-        this.lightZ = lightZ;
+    private LightBuffer(double maxOffset, int[] cellStart, int[] cellSpheres) {
+        this.maxOffset = maxOffset;
+        this.cellStart = cellStart;
+        this.cellSpheres = cellSpheres;
+    }
+
+    /** Room a buffer takes beyond its lists, in list entries: its cell index. */
+    static final int CELL_INDEX_SIZE = FACES * CELLS * CELLS + 1;
+
+    /**
+     * A light buffer for the point light at (x, y, z) over {@code count} spheres (cx, cy, cz, r
+     * each), or null when its lists would hold more than {@code maxEntries} entries (spheres
+     * crowding around the light): its shadow rays then take the full test.
+     */
+    static LightBuffer build(double[] spheres, int count, double x, double y, double z, long maxEntries) {
         int cells = FACES * CELLS * CELLS;
-        cellStart = new int[cells + 1];
         int[] rect = new int[4 * FACES * count]; // per sphere and face: first and last cell column and row, or -1
         double nearest = Double.POSITIVE_INFINITY;
         double[] range = new double[4];
         for (int i = 0; i < count; i++) {
-            nearest = Math.min(nearest, coverSphere(spheres, i, rect, range));
+            nearest = Math.min(nearest, coverSphere(spheres, i, x, y, z, rect, range));
         }
-        maxOffset = Math.sin(ANGLE_MARGIN) * nearest;
         // count each cell's spheres, then place them, in sphere order
         int[] fill = new int[cells];
         for (int i = 0; i < count; i++) {
             addToCells(rect, i, fill, null);
         }
+        int[] cellStart = new int[cells + 1];
+        long entries = 0;
         for (int c = 0; c < cells; c++) {
-            cellStart[c + 1] = cellStart[c] + fill[c];
+            entries += fill[c];
+            if (entries > maxEntries) {
+                return null;
+            }
+            cellStart[c + 1] = (int) entries;
             fill[c] = cellStart[c];
         }
-        cellSpheres = new int[cellStart[cells]];
+        int[] cellSpheres = new int[cellStart[cells]];
         for (int i = 0; i < count; i++) {
             addToCells(rect, i, fill, cellSpheres);
         }
+        return new LightBuffer(Math.sin(ANGLE_MARGIN) * nearest, cellStart, cellSpheres);
     }
 
-    /** A light buffer for the point light at (x, y, z) over {@code count} spheres (cx, cy, cz, r each). */
-    static LightBuffer build(double[] spheres, int count, double x, double y, double z) {
-        return new LightBuffer(spheres, count, x, y, z);
+    /** Entries in the buffer's lists. */
+    int entries() {
+        return cellSpheres.length;
     }
 
     /**
@@ -65,7 +80,8 @@ final class LightBuffer {
      * distance from the light to the sphere's surface, or infinity when the cone holds every
      * direction (the light is inside or nearly touching the sphere).
      */
-    private double coverSphere(double[] spheres, int i, int[] rect, double[] range) {
+    private static double coverSphere(double[] spheres, int i, double lightX, double lightY, double lightZ,
+                                      int[] rect, double[] range) {
         double[] centre = {spheres[4 * i] - lightX, spheres[4 * i + 1] - lightY, spheres[4 * i + 2] - lightZ};
         double radius = spheres[4 * i + 3];
         double distance = Math.sqrt(centre[0] * centre[0] + centre[1] * centre[1] + centre[2] * centre[2]);

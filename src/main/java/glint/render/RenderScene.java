@@ -139,13 +139,7 @@ public final class RenderScene {
             }
             put3(lightPower, i, light.color().scale(light.intensity()));
         }
-        lightBuffers = new LightBuffer[lightCount];
-        for (int i = 0; i < lightCount; i++) {
-            if (lightIsPoint[i]) {
-                lightBuffers[i] = LightBuffer.build(spheres, sphereCount,
-                        lightVector[3 * i], lightVector[3 * i + 1], lightVector[3 * i + 2]);
-            }
-        }
+        lightBuffers = buildLightBuffers();
 
         backgroundR = scene.background().x();
         backgroundG = scene.background().y();
@@ -188,6 +182,35 @@ public final class RenderScene {
         ambientG = base.ambientG;
         ambientB = base.ambientB;
         this.camera = new CameraBasis(camera);
+    }
+
+    /** Light buffers for at most this many point lights; shadow rays towards the others take the full test. */
+    static final int MOST_LIGHT_BUFFERS = 8;
+    /** List entries and cell indices all light buffers together may hold: 32 MB. */
+    static final long LIGHT_BUFFER_ENTRIES = 8L << 20;
+
+    /**
+     * A {@link LightBuffer} for each of the first point lights, while they fit the budget: a scene
+     * of many lights, or of many spheres crowding around one, must not cost the memory or the
+     * compile time of a buffer for each.
+     */
+    private LightBuffer[] buildLightBuffers() {
+        LightBuffer[] buffers = new LightBuffer[lightCount];
+        long left = LIGHT_BUFFER_ENTRIES;
+        int built = 0;
+        for (int i = 0; i < lightCount && built < MOST_LIGHT_BUFFERS && sphereCount > 0; i++) {
+            if (!lightIsPoint[i] || left < LightBuffer.CELL_INDEX_SIZE) {
+                continue;
+            }
+            LightBuffer buffer = LightBuffer.build(spheres, sphereCount, lightVector[3 * i], lightVector[3 * i + 1],
+                    lightVector[3 * i + 2], left - LightBuffer.CELL_INDEX_SIZE);
+            if (buffer != null) {
+                buffers[i] = buffer;
+                left -= LightBuffer.CELL_INDEX_SIZE + buffer.entries();
+                built++;
+            }
+        }
+        return buffers;
     }
 
     /**

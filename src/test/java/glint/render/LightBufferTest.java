@@ -180,7 +180,7 @@ class LightBufferTest {
             double distance = random.nextDouble(1, 50);
             double radius = distance * random.nextDouble(1e-3, 0.9);
             double[] sphere = {towards[0] * distance, towards[1] * distance, towards[2] * distance, radius};
-            LightBuffer buffer = LightBuffer.build(sphere, 1, 0, 0, 0);
+            LightBuffer buffer = LightBuffer.build(sphere, 1, 0, 0, 0, Long.MAX_VALUE);
             double halfAngle = Math.asin(radius / distance);
             for (int i = 0; i < 100; i++) {
                 double[] side = perpendicular(towards, randomUnit(random));
@@ -194,6 +194,35 @@ class LightBufferTest {
                         "trial " + trial + ", direction " + i);
             }
         }
+    }
+
+    /** Past the first few point lights, or past the memory budget, shadow rays take the full test. */
+    @Test
+    void manyLightsOrCrowdedOnesGetNoBuffer() {
+        List<Light> lights = new ArrayList<>();
+        for (int i = 0; i < RenderScene.MOST_LIGHT_BUFFERS + 1; i++) {
+            lights.add(new Light.Point(new Vector3d(i, 10, 0), new Vector3d(1, 1, 1), 1));
+        }
+        List<SceneObject> one = List.of(new SceneObject(new Sphere(new Vector3d(0, 0, 0), 1), MATTE));
+        RenderScene many = RenderScene.compile(new Scene(Camera.defaults(), Vector3d.ZERO, Vector3d.ZERO, lights, one),
+                SETTINGS);
+        for (int i = 0; i < RenderScene.MOST_LIGHT_BUFFERS; i++) {
+            assertTrue(many.lightBuffers[i] != null, "light " + i);
+        }
+        assertEquals(null, many.lightBuffers[RenderScene.MOST_LIGHT_BUFFERS]);
+
+        // nested spheres around the light: each is listed in every cell, past the budget
+        int nested = (int) (RenderScene.LIGHT_BUFFER_ENTRIES / (LightBuffer.CELL_INDEX_SIZE - 1)) + 1;
+        List<SceneObject> shells = new ArrayList<>();
+        for (int i = 0; i < nested; i++) {
+            shells.add(new SceneObject(new Sphere(new Vector3d(0, 0, 0), 1 + i), MATTE));
+        }
+        RenderScene crowded = scene(shells, new Vector3d(0.1, 0, 0));
+        assertEquals(null, crowded.lightBuffers[0]);
+        RayCaster caster = new RayCaster();
+        assertTrue(caster.shadowed(crowded, 5.5, 0, 0, -1, 0, 0, 5.4, 0, 0, 1e-9));
+        assertTrue(LightBuffer.build(crowded.spheres, nested, 0.1, 0, 0, Long.MAX_VALUE).entries()
+                > RenderScene.LIGHT_BUFFER_ENTRIES);
     }
 
     @Test
