@@ -305,15 +305,8 @@ final class RayCaster {
     /** Whether any of spheres list[first, end) lies on the ray before tMax. */
     private boolean anyListedSphere(RenderScene s, int[] list, int first, int end, double ox, double oy, double oz,
                                     double dx, double dy, double dz, double tMax) {
-        double[] spheres = s.spheres;
         for (int j = first; j < end; j++) {
-            int i = list[j];
-            if (i + 1 == skip) {
-                continue;
-            }
-            int k = 4 * i;
-            if (Intersect.sphereBefore(spheres[k], spheres[k + 1], spheres[k + 2], spheres[k + 3],
-                    ox, oy, oz, dx, dy, dz, tMax) < tMax) {
+            if (blocks(s, list[j], ox, oy, oz, dx, dy, dz, tMax)) {
                 return true;
             }
         }
@@ -322,18 +315,21 @@ final class RayCaster {
 
     private boolean anySphereIn(RenderScene s, int first, int end, double ox, double oy, double oz,
                                 double dx, double dy, double dz, double tMax) {
-        double[] spheres = s.spheres;
         for (int i = first; i < end; i++) {
-            if (i + 1 == skip) {
-                continue;
-            }
-            int k = 4 * i;
-            if (Intersect.sphereBefore(spheres[k], spheres[k + 1], spheres[k + 2], spheres[k + 3],
-                    ox, oy, oz, dx, dy, dz, tMax) < tMax) {
+            if (blocks(s, i, ox, oy, oz, dx, dy, dz, tMax)) {
                 return true;
             }
         }
         return false;
+    }
+
+    /** Whether sphere i, unless the query skips it, lies on the ray before tMax. */
+    private boolean blocks(RenderScene s, int i, double ox, double oy, double oz, double dx, double dy, double dz,
+                           double tMax) {
+        int k = 4 * i;
+        double[] spheres = s.spheres;
+        return i + 1 != skip && Intersect.sphereBefore(spheres[k], spheres[k + 1], spheres[k + 2], spheres[k + 3],
+                ox, oy, oz, dx, dy, dz, tMax) < tMax;
     }
 
     /**
