@@ -26,7 +26,7 @@ public final class RenderScene {
      * Scenes with more spheres than this get a bounding volume hierarchy. Camera and shadow rays
      * rarely search it ({@link EyeRays}, {@link LightBuffer}); for reflected and refracted rays it
      * pays from about 20 spheres. Millions of instructions a frame of the render thread (800x600,
-     * 1 sample, depth 5, one thread), with and without a hierarchy: 10 glass spheres 635 and 585,
+     * 1 sample, depth 5, one thread), with and without a hierarchy: 10 glass spheres 632 and 584,
      * 15 glass 721 and 668, 20 glass 768 and 848, 25 glass 813 and 912; 10 matte 278 and 262, 20
      * matte 281 and 282.
      */
