@@ -230,6 +230,7 @@ final class RayCaster {
         return hitT < Intersect.MISS;
     }
 
+    /** Kept apart so that {@link #nearestFromEye} stays small enough for the JIT to inline into the tracer. */
     private boolean nearestFromEyeInBvh(RenderScene s, double dx, double dy, double dz) {
         return nearest(s, s.camera.eyeX, s.camera.eyeY, s.camera.eyeZ, dx, dy, dz, 0);
     }

@@ -46,48 +46,20 @@ class EyeRaysTest {
                     caster.eye.aimPixel(rows.screenX(x), rows.screenX(x + 1));
                     for (int ray = (x - x0) * samples; ray < (x - x0 + 1) * samples; ray++) {
                         double dx = rows.dirX[ray], dy = rows.dirY[ray], dz = rows.dirZ[ray];
-                        Hit expected = bruteForce(s, dx, dy, dz);
+                        EverySurface.Hit expected = EverySurface.nearest(s, s.camera.eyeX, s.camera.eyeY,
+                                s.camera.eyeZ, dx, dy, dz, -1, -1);
                         boolean found = caster.nearestFromEye(s, dx, dy, dz);
                         String where = "pixel " + x + "," + y + " ray " + ray;
-                        assertEquals(expected.t < Intersect.MISS, found, where);
-                        assertEquals(expected.t, caster.hitT, 0, where);
-                        assertEquals(expected.sphere, caster.hitSphere, where);
-                        assertEquals(expected.plane, caster.hitPlane, where);
-                        sphereHits += expected.sphere >= 0 ? 1 : 0;
+                        assertEquals(expected.t() < Intersect.MISS, found, where);
+                        assertEquals(expected.t(), caster.hitT, 0, where);
+                        assertEquals(expected.sphere(), caster.hitSphere, where);
+                        assertEquals(expected.plane(), caster.hitPlane, where);
+                        sphereHits += expected.sphere() >= 0 ? 1 : 0;
                     }
                 }
             }
         }
         return sphereHits;
-    }
-
-    private record Hit(double t, int sphere, int plane) {
-    }
-
-    private static Hit bruteForce(RenderScene s, double dx, double dy, double dz) {
-        CameraBasis eye = s.camera;
-        double nearest = Intersect.MISS;
-        int sphere = -1, plane = -1;
-        for (int i = 0; i < s.sphereCount; i++) {
-            int k = 4 * i;
-            double t = Intersect.sphere(s.spheres[k], s.spheres[k + 1], s.spheres[k + 2], s.spheres[k + 3],
-                    eye.eyeX, eye.eyeY, eye.eyeZ, dx, dy, dz);
-            if (t < nearest) {
-                nearest = t;
-                sphere = i;
-            }
-        }
-        for (int i = 0; i < s.planeCount; i++) {
-            int k = 4 * i;
-            double t = Intersect.plane(s.planes[k], s.planes[k + 1], s.planes[k + 2], s.planes[k + 3],
-                    eye.eyeX, eye.eyeY, eye.eyeZ, dx, dy, dz);
-            if (t < nearest) {
-                nearest = t;
-                plane = i;
-                sphere = -1;
-            }
-        }
-        return new Hit(nearest, sphere, plane);
     }
 
     private static RenderScene compile(Camera camera, List<SceneObject> objects) {

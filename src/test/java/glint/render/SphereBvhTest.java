@@ -92,27 +92,10 @@ class SphereBvhTest {
             double[] d = unit(random.nextDouble(-1, 1), random.nextDouble(-1, 1), random.nextDouble(-1, 1));
             int skippedSphere = random.nextInt(scene.sphereCount + 1) - 1;
             int skippedPlane = skippedSphere < 0 ? random.nextInt(3) - 1 : -1;
-            int nearestSphere = -1, nearestPlane = -1;
-            double nearest = Intersect.MISS;
-            for (int sphere = 0; sphere < scene.sphereCount; sphere++) {
-                int k = 4 * sphere;
-                double t = Intersect.sphere(scene.spheres[k], scene.spheres[k + 1], scene.spheres[k + 2],
-                        scene.spheres[k + 3], o[0], o[1], o[2], d[0], d[1], d[2]);
-                if (sphere != skippedSphere && t < nearest) {
-                    nearest = t;
-                    nearestSphere = sphere;
-                }
-            }
-            for (int plane = 0; plane < scene.planeCount; plane++) {
-                int k = 4 * plane;
-                double t = Intersect.plane(scene.planes[k], scene.planes[k + 1], scene.planes[k + 2],
-                        scene.planes[k + 3], o[0], o[1], o[2], d[0], d[1], d[2]);
-                if (plane != skippedPlane && t < nearest) {
-                    nearest = t;
-                    nearestPlane = plane;
-                    nearestSphere = -1;
-                }
-            }
+            EverySurface.Hit expected = EverySurface.nearest(scene, o[0], o[1], o[2], d[0], d[1], d[2],
+                    skippedSphere, skippedPlane);
+            double nearest = expected.t();
+            int nearestSphere = expected.sphere(), nearestPlane = expected.plane();
             int skipCode = skippedSphere >= 0 || skippedPlane >= 0 ? RayCaster.surfaceId(skippedSphere, skippedPlane) : 0;
             assertEquals(nearest < Intersect.MISS, caster.nearest(scene, o[0], o[1], o[2], d[0], d[1], d[2], skipCode));
             assertEquals(nearest, caster.hitT, 0);
