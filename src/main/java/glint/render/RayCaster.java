@@ -52,6 +52,20 @@ final class RayCaster {
         return sphere >= 0 ? sphere + 1 : -(plane + 1);
     }
 
+    /**
+     * The skip code of rays leaving a hit on the side the ray came from ({@code entering}: the
+     * ray met the front, outer side): they leave out the surface itself, or, spawned inside a
+     * sphere, say so and need test only that sphere when nothing else reaches into it.
+     */
+    static int skipNear(int sphere, int plane, boolean entering) {
+        return plane >= 0 || entering ? surfaceId(sphere, plane) : insideOf(sphere);
+    }
+
+    /** The skip code of rays passing through a hit to the surface's other side. */
+    static int skipFar(int sphere, int plane, boolean entering) {
+        return plane >= 0 || !entering ? surfaceId(sphere, plane) : insideOf(sphere);
+    }
+
     /** Nearest hit along the ray; sets hitT and hitSphere or hitPlane (the other is -1). */
     boolean nearest(RenderScene s, double ox, double oy, double oz, double dx, double dy, double dz, int skipCode) {
         rays++;

@@ -40,6 +40,16 @@ final class TracerWorker {
     /** The image x of the current row's first pixel, and the camera rays each pixel of it gets. */
     private int rowX0, raysPerPixel;
 
+    /** The current tile row's hits, for tracing it in stages. */
+    private final RowHits hits = new RowHits();
+    /** Whether cook-torrance rows are traced in stages (the fast path) rather than ray by ray. */
+    private final boolean stages;
+
+    /** A worker that traces rows in stages, or, for comparison in tests, ray by ray. */
+    TracerWorker(boolean stages) {
+        this.stages = stages;
+    }
+
     /** Traces camera rays four at a time where the Vector API is loaded; null where it is not. */
     private final CameraPackets packets = CameraPackets.load();
 
@@ -71,11 +81,14 @@ final class TracerWorker {
         eye.aimTile(rows.screenX(x0), rows.screenX(x1), rows.screenY(y1), rows.screenY(y0));
         int side = (int) Math.round(Math.sqrt(samples));
         boolean inPackets = packets != null && settings.simd() && packets.handles(renderScene);
+        boolean inStages = stages && !phong;
         for (int y = y0; y < y1; y++) {
             eye.aimRow(rows.screenY(y + 1), rows.screenY(y));
             rows.aim(renderScene.camera, frame.width(), y, x0, x1, side, firstSample, sampleCount, frameIndex);
             if (inPackets) {
                 traceInPackets(rowRays);
+            } else if (inStages) {
+                traceInStages(rowRays);
             } else {
                 traceOneByOne(0, rowRays);
             }
@@ -96,6 +109,174 @@ final class TracerWorker {
             }
         }
         traceOneByOne(ray, rays);
+    }
+
+    /**
+     * Traces the row's camera rays [0, rays) in stages, into the row's radiance: every ray's
+     * nearest hit, then every hit's surface, then the shading of each hit, with the matte ones lit
+     * together. Each pixel gets the same arithmetic in the same order as {@link #trace}, so the
+     * image is the same bit for bit.
+     */
+    private void traceInStages(int rays) {
+        hits.fit(rays);
+        findHitsFromEye(rays);
+        describeRowHits(rays);
+        shadeRowHits(rays);
+        lightMatteHits();
+    }
+
+    /** Stage 1: the nearest hit of each camera ray of the row, swept left to right as in {@link #traceOneByOne}. */
+    private void findHitsFromEye(int rays) {
+        EyeRays eye = caster.eye;
+        if (eye.rowCount == 0) {
+            for (int ray = 0; ray < rays; ray++) {
+                findHitFromEye(ray); // no sphere in the row: no pixel shows one
+            }
+            return;
+        }
+        for (int pixel = 0, ray = 0; ray < rays; pixel++) {
+            eye.aimPixel(rows.screenX(rowX0 + pixel), rows.screenX(rowX0 + pixel + 1));
+            for (int end = ray + raysPerPixel; ray < end; ray++) {
+                findHitFromEye(ray);
+            }
+        }
+    }
+
+    private void findHitFromEye(int ray) {
+        CameraRows r = rows;
+        hits.storeHit(ray, caster, caster.nearestFromEye(scene, r.dirX[ray], r.dirY[ray], r.dirZ[ray]));
+    }
+
+    /** Stage 2: the surface at each hit. */
+    private void describeRowHits(int rays) {
+        RowHits h = hits;
+        CameraRows r = rows;
+        CameraBasis camera = scene.camera;
+        for (int ray = 0; ray < rays; ray++) {
+            if (!h.met(ray)) {
+                continue;
+            }
+            describeHit(h.t[ray], h.sphere[ray], h.plane[ray], camera.eyeX, camera.eyeY, camera.eyeZ,
+                    r.dirX[ray], r.dirY[ray], r.dirZ[ray]);
+            h.px[ray] = hitX;
+            h.py[ray] = hitY;
+            h.pz[ray] = hitZ;
+            h.nx[ray] = normalX;
+            h.ny[ray] = normalY;
+            h.nz[ray] = normalZ;
+            h.cosIncident[ray] = hitCosIncident;
+            h.offset[ray] = hitOffset;
+            h.entering[ray] = hitEntering;
+            h.material[ray] = hitMaterial;
+        }
+    }
+
+    /**
+     * Stage 3: the background for misses, metal and glass hits shaded one by one (their reflected
+     * and refracted rays traced from there), matte hits listed for stage 4.
+     */
+    private void shadeRowHits(int rays) {
+        RowHits h = hits;
+        CameraRows r = rows;
+        RenderScene s = scene;
+        int matte = 0;
+        for (int ray = 0; ray < rays; ray++) {
+            if (!h.met(ray)) {
+                outR = s.backgroundR;
+                outG = s.backgroundG;
+                outB = s.backgroundB;
+            } else if (s.materialType[h.material[ray]] == RenderScene.MATTE) {
+                h.matteRays[matte++] = ray;
+                continue;
+            } else {
+                shadeMirrorOrGlass(ray);
+            }
+            r.radianceR[ray] = outR;
+            r.radianceG[ray] = outG;
+            r.radianceB[ray] = outB;
+        }
+        h.matteCount = matte;
+    }
+
+    /** Shades the metal or glass surface camera ray i met, into outR/G/B. */
+    private void shadeMirrorOrGlass(int ray) {
+        RowHits h = hits;
+        CameraRows r = rows;
+        int m = h.material[ray];
+        if (scene.materialType[m] == RenderScene.METAL) {
+            shadeMetal(m, h.px[ray], h.py[ray], h.pz[ray], h.nx[ray], h.ny[ray], h.nz[ray],
+                    r.dirX[ray], r.dirY[ray], r.dirZ[ray], h.cosIncident[ray], h.offset[ray], recursionMax, 1,
+                    h.skipNear(ray));
+        } else {
+            shadeGlass(m, h.px[ray], h.py[ray], h.pz[ray], h.nx[ray], h.ny[ray], h.nz[ray],
+                    r.dirX[ray], r.dirY[ray], r.dirZ[ray], h.cosIncident[ray], h.entering[ray], h.offset[ray],
+                    recursionMax, 1, h.skipNear(ray), h.skipFar(ray));
+        }
+    }
+
+    /**
+     * Stage 4: the matte hits of the row, lit as {@link #shadeMatte} lights one: light by light,
+     * first every hit's light sample, then every hit's shadow ray, each adding in light order.
+     */
+    private void lightMatteHits() {
+        RowHits h = hits;
+        RenderScene s = scene;
+        int count = h.matteCount;
+        for (int j = 0; j < count; j++) {
+            h.sumR[j] = 0;
+            h.sumG[j] = 0;
+            h.sumB[j] = 0;
+        }
+        for (int light = 0; light < s.lightCount; light++) {
+            sampleLight(light, count);
+            addUnshadowed(light, count);
+        }
+        CameraRows r = rows;
+        for (int j = 0; j < count; j++) {
+            int ray = h.matteRays[j];
+            int c = 3 * h.material[ray];
+            r.radianceR[ray] = s.materialColor[c] * (h.sumR[j] * INV_PI + s.ambientR);
+            r.radianceG[ray] = s.materialColor[c + 1] * (h.sumG[j] * INV_PI + s.ambientG);
+            r.radianceB[ray] = s.materialColor[c + 2] * (h.sumB[j] * INV_PI + s.ambientB);
+        }
+    }
+
+    /** The sample of light {@code light} at each matte hit. */
+    private void sampleLight(int light, int count) {
+        RowHits h = hits;
+        for (int j = 0; j < count; j++) {
+            int ray = h.matteRays[j];
+            double cosLight = lightAt(light, h.px[ray], h.py[ray], h.pz[ray], h.nx[ray], h.ny[ray], h.nz[ray]);
+            h.cosLight[j] = cosLight;
+            h.toLightX[j] = toLightX;
+            h.toLightY[j] = toLightY;
+            h.toLightZ[j] = toLightZ;
+            h.lightDistance[j] = lightDistance;
+            h.lightR[j] = irradianceR * cosLight;
+            h.lightG[j] = irradianceG * cosLight;
+            h.lightB[j] = irradianceB * cosLight;
+        }
+    }
+
+    /** Adds light {@code light} at each matte hit that faces it and sees it. */
+    private void addUnshadowed(int light, int count) {
+        RowHits h = hits;
+        RenderScene s = scene;
+        for (int j = 0; j < count; j++) {
+            if (!(h.cosLight[j] > 0)) {
+                continue;
+            }
+            int ray = h.matteRays[j];
+            double offset = h.offset[ray];
+            double ox = h.px[ray] + offset * h.nx[ray], oy = h.py[ray] + offset * h.ny[ray],
+                    oz = h.pz[ray] + offset * h.nz[ray];
+            if (!caster.shadowed(s, ox, oy, oz, h.toLightX[j], h.toLightY[j], h.toLightZ[j], h.lightDistance[j],
+                    h.skipNear(ray), light, offset)) {
+                h.sumR[j] += h.lightR[j];
+                h.sumG[j] += h.lightG[j];
+                h.sumB[j] += h.lightB[j];
+            }
+        }
     }
 
     /**
@@ -144,53 +325,14 @@ final class TracerWorker {
             outB = s.backgroundB;
             return;
         }
-        double t = hit.hitT;
-        double px = ox + t * dx, py = oy + t * dy, pz = oz + t * dz;
-        // the offset scales with |p|, taken before p is refined below: the refinement moves p by
-        // far less than a rounding step of the scale, and this way the square root runs alongside
-        // the normal's rather than after it
-        double offset = epsilon * atLeastOne(Math.sqrt(px * px + py * py + pz * pz));
-        double nx, ny, nz;
-        int material;
-        if (hit.hitSphere >= 0) {
-            int i = 4 * hit.hitSphere;
-            double cx = s.spheres[i], cy = s.spheres[i + 1], cz = s.spheres[i + 2], radius = s.spheres[i + 3];
-            double ex = px - cx, ey = py - cy, ez = pz - cz;
-            double inv = 1 / Math.sqrt(ex * ex + ey * ey + ez * ez);
-            nx = ex * inv;
-            ny = ey * inv;
-            nz = ez * inv;
-            // re-project onto the surface: removes the error t carries into p
-            px = cx + radius * nx;
-            py = cy + radius * ny;
-            pz = cz + radius * nz;
-            material = s.sphereMaterial[hit.hitSphere];
-        } else {
-            int i = 4 * hit.hitPlane;
-            nx = s.planes[i];
-            ny = s.planes[i + 1];
-            nz = s.planes[i + 2];
-            double off = nx * px + ny * py + nz * pz - s.planes[i + 3];
-            px -= off * nx;
-            py -= off * ny;
-            pz -= off * nz;
-            material = s.planeMaterial[hit.hitPlane];
-        }
-        double cosIncident = -(dx * nx + dy * ny + dz * nz); // > 0 when the ray meets the front side
-        boolean entering = cosIncident >= 0;
-        if (!entering) {
-            // from here on n faces the side the ray came from
-            nx = -nx;
-            ny = -ny;
-            nz = -nz;
-            cosIncident = -cosIncident;
-        }
-        // rays spawned on the outer side of this surface leave it out of their tests; rays spawned
-        // inside a sphere say so, and need test only that sphere when nothing else reaches into it
-        int self = RayCaster.surfaceId(hit.hitSphere, hit.hitPlane);
-        boolean plane = hit.hitPlane >= 0;
-        int skipNear = plane || entering ? self : RayCaster.insideOf(hit.hitSphere);
-        int skipFar = plane || !entering ? self : RayCaster.insideOf(hit.hitSphere);
+        describeHit(hit.hitT, hit.hitSphere, hit.hitPlane, ox, oy, oz, dx, dy, dz);
+        int material = hitMaterial;
+        double px = hitX, py = hitY, pz = hitZ;
+        double nx = normalX, ny = normalY, nz = normalZ;
+        double cosIncident = hitCosIncident, offset = hitOffset;
+        boolean entering = hitEntering;
+        int skipNear = RayCaster.skipNear(hit.hitSphere, hit.hitPlane, entering);
+        int skipFar = RayCaster.skipFar(hit.hitSphere, hit.hitPlane, entering);
         if (phong) {
             shadePhong(material, px, py, pz, nx, ny, nz, dx, dy, dz, cosIncident, entering, offset, hitsLeft, weight,
                     skipNear, skipFar);
@@ -203,6 +345,76 @@ final class TracerWorker {
             default -> shadeGlass(material, px, py, pz, nx, ny, nz, dx, dy, dz, cosIncident, entering, offset,
                     hitsLeft, weight, skipNear, skipFar);
         }
+    }
+
+    // the surface describeHit() found: point, facing normal, cosine of incidence, offset, material
+    private double hitX, hitY, hitZ, normalX, normalY, normalZ, hitCosIncident, hitOffset;
+    private boolean hitEntering;
+    private int hitMaterial;
+
+    /**
+     * Works out the surface a ray from o along unit d meets at distance t (sphere or plane, the
+     * other -1): the hit point moved onto the surface, the normal turned to face the ray, the
+     * cosine of incidence, the offset for rays leaving it, whether the ray met its front side,
+     * and its material.
+     */
+    private void describeHit(double t, int sphere, int plane, double ox, double oy, double oz,
+                             double dx, double dy, double dz) {
+        double px = ox + t * dx, py = oy + t * dy, pz = oz + t * dz;
+        // the offset scales with |p|, taken before p is refined: the refinement moves p by far less
+        // than a rounding step of the scale, and this way the square root runs alongside the
+        // normal's rather than after it
+        hitOffset = epsilon * atLeastOne(Math.sqrt(px * px + py * py + pz * pz));
+        if (sphere >= 0) {
+            onSphere(sphere, px, py, pz);
+        } else {
+            onPlane(plane, px, py, pz);
+        }
+        faceTheRay(dx, dy, dz);
+    }
+
+    /** The point of sphere i nearest p (p re-projected onto it: removes the error t carries into p), its outward normal and material. */
+    private void onSphere(int i, double px, double py, double pz) {
+        RenderScene s = scene;
+        int k = 4 * i;
+        double cx = s.spheres[k], cy = s.spheres[k + 1], cz = s.spheres[k + 2], radius = s.spheres[k + 3];
+        double ex = px - cx, ey = py - cy, ez = pz - cz;
+        double inv = 1 / Math.sqrt(ex * ex + ey * ey + ez * ez);
+        normalX = ex * inv;
+        normalY = ey * inv;
+        normalZ = ez * inv;
+        hitX = cx + radius * normalX;
+        hitY = cy + radius * normalY;
+        hitZ = cz + radius * normalZ;
+        hitMaterial = s.sphereMaterial[i];
+    }
+
+    /** The point of plane i nearest p, its normal and material. */
+    private void onPlane(int i, double px, double py, double pz) {
+        RenderScene s = scene;
+        int k = 4 * i;
+        double nx = s.planes[k], ny = s.planes[k + 1], nz = s.planes[k + 2];
+        double off = nx * px + ny * py + nz * pz - s.planes[k + 3];
+        hitX = px - off * nx;
+        hitY = py - off * ny;
+        hitZ = pz - off * nz;
+        normalX = nx;
+        normalY = ny;
+        normalZ = nz;
+        hitMaterial = s.planeMaterial[i];
+    }
+
+    /** Turns the normal to face the side the ray along d came from; sets the cosine of incidence and whether that is the front. */
+    private void faceTheRay(double dx, double dy, double dz) {
+        double cosIncident = -(dx * normalX + dy * normalY + dz * normalZ); // > 0 when the ray meets the front side
+        hitEntering = cosIncident >= 0;
+        if (!hitEntering) {
+            normalX = -normalX;
+            normalY = -normalY;
+            normalZ = -normalZ;
+            cosIncident = -cosIncident;
+        }
+        hitCosIncident = cosIncident;
     }
 
     // ---- cook-torrance ------------------------------------------------------------------------
