@@ -203,14 +203,20 @@ final class TracerWorker {
         RowHits h = hits;
         CameraRows r = rows;
         int m = h.material[ray];
+        // the shading reads the hit from where describeHit() leaves it
+        hitX = h.px[ray];
+        hitY = h.py[ray];
+        hitZ = h.pz[ray];
+        normalX = h.nx[ray];
+        normalY = h.ny[ray];
+        normalZ = h.nz[ray];
+        hitCosIncident = h.cosIncident[ray];
+        hitOffset = h.offset[ray];
+        hitEntering = h.entering[ray];
         if (scene.materialType[m] == RenderScene.METAL) {
-            shadeMetal(m, h.px[ray], h.py[ray], h.pz[ray], h.nx[ray], h.ny[ray], h.nz[ray],
-                    r.dirX[ray], r.dirY[ray], r.dirZ[ray], h.cosIncident[ray], h.offset[ray], recursionMax, 1,
-                    h.skipNear(ray));
+            shadeMetal(m, r.dirX[ray], r.dirY[ray], r.dirZ[ray], recursionMax, 1, h.skipNear(ray));
         } else {
-            shadeGlass(m, h.px[ray], h.py[ray], h.pz[ray], h.nx[ray], h.ny[ray], h.nz[ray],
-                    r.dirX[ray], r.dirY[ray], r.dirZ[ray], h.cosIncident[ray], h.entering[ray], h.offset[ray],
-                    recursionMax, 1, h.skipNear(ray), h.skipFar(ray));
+            shadeGlass(m, r.dirX[ray], r.dirY[ray], r.dirZ[ray], recursionMax, 1, h.skipNear(ray), h.skipFar(ray));
         }
     }
 
@@ -327,23 +333,17 @@ final class TracerWorker {
         }
         describeHit(hit.hitT, hit.hitSphere, hit.hitPlane, ox, oy, oz, dx, dy, dz);
         int material = hitMaterial;
-        double px = hitX, py = hitY, pz = hitZ;
-        double nx = normalX, ny = normalY, nz = normalZ;
-        double cosIncident = hitCosIncident, offset = hitOffset;
-        boolean entering = hitEntering;
-        int skipNear = RayCaster.skipNear(hit.hitSphere, hit.hitPlane, entering);
-        int skipFar = RayCaster.skipFar(hit.hitSphere, hit.hitPlane, entering);
+        int skipNear = RayCaster.skipNear(hit.hitSphere, hit.hitPlane, hitEntering);
+        int skipFar = RayCaster.skipFar(hit.hitSphere, hit.hitPlane, hitEntering);
         if (phong) {
-            shadePhong(material, px, py, pz, nx, ny, nz, dx, dy, dz, cosIncident, entering, offset, hitsLeft, weight,
-                    skipNear, skipFar);
+            shadePhong(material, hitX, hitY, hitZ, normalX, normalY, normalZ, dx, dy, dz, hitCosIncident, hitEntering,
+                    hitOffset, hitsLeft, weight, skipNear, skipFar);
             return;
         }
         switch (s.materialType[material]) {
-            case RenderScene.MATTE -> shadeMatte(material, px, py, pz, nx, ny, nz, offset, skipNear);
-            case RenderScene.METAL -> shadeMetal(material, px, py, pz, nx, ny, nz, dx, dy, dz, cosIncident, offset,
-                    hitsLeft, weight, skipNear);
-            default -> shadeGlass(material, px, py, pz, nx, ny, nz, dx, dy, dz, cosIncident, entering, offset,
-                    hitsLeft, weight, skipNear, skipFar);
+            case RenderScene.MATTE -> shadeMatte(material, skipNear);
+            case RenderScene.METAL -> shadeMetal(material, dx, dy, dz, hitsLeft, weight, skipNear);
+            default -> shadeGlass(material, dx, dy, dz, hitsLeft, weight, skipNear, skipFar);
         }
     }
 
@@ -420,9 +420,9 @@ final class TracerWorker {
     // ---- cook-torrance ------------------------------------------------------------------------
 
     /** Lambert: color / pi x E x cos for each unshadowed light, plus ambient x color. */
-    private void shadeMatte(int m, double px, double py, double pz, double nx, double ny, double nz, double offset,
-                            int skipNear) {
+    private void shadeMatte(int m, int skipNear) {
         RenderScene s = scene;
+        double px = hitX, py = hitY, pz = hitZ, nx = normalX, ny = normalY, nz = normalZ, offset = hitOffset;
         double sumR = 0, sumG = 0, sumB = 0;
         double ox = px + offset * nx, oy = py + offset * ny, oz = pz + offset * nz;
         for (int light = 0; light < s.lightCount; light++) {
@@ -441,10 +441,10 @@ final class TracerWorker {
     }
 
     /** A mirror weighted by Schlick's Fresnel (F0 = color), plus a GGX highlight when rough. */
-    private void shadeMetal(int m, double px, double py, double pz, double nx, double ny, double nz,
-                            double dx, double dy, double dz, double cosView, double offset, int hitsLeft, double weight,
-                            int skipNear) {
+    private void shadeMetal(int m, double dx, double dy, double dz, int hitsLeft, double weight, int skipNear) {
         RenderScene s = scene;
+        double px = hitX, py = hitY, pz = hitZ, nx = normalX, ny = normalY, nz = normalZ;
+        double cosView = hitCosIncident, offset = hitOffset;
         int c = 3 * m;
         double f0R = s.materialColor[c], f0G = s.materialColor[c + 1], f0B = s.materialColor[c + 2];
         double ox = px + offset * nx, oy = py + offset * ny, oz = pz + offset * nz;
@@ -484,10 +484,12 @@ final class TracerWorker {
     }
 
     /** A smooth dielectric: reflection and refraction weighted by the exact Fresnel equations. */
-    private void shadeGlass(int m, double px, double py, double pz, double nx, double ny, double nz,
-                            double dx, double dy, double dz, double cosIncident, boolean entering, double offset,
-                            int hitsLeft, double weight, int skipNear, int skipFar) {
+    private void shadeGlass(int m, double dx, double dy, double dz, int hitsLeft, double weight, int skipNear,
+                            int skipFar) {
         RenderScene s = scene;
+        double px = hitX, py = hitY, pz = hitZ, nx = normalX, ny = normalY, nz = normalZ;
+        double cosIncident = hitCosIncident, offset = hitOffset;
+        boolean entering = hitEntering;
         double sumR = 0, sumG = 0, sumB = 0;
         if (hitsLeft > 1) {
             double eta = entering ? 1 / s.ior[m] : s.ior[m];
