@@ -336,8 +336,7 @@ final class TracerWorker {
         int skipNear = RayCaster.skipNear(hit.hitSphere, hit.hitPlane, hitEntering);
         int skipFar = RayCaster.skipFar(hit.hitSphere, hit.hitPlane, hitEntering);
         if (phong) {
-            shadePhong(material, hitX, hitY, hitZ, normalX, normalY, normalZ, dx, dy, dz, hitCosIncident, hitEntering,
-                    hitOffset, hitsLeft, weight, skipNear, skipFar);
+            shadePhong(material, dx, dy, dz, hitsLeft, weight, skipNear, skipFar);
             return;
         }
         switch (s.materialType[material]) {
@@ -347,7 +346,9 @@ final class TracerWorker {
         }
     }
 
-    // the surface describeHit() found: point, facing normal, cosine of incidence, offset, material
+    // the surface describeHit() found: point, facing normal, cosine of incidence, offset, material.
+    // The shade methods read it on entry, before any ray they trace overwrites it: a dozen values
+    // a call fewer to pass on the stack.
     private double hitX, hitY, hitZ, normalX, normalY, normalZ, hitCosIncident, hitOffset;
     private boolean hitEntering;
     private int hitMaterial;
@@ -544,10 +545,12 @@ final class TracerWorker {
      * The seed's model: ka ambient color + sum over lights (kd color E n.l + ks E (r.v)^shininess)
      * + ks I_reflected + kt color I_transmitted, with ka = kd. Glass occluders pass kt of the light.
      */
-    private void shadePhong(int m, double px, double py, double pz, double nx, double ny, double nz,
-                            double dx, double dy, double dz, double cosIncident, boolean entering, double offset,
-                            int hitsLeft, double weight, int skipNear, int skipFar) {
+    private void shadePhong(int m, double dx, double dy, double dz, int hitsLeft, double weight, int skipNear,
+                            int skipFar) {
         RenderScene s = scene;
+        double px = hitX, py = hitY, pz = hitZ, nx = normalX, ny = normalY, nz = normalZ;
+        double cosIncident = hitCosIncident, offset = hitOffset;
+        boolean entering = hitEntering;
         int c = 3 * m;
         double colorR = s.materialColor[c], colorG = s.materialColor[c + 1], colorB = s.materialColor[c + 2];
         double kd = s.kd[m], ks = s.ks[m], kt = s.kt[m];
