@@ -161,17 +161,38 @@ final class TracerWorker {
             }
             describeHit(h.t[ray], h.sphere[ray], h.plane[ray], camera.eyeX, camera.eyeY, camera.eyeZ,
                     r.dirX[ray], r.dirY[ray], r.dirZ[ray]);
-            h.px[ray] = hitX;
-            h.py[ray] = hitY;
-            h.pz[ray] = hitZ;
-            h.nx[ray] = normalX;
-            h.ny[ray] = normalY;
-            h.nz[ray] = normalZ;
-            h.cosIncident[ray] = hitCosIncident;
-            h.offset[ray] = hitOffset;
-            h.entering[ray] = hitEntering;
-            h.material[ray] = hitMaterial;
+            keepHit(ray);
         }
+    }
+
+    /** Stores the surface describeHit() found as camera ray i's, in the row's hits. */
+    private void keepHit(int ray) {
+        RowHits h = hits;
+        h.px[ray] = hitX;
+        h.py[ray] = hitY;
+        h.pz[ray] = hitZ;
+        h.nx[ray] = normalX;
+        h.ny[ray] = normalY;
+        h.nz[ray] = normalZ;
+        h.cosIncident[ray] = hitCosIncident;
+        h.offset[ray] = hitOffset;
+        h.entering[ray] = hitEntering;
+        h.material[ray] = hitMaterial;
+    }
+
+    /** Puts camera ray i's surface back where describeHit() leaves it, for the shade methods to read. */
+    private void recallHit(int ray) {
+        RowHits h = hits;
+        hitX = h.px[ray];
+        hitY = h.py[ray];
+        hitZ = h.pz[ray];
+        normalX = h.nx[ray];
+        normalY = h.ny[ray];
+        normalZ = h.nz[ray];
+        hitCosIncident = h.cosIncident[ray];
+        hitOffset = h.offset[ray];
+        hitEntering = h.entering[ray];
+        hitMaterial = h.material[ray];
     }
 
     /**
@@ -206,16 +227,7 @@ final class TracerWorker {
         RowHits h = hits;
         CameraRows r = rows;
         int m = h.material[ray];
-        // the shading reads the hit from where describeHit() leaves it
-        hitX = h.px[ray];
-        hitY = h.py[ray];
-        hitZ = h.pz[ray];
-        normalX = h.nx[ray];
-        normalY = h.ny[ray];
-        normalZ = h.nz[ray];
-        hitCosIncident = h.cosIncident[ray];
-        hitOffset = h.offset[ray];
-        hitEntering = h.entering[ray];
+        recallHit(ray);
         if (scene.materialType[m] == RenderScene.METAL) {
             shadeMetal(m, r.dirX[ray], r.dirY[ray], r.dirZ[ray], recursionMax, 1, h.skipNear(ray));
         } else {
@@ -244,9 +256,9 @@ final class TracerWorker {
         for (int j = 0; j < count; j++) {
             int ray = h.matteRays[j];
             int c = 3 * h.material[ray];
-            r.radianceR[ray] = s.materialColor[c] * (h.sumR[j] * INV_PI + s.ambientR);
-            r.radianceG[ray] = s.materialColor[c + 1] * (h.sumG[j] * INV_PI + s.ambientG);
-            r.radianceB[ray] = s.materialColor[c + 2] * (h.sumB[j] * INV_PI + s.ambientB);
+            r.radianceR[ray] = lambert(s.materialColor[c], h.sumR[j], s.ambientR);
+            r.radianceG[ray] = lambert(s.materialColor[c + 1], h.sumG[j], s.ambientG);
+            r.radianceB[ray] = lambert(s.materialColor[c + 2], h.sumB[j], s.ambientB);
         }
     }
 
@@ -439,9 +451,17 @@ final class TracerWorker {
             }
         }
         int c = 3 * m;
-        outR = s.materialColor[c] * (sumR * INV_PI + s.ambientR);
-        outG = s.materialColor[c + 1] * (sumG * INV_PI + s.ambientG);
-        outB = s.materialColor[c + 2] * (sumB * INV_PI + s.ambientB);
+        outR = lambert(s.materialColor[c], sumR, s.ambientR);
+        outG = lambert(s.materialColor[c + 1], sumG, s.ambientG);
+        outB = lambert(s.materialColor[c + 2], sumB, s.ambientB);
+    }
+
+    /**
+     * One channel of a Lambert surface's radiance: color / pi x the irradiance summed over the lights
+     * it sees (n.l applied), plus ambient x color.
+     */
+    private static double lambert(double color, double irradiance, double ambient) {
+        return color * (irradiance * INV_PI + ambient);
     }
 
     /** A mirror weighted by Schlick's Fresnel (F0 = color), plus a GGX highlight when rough. */
