@@ -34,6 +34,11 @@ final class RayCaster {
         return INSIDE_BASE + sphere;
     }
 
+    /** The sphere a ray with this skip code starts inside of (see {@link #insideOf}), or -1. */
+    static int sphereInside(int skipCode) {
+        return skipCode < INSIDE_END && skipCode >= INSIDE_BASE ? skipCode - INSIDE_BASE : -1;
+    }
+
     private static final int INSIDE_BASE = Integer.MIN_VALUE + 1;
     /** Codes below this are {@link #insideOf} codes (or the camera's); sphere counts stay far below 2^30. */
     private static final int INSIDE_END = Integer.MIN_VALUE / 2;

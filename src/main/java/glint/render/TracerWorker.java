@@ -533,8 +533,14 @@ final class TracerWorker {
             double tB = (1 - reflectance) * s.materialColor[c + 2];
             double childWeight = weight * Math.max(tR, Math.max(tG, tB));
             if (reflectance < 1 && childWeight >= minWeight) {
-                traceRefracted(px, py, pz, nx, ny, nz, dx, dy, dz, cosIncident, eta, offset, hitsLeft, childWeight,
-                        skipNear, skipFar);
+                int entered = RayCaster.sphereInside(skipFar);
+                if (entered >= 0 && s.sphereIsEmpty[entered]) {
+                    traceInsideEmptySphere(entered, m, px, py, pz, nx, ny, nz, dx, dy, dz, cosIncident, eta,
+                            hitsLeft - 1, childWeight);
+                } else {
+                    traceRefracted(px, py, pz, nx, ny, nz, dx, dy, dz, cosIncident, eta, offset, hitsLeft,
+                            childWeight, skipNear, skipFar);
+                }
                 sumR += tR * outR;
                 sumG += tG * outG;
                 sumB += tB * outB;
@@ -560,6 +566,73 @@ final class TracerWorker {
             trace(px + offset * nx, py + offset * ny, pz + offset * nz,
                     dx + k * nx, dy + k * ny, dz + k * nz, hitsLeft - 1, weight, skipNear);
         }
+    }
+
+    /**
+     * The radiance brought back by the ray refracted into empty glass sphere i at p (on the sphere;
+     * n the outward normal, d the incident direction, eta = 1 / ior), as {@link #trace} would find
+     * it, without a search or a Fresnel evaluation per bounce. Nothing else reaches into the sphere,
+     * so the ray bounces inside it, and at each bounce a ray leaves it and the rest reflects on. Both
+     * ends of a chord meet the sphere at the same angle, so every bounce meets it at the angle of
+     * the refracted ray: each chord is 2 r cos(theta) long, every bounce reflects the same fraction,
+     * and every ray that leaves bends back to the incident angle. {@code hitsLeft} and
+     * {@code weight} are the refracted ray's.
+     */
+    private void traceInsideEmptySphere(int i, int m, double px, double py, double pz, double nx, double ny,
+                                        double nz, double dx, double dy, double dz, double cosOutside, double eta,
+                                        int hitsLeft, double weight) {
+        double[] t = refracted;
+        Optics.refract(dx, dy, dz, nx, ny, nz, cosOutside, eta, t);
+        double ux = t[0], uy = t[1], uz = t[2]; // the ray inside, unit
+        double cosInside = -(ux * nx + uy * ny + uz * nz);
+        RenderScene s = scene;
+        int k = 4 * i;
+        double cx = s.spheres[k], cy = s.spheres[k + 1], cz = s.spheres[k + 2], radius = s.spheres[k + 3];
+        double chord = 2 * radius * cosInside, inverseRadius = 1 / radius;
+        double ior = s.ior[m];
+        double reflectance = exactFresnel
+                ? Optics.fresnelDielectric(cosInside, ior) : Optics.schlickDielectric(cosInside, ior);
+        int c = 3 * m;
+        double tR = (1 - reflectance) * s.materialColor[c];
+        double tG = (1 - reflectance) * s.materialColor[c + 1];
+        double tB = (1 - reflectance) * s.materialColor[c + 2];
+        double transmitted = Math.max(tR, Math.max(tG, tB));
+        double bend = ior * cosInside - cosOutside; // refraction out: ior u + bend (-n)
+        int leaving = RayCaster.surfaceId(i, -1);
+        double sumR = 0, sumG = 0, sumB = 0, reflected = 1; // reflected: the bounces' reflectances so far
+        for (; ; hitsLeft--) {
+            caster.rays++; // the chord, found without a search
+            double qx = px + chord * ux, qy = py + chord * uy, qz = pz + chord * uz;
+            if (hitsLeft <= 1) {
+                break; // glass with no hits left returns nothing
+            }
+            double ox = (qx - cx) * inverseRadius, oy = (qy - cy) * inverseRadius, oz = (qz - cz) * inverseRadius;
+            if (reflectance < 1 && weight * transmitted >= minWeight) {
+                double offset = epsilon * atLeastOne(Math.sqrt(qx * qx + qy * qy + qz * qz));
+                double lx = ior * ux - bend * ox, ly = ior * uy - bend * oy, lz = ior * uz - bend * oz;
+                double inv = 1 / Math.sqrt(lx * lx + ly * ly + lz * lz);
+                trace(qx + offset * ox, qy + offset * oy, qz + offset * oz, lx * inv, ly * inv, lz * inv,
+                        hitsLeft - 1, weight * transmitted, leaving);
+                sumR += reflected * tR * outR;
+                sumG += reflected * tG * outG;
+                sumB += reflected * tB * outB;
+            }
+            if (!(weight * reflectance >= minWeight)) {
+                break;
+            }
+            reflected *= reflectance;
+            weight *= reflectance;
+            double kr = 2 * cosInside;
+            ux -= kr * ox;
+            uy -= kr * oy;
+            uz -= kr * oz;
+            px = qx;
+            py = qy;
+            pz = qz;
+        }
+        outR = sumR;
+        outG = sumG;
+        outB = sumB;
     }
 
     // ---- phong --------------------------------------------------------------------------------
