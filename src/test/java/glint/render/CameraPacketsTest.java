@@ -83,15 +83,8 @@ class CameraPacketsTest {
         RenderSettings plain = new RenderSettings(Shading.COOK_TORRANCE, 5, 1e-3, Renders.EPSILON);
         FrameBuffer expected = new FrameBuffer(width, height);
         FrameBuffer actual = new FrameBuffer(width, height);
-        long plainRays, packetRays;
-        try (Tracer tracer = new Tracer(2)) {
-            tracer.render(RenderScene.compile(scene, plain), expected, samples, 0, 3);
-            plainRays = tracer.raysCast();
-        }
-        try (Tracer tracer = new Tracer(2)) {
-            tracer.render(RenderScene.compile(scene, plain.withSimd(true)), actual, samples, 0, 3);
-            packetRays = tracer.raysCast();
-        }
+        long plainRays = Renders.renderCountingRays(RenderScene.compile(scene, plain), expected, samples);
+        long packetRays = Renders.renderCountingRays(RenderScene.compile(scene, plain.withSimd(true)), actual, samples);
         assertArrayEquals(expected.rgb(), actual.rgb());
         assertEquals(plainRays, packetRays, "rays cast");
     }

@@ -133,17 +133,10 @@ class InsideEmptySphereTest {
     private static void assertSameImage(Scene scene, RenderSettings settings, int width, int height, int samples) {
         FrameBuffer followed = new FrameBuffer(width, height);
         FrameBuffer searched = new FrameBuffer(width, height);
-        long raysFollowed, raysSearched;
-        try (Tracer tracer = new Tracer(2)) {
-            tracer.render(RenderScene.compile(scene, settings), followed, samples, 0, 3);
-            raysFollowed = tracer.raysCast();
-        }
+        long raysFollowed = Renders.renderCountingRays(RenderScene.compile(scene, settings), followed, samples);
         RenderScene withoutEmptySpheres = RenderScene.compile(scene, settings);
         Arrays.fill(withoutEmptySpheres.sphereIsEmpty, false);
-        try (Tracer tracer = new Tracer(2)) {
-            tracer.render(withoutEmptySpheres, searched, samples, 0, 3);
-            raysSearched = tracer.raysCast();
-        }
+        long raysSearched = Renders.renderCountingRays(withoutEmptySpheres, searched, samples);
         float[] a = followed.rgb(), b = searched.rgb();
         for (int i = 0; i < a.length; i++) {
             if (!(Math.abs(a[i] - b[i]) <= RELATIVE * Math.max(DARK, Math.abs(b[i])))) {

@@ -35,6 +35,14 @@ final class Renders {
         return frame;
     }
 
+    /** Renders the compiled scene into {@code target} with a new 2-thread tracer, in 3 x 3 tiles; returns the rays cast. */
+    static long renderCountingRays(RenderScene compiled, FrameBuffer target, int samples) {
+        try (Tracer tracer = new Tracer(2)) {
+            tracer.render(compiled, target, samples, 0, 3);
+            return tracer.raysCast();
+        }
+    }
+
     /**
      * The unit direction of the camera ray through the centre of pixel (x, y) for a camera at the
      * origin looking along +z with up +y, computed from the definition: the image plane at z = 1
