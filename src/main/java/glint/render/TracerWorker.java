@@ -534,9 +534,9 @@ final class TracerWorker {
             double childWeight = weight * Math.max(tR, Math.max(tG, tB));
             if (reflectance < 1 && childWeight >= minWeight) {
                 int entered = RayCaster.sphereInside(skipFar);
-                if (entered >= 0 && s.sphereIsEmpty[entered]) {
-                    traceInsideEmptySphere(entered, m, px, py, pz, nx, ny, nz, dx, dy, dz, cosIncident, eta,
-                            hitsLeft - 1, childWeight);
+                if (entered >= 0 && s.sphereIsEmpty[entered]
+                        && Optics.refract(dx, dy, dz, nx, ny, nz, cosIncident, eta, refracted)) {
+                    traceInsideEmptySphere(entered, m, px, py, pz, nx, ny, nz, cosIncident, hitsLeft - 1, childWeight);
                 } else {
                     traceRefracted(px, py, pz, nx, ny, nz, dx, dy, dz, cosIncident, eta, offset, hitsLeft,
                             childWeight, skipNear, skipFar);
@@ -570,8 +570,9 @@ final class TracerWorker {
 
     /**
      * The radiance brought back by the ray refracted into empty glass sphere i at p (on the sphere;
-     * n the outward normal, d the incident direction, eta = 1 / ior), as {@link #trace} would find
-     * it, without a search or a Fresnel evaluation per bounce. Nothing else reaches into the sphere,
+     * n the outward normal, {@code cosOutside} the cosine of incidence there, the refracted unit
+     * direction in {@link #refracted}), as {@link #trace} would find it, without a search or a
+     * Fresnel evaluation per bounce. Nothing else reaches into the sphere,
      * so the ray bounces inside it, and at each bounce a ray leaves it and the rest reflects on. Both
      * ends of a chord meet the sphere at the same angle, so every bounce meets it at the angle of
      * the refracted ray: each chord is 2 r cos(theta) long, every bounce reflects the same fraction,
@@ -579,11 +580,8 @@ final class TracerWorker {
      * {@code weight} are the refracted ray's.
      */
     private void traceInsideEmptySphere(int i, int m, double px, double py, double pz, double nx, double ny,
-                                        double nz, double dx, double dy, double dz, double cosOutside, double eta,
-                                        int hitsLeft, double weight) {
-        double[] t = refracted;
-        Optics.refract(dx, dy, dz, nx, ny, nz, cosOutside, eta, t);
-        double ux = t[0], uy = t[1], uz = t[2]; // the ray inside, unit
+                                        double nz, double cosOutside, int hitsLeft, double weight) {
+        double ux = refracted[0], uy = refracted[1], uz = refracted[2]; // the ray inside, unit
         double cosInside = -(ux * nx + uy * ny + uz * nz);
         RenderScene s = scene;
         int k = 4 * i;
