@@ -571,13 +571,12 @@ final class TracerWorker {
     /**
      * The radiance brought back by the ray refracted into empty glass sphere i at p (on the sphere;
      * n the outward normal, {@code cosOutside} the cosine of incidence there, the refracted unit
-     * direction in {@link #refracted}), as {@link #trace} would find it, without a search or a
-     * Fresnel evaluation per bounce. Nothing else reaches into the sphere,
-     * so the ray bounces inside it, and at each bounce a ray leaves it and the rest reflects on. Both
-     * ends of a chord meet the sphere at the same angle, so every bounce meets it at the angle of
-     * the refracted ray: each chord is 2 r cos(theta) long, every bounce reflects the same fraction,
-     * and every ray that leaves bends back to the incident angle. {@code hitsLeft} and
-     * {@code weight} are the refracted ray's.
+     * direction in {@link #refracted}), as {@link #trace} would find it, but without a search or a
+     * Fresnel evaluation per bounce. Nothing else reaches into the sphere, so the ray bounces inside
+     * it, and at each bounce a ray leaves it and the rest reflects on. Both ends of a chord meet the
+     * sphere at the same angle, so every bounce meets it at the refracted ray's angle: each chord is
+     * 2 r cos(theta) long, every bounce reflects the same fraction, and every ray that leaves bends
+     * back to the incident angle. {@code hitsLeft} and {@code weight} are the refracted ray's.
      */
     private void traceInsideEmptySphere(int i, int m, double px, double py, double pz, double nx, double ny,
                                         double nz, double cosOutside, int hitsLeft, double weight) {
@@ -597,33 +596,34 @@ final class TracerWorker {
         double transmitted = Math.max(tR, Math.max(tG, tB));
         double bend = ior * cosInside - cosOutside; // refraction out: ior u + bend (-n)
         int leaving = RayCaster.surfaceId(i, -1);
-        double sumR = 0, sumG = 0, sumB = 0, reflected = 1; // reflected: the bounces' reflectances so far
+        double sumR = 0, sumG = 0, sumB = 0, reflectedSoFar = 1; // the product of the bounces' reflectances
         for (; ; hitsLeft--) {
             caster.rays++; // the chord, found without a search
-            double qx = px + chord * ux, qy = py + chord * uy, qz = pz + chord * uz;
             if (hitsLeft <= 1) {
                 break; // glass with no hits left returns nothing
             }
-            double ox = (qx - cx) * inverseRadius, oy = (qy - cy) * inverseRadius, oz = (qz - cz) * inverseRadius;
+            double qx = px + chord * ux, qy = py + chord * uy, qz = pz + chord * uz; // the chord's end
+            double outwardX = (qx - cx) * inverseRadius, outwardY = (qy - cy) * inverseRadius,
+                    outwardZ = (qz - cz) * inverseRadius;
             if (reflectance < 1 && weight * transmitted >= minWeight) {
                 double offset = epsilon * atLeastOne(Math.sqrt(qx * qx + qy * qy + qz * qz));
-                double lx = ior * ux - bend * ox, ly = ior * uy - bend * oy, lz = ior * uz - bend * oz;
+                double lx = ior * ux - bend * outwardX, ly = ior * uy - bend * outwardY, lz = ior * uz - bend * outwardZ;
                 double inv = 1 / Math.sqrt(lx * lx + ly * ly + lz * lz);
-                trace(qx + offset * ox, qy + offset * oy, qz + offset * oz, lx * inv, ly * inv, lz * inv,
-                        hitsLeft - 1, weight * transmitted, leaving);
-                sumR += reflected * tR * outR;
-                sumG += reflected * tG * outG;
-                sumB += reflected * tB * outB;
+                trace(qx + offset * outwardX, qy + offset * outwardY, qz + offset * outwardZ, lx * inv, ly * inv,
+                        lz * inv, hitsLeft - 1, weight * transmitted, leaving);
+                sumR += reflectedSoFar * tR * outR;
+                sumG += reflectedSoFar * tG * outG;
+                sumB += reflectedSoFar * tB * outB;
             }
             if (!(weight * reflectance >= minWeight)) {
                 break;
             }
-            reflected *= reflectance;
+            reflectedSoFar *= reflectance;
             weight *= reflectance;
-            double kr = 2 * cosInside;
-            ux -= kr * ox;
-            uy -= kr * oy;
-            uz -= kr * oz;
+            double twiceCos = 2 * cosInside; // the reflection inside: u - 2 (u.n) n, u.n = cos(theta)
+            ux -= twiceCos * outwardX;
+            uy -= twiceCos * outwardY;
+            uz -= twiceCos * outwardZ;
             px = qx;
             py = qy;
             pz = qz;
