@@ -77,7 +77,8 @@ final class RayCaster {
         hitT = Intersect.MISS;
         hitSphere = -1;
         hitPlane = -1;
-        if (skipCode < INSIDE_END && leavesEmptySphere(s, skipCode - INSIDE_BASE, ox, oy, oz, dx, dy, dz)) {
+        int inside = sphereInside(skipCode);
+        if (inside >= 0 && leavesEmptySphere(s, inside, ox, oy, oz, dx, dy, dz)) {
             return true;
         }
         skip = skipped(skipCode);

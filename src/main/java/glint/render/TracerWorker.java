@@ -380,7 +380,7 @@ final class TracerWorker {
         // the offset scales with |p|, taken before p is refined: the refinement moves p by far less
         // than a rounding step of the scale, and this way the square root runs alongside the
         // normal's rather than after it
-        hitOffset = epsilon * atLeastOne(Math.sqrt(px * px + py * py + pz * pz));
+        hitOffset = offsetAt(px, py, pz);
         if (sphere >= 0) {
             onSphere(sphere, px, py, pz);
         } else {
@@ -517,8 +517,7 @@ final class TracerWorker {
         double sumR = 0, sumG = 0, sumB = 0;
         if (hitsLeft > 1) {
             double eta = entering ? 1 / s.ior[m] : s.ior[m];
-            double reflectance = exactFresnel
-                    ? Optics.fresnelDielectric(cosIncident, eta) : Optics.schlickDielectric(cosIncident, eta);
+            double reflectance = glassReflectance(cosIncident, eta);
             if (weight * reflectance >= minWeight) {
                 double k = 2 * cosIncident;
                 trace(px + offset * nx, py + offset * ny, pz + offset * nz,
@@ -587,8 +586,7 @@ final class TracerWorker {
         double cx = s.spheres[k], cy = s.spheres[k + 1], cz = s.spheres[k + 2], radius = s.spheres[k + 3];
         double chord = 2 * radius * cosInside, inverseRadius = 1 / radius;
         double ior = s.ior[m];
-        double reflectance = exactFresnel
-                ? Optics.fresnelDielectric(cosInside, ior) : Optics.schlickDielectric(cosInside, ior);
+        double reflectance = glassReflectance(cosInside, ior);
         int c = 3 * m;
         double tR = (1 - reflectance) * s.materialColor[c];
         double tG = (1 - reflectance) * s.materialColor[c + 1];
@@ -606,7 +604,7 @@ final class TracerWorker {
             double outwardX = (qx - cx) * inverseRadius, outwardY = (qy - cy) * inverseRadius,
                     outwardZ = (qz - cz) * inverseRadius;
             if (reflectance < 1 && weight * transmitted >= minWeight) {
-                double offset = epsilon * atLeastOne(Math.sqrt(qx * qx + qy * qy + qz * qz));
+                double offset = offsetAt(qx, qy, qz);
                 double lx = ior * ux - bend * outwardX, ly = ior * uy - bend * outwardY, lz = ior * uz - bend * outwardZ;
                 double inv = 1 / Math.sqrt(lx * lx + ly * ly + lz * lz);
                 trace(qx + offset * outwardX, qy + offset * outwardY, qz + offset * outwardZ, lx * inv, ly * inv,
@@ -698,6 +696,16 @@ final class TracerWorker {
         outR = sumR;
         outG = sumG;
         outB = sumB;
+    }
+
+    /** The offset of rays leaving point p: epsilon scaled by max(1, |p|). */
+    private double offsetAt(double px, double py, double pz) {
+        return epsilon * atLeastOne(Math.sqrt(px * px + py * py + pz * pz));
+    }
+
+    /** The fraction a smooth glass boundary reflects, by the configured Fresnel model (eta = n_incident / n_transmitted). */
+    private double glassReflectance(double cosIncident, double eta) {
+        return exactFresnel ? Optics.fresnelDielectric(cosIncident, eta) : Optics.schlickDielectric(cosIncident, eta);
     }
 
     /**
