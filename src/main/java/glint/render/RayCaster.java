@@ -82,7 +82,12 @@ final class RayCaster {
             return true;
         }
         skip = skipped(skipCode);
-        if (s.bvh == null) {
+        NeighbourCells around = skip > 0 ? s.neighbours[skip - 1] : null;
+        if (around != null) {
+            // leaving a sphere on its outer side: the planes, then the spheres listed for its direction
+            nearestPlane(s, ox, oy, oz, dx, dy, dz);
+            nearestListedSphere(s, around, ox, oy, oz, dx, dy, dz);
+        } else if (s.bvh == null) {
             nearestSphereIn(s, 0, s.sphereCount, ox, oy, oz, dx, dy, dz);
             nearestPlane(s, ox, oy, oz, dx, dy, dz);
         } else {
@@ -137,6 +142,28 @@ final class RayCaster {
             if (i + 1 == skip) {
                 continue;
             }
+            int k = 4 * i;
+            double t = Intersect.sphereBefore(spheres[k], spheres[k + 1], spheres[k + 2], spheres[k + 3],
+                    ox, oy, oz, dx, dy, dz, hitT);
+            if (t < hitT) {
+                hitT = t;
+                hitSphere = i;
+                hitPlane = -1;
+            }
+        }
+    }
+
+    /**
+     * The nearest of the spheres the cells list for direction d, nearest first: stops at the first
+     * that no ray from within the cells' reach can meet before the hit found so far.
+     */
+    private void nearestListedSphere(RenderScene s, NeighbourCells around, double ox, double oy, double oz,
+                                     double dx, double dy, double dz) {
+        double[] spheres = s.spheres, near = around.cellNear;
+        int[] list = around.cellSpheres;
+        int cell = around.cell(dx, dy, dz);
+        for (int j = around.cellStart[cell], end = around.cellStart[cell + 1]; j < end && near[j] < hitT; j++) {
+            int i = list[j];
             int k = 4 * i;
             double t = Intersect.sphereBefore(spheres[k], spheres[k + 1], spheres[k + 2], spheres[k + 3],
                     ox, oy, oz, dx, dy, dz, hitT);

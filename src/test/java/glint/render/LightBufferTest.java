@@ -117,13 +117,13 @@ class LightBufferTest {
             }
             RenderScene s = scene(objects, Vector3d.ZERO);
             LightBuffer buffer = s.lightBuffers[0];
-            assertTrue(buffer.maxOffset <= Math.sin(LightBuffer.ANGLE_MARGIN) * gap * (1 + 1e-12));
+            assertTrue(buffer.maxOffset <= Math.sin(ConeCells.ANGLE_MARGIN) * gap * (1 + 1e-12));
             RayCaster caster = new RayCaster();
             // directions on the sphere's silhouette cone, turned in or out by up to twice the margin
             double halfAngle = Math.asin(radius / distance);
             for (int i = 0; i < 400; i++) {
                 double[] side = perpendicular(towards, randomUnit(random));
-                double angle = halfAngle + LightBuffer.ANGLE_MARGIN * random.nextDouble(-2, 2);
+                double angle = halfAngle + ConeCells.ANGLE_MARGIN * random.nextDouble(-2, 2);
                 double[] dir = {Math.cos(angle) * towards[0] + Math.sin(angle) * side[0],
                         Math.cos(angle) * towards[1] + Math.sin(angle) * side[1],
                         Math.cos(angle) * towards[2] + Math.sin(angle) * side[2]};
@@ -164,7 +164,7 @@ class LightBufferTest {
             assertTrue(listed, "direction " + i);
         }
         // only the sphere outside limits the offsets
-        assertEquals(Math.sin(LightBuffer.ANGLE_MARGIN) * (Math.sqrt(3.2 * 3.2 + 0.2 * 0.2) - 1), buffer.maxOffset, 1e-15);
+        assertEquals(Math.sin(ConeCells.ANGLE_MARGIN) * (Math.sqrt(3.2 * 3.2 + 0.2 * 0.2) - 1), buffer.maxOffset, 1e-15);
     }
 
     /**
@@ -185,7 +185,7 @@ class LightBufferTest {
             for (int i = 0; i < 100; i++) {
                 double[] side = perpendicular(towards, randomUnit(random));
                 double angle = i % 2 == 0 ? halfAngle * random.nextDouble()
-                        : halfAngle + LightBuffer.ANGLE_MARGIN * random.nextDouble(0, 0.999);
+                        : halfAngle + ConeCells.ANGLE_MARGIN * random.nextDouble(0, 0.999);
                 double[] d = {Math.cos(angle) * towards[0] + Math.sin(angle) * side[0],
                         Math.cos(angle) * towards[1] + Math.sin(angle) * side[1],
                         Math.cos(angle) * towards[2] + Math.sin(angle) * side[2]};
