@@ -139,17 +139,21 @@ final class RayCaster {
                                  double ox, double oy, double oz, double dx, double dy, double dz) {
         double[] spheres = s.spheres;
         for (int i = first; i < end; i++) {
-            if (i + 1 == skip) {
-                continue;
+            if (i + 1 != skip) {
+                keepIfNearer(spheres, i, ox, oy, oz, dx, dy, dz);
             }
-            int k = 4 * i;
-            double t = Intersect.sphereBefore(spheres[k], spheres[k + 1], spheres[k + 2], spheres[k + 3],
-                    ox, oy, oz, dx, dy, dz, hitT);
-            if (t < hitT) {
-                hitT = t;
-                hitSphere = i;
-                hitPlane = -1;
-            }
+        }
+    }
+
+    /** Tests sphere i; makes it the hit when the ray meets it nearer than the hit found so far. */
+    private void keepIfNearer(double[] spheres, int i, double ox, double oy, double oz, double dx, double dy, double dz) {
+        int k = 4 * i;
+        double t = Intersect.sphereBefore(spheres[k], spheres[k + 1], spheres[k + 2], spheres[k + 3],
+                ox, oy, oz, dx, dy, dz, hitT);
+        if (t < hitT) {
+            hitT = t;
+            hitSphere = i;
+            hitPlane = -1;
         }
     }
 
@@ -163,15 +167,7 @@ final class RayCaster {
         int[] list = around.cellSpheres;
         int cell = around.cell(dx, dy, dz);
         for (int j = around.cellStart[cell], end = around.cellStart[cell + 1]; j < end && near[j] < hitT; j++) {
-            int i = list[j];
-            int k = 4 * i;
-            double t = Intersect.sphereBefore(spheres[k], spheres[k + 1], spheres[k + 2], spheres[k + 3],
-                    ox, oy, oz, dx, dy, dz, hitT);
-            if (t < hitT) {
-                hitT = t;
-                hitSphere = i;
-                hitPlane = -1;
-            }
+            keepIfNearer(spheres, list[j], ox, oy, oz, dx, dy, dz);
         }
     }
 

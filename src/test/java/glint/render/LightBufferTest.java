@@ -48,16 +48,6 @@ class LightBufferTest {
         return everySphere;
     }
 
-    private static double[] randomUnit(SplittableRandom random) {
-        while (true) {
-            double x = random.nextDouble(-1, 1), y = random.nextDouble(-1, 1), z = random.nextDouble(-1, 1);
-            double length = Math.sqrt(x * x + y * y + z * z);
-            if (length > 0.1 && length <= 1) {
-                return new double[] {x / length, y / length, z / length};
-            }
-        }
-    }
-
     @Test
     void randomScenesAndPoints() {
         SplittableRandom random = new SplittableRandom(9);
@@ -82,7 +72,7 @@ class LightBufferTest {
                             random.nextDouble(-2 * extent, 2 * extent)};
                     double offset = i % 2 == 0 ? 1e-9 : s.lightBuffers[0].maxOffset * random.nextDouble(0, 2);
                     int skipped = random.nextInt(count + 1) - 1;
-                    if (assertSameAnswer(s, caster, p, randomUnit(random), offset,
+                    if (assertSameAnswer(s, caster, p, RandomScenes.unitVector(random), offset,
                             skipped < 0 ? 0 : RayCaster.surfaceId(skipped, -1))) {
                         blocked++;
                     } else {
@@ -105,13 +95,13 @@ class LightBufferTest {
         for (int trial = 0; trial < 50; trial++) {
             double radius = random.nextDouble(0.1, 1);
             double gap = random.nextDouble(1e-3, 0.1); // from the light to the sphere's surface
-            double[] towards = randomUnit(random);
+            double[] towards = RandomScenes.unitVector(random);
             double distance = radius + gap;
             Vector3d centre = new Vector3d(towards[0] * distance, towards[1] * distance, towards[2] * distance);
             List<SceneObject> objects = new ArrayList<>();
             objects.add(new SceneObject(new Sphere(centre, radius), MATTE));
             for (int i = 0; i < 30; i++) { // others further out, for a hierarchy and fuller cells
-                double[] u = randomUnit(random);
+                double[] u = RandomScenes.unitVector(random);
                 double far = random.nextDouble(3, 20);
                 objects.add(new SceneObject(new Sphere(new Vector3d(u[0] * far, u[1] * far, u[2] * far), 0.5), MATTE));
             }
@@ -122,7 +112,7 @@ class LightBufferTest {
             // directions on the sphere's silhouette cone, turned in or out by up to twice the margin
             double halfAngle = Math.asin(radius / distance);
             for (int i = 0; i < 400; i++) {
-                double[] side = perpendicular(towards, randomUnit(random));
+                double[] side = perpendicular(towards, RandomScenes.unitVector(random));
                 double angle = halfAngle + ConeCells.ANGLE_MARGIN * random.nextDouble(-2, 2);
                 double[] dir = {Math.cos(angle) * towards[0] + Math.sin(angle) * side[0],
                         Math.cos(angle) * towards[1] + Math.sin(angle) * side[1],
@@ -130,7 +120,7 @@ class LightBufferTest {
                 double reach = random.nextDouble(10, 1e4);
                 double[] p = {dir[0] * reach, dir[1] * reach, dir[2] * reach};
                 double offset = buffer.maxOffset * random.nextDouble(0.5, 1.0);
-                if (assertSameAnswer(s, caster, p, randomUnit(random), offset, 0)) {
+                if (assertSameAnswer(s, caster, p, RandomScenes.unitVector(random), offset, 0)) {
                     blocked++;
                 } else {
                     open++;
@@ -155,7 +145,7 @@ class LightBufferTest {
         LightBuffer buffer = scene(objects, new Vector3d(1.8, 0.2, 0)).lightBuffers[0];
         SplittableRandom random = new SplittableRandom(3);
         for (int i = 0; i < 1000; i++) {
-            double[] d = randomUnit(random);
+            double[] d = RandomScenes.unitVector(random);
             int cell = buffer.cell(d[0], d[1], d[2]);
             boolean listed = false;
             for (int j = buffer.cellStart[cell]; j < buffer.cellStart[cell + 1]; j++) {
@@ -176,14 +166,14 @@ class LightBufferTest {
     void everyDirectionWithinTheWidenedConeIsListed() {
         SplittableRandom random = new SplittableRandom(12);
         for (int trial = 0; trial < 3000; trial++) {
-            double[] towards = randomUnit(random);
+            double[] towards = RandomScenes.unitVector(random);
             double distance = random.nextDouble(1, 50);
             double radius = distance * random.nextDouble(1e-3, 0.9);
             double[] sphere = {towards[0] * distance, towards[1] * distance, towards[2] * distance, radius};
             LightBuffer buffer = LightBuffer.build(sphere, 1, 0, 0, 0, Long.MAX_VALUE);
             double halfAngle = Math.asin(radius / distance);
             for (int i = 0; i < 100; i++) {
-                double[] side = perpendicular(towards, randomUnit(random));
+                double[] side = perpendicular(towards, RandomScenes.unitVector(random));
                 double angle = i % 2 == 0 ? halfAngle * random.nextDouble()
                         : halfAngle + ConeCells.ANGLE_MARGIN * random.nextDouble(0, 0.999);
                 double[] d = {Math.cos(angle) * towards[0] + Math.sin(angle) * side[0],

@@ -79,16 +79,6 @@ class NeighbourCellsTest {
         return best;
     }
 
-    private static double[] randomUnit(SplittableRandom random) {
-        while (true) {
-            double x = random.nextDouble(-1, 1), y = random.nextDouble(-1, 1), z = random.nextDouble(-1, 1);
-            double length = Math.sqrt(x * x + y * y + z * z);
-            if (length > 0.1 && length <= 1) {
-                return new double[] {x / length, y / length, z / length};
-            }
-        }
-    }
-
     private static double dot(double[] a, double[] b) {
         return a[0] * b[0] + a[1] * b[1] + a[2] * b[2];
     }
@@ -107,7 +97,7 @@ class NeighbourCellsTest {
         for (int a = 0; a < 3; a++) {
             w[a] /= distance;
         }
-        double[] u = randomUnit(random);
+        double[] u = RandomScenes.unitVector(random);
         double along = dot(u, w);
         for (int a = 0; a < 3; a++) {
             u[a] -= along * w[a];
@@ -139,12 +129,12 @@ class NeighbourCellsTest {
                     int k = 4 * i;
                     for (int ray = 0; ray < 120; ray++) {
                         // a point on sphere i, moved out by up to the offset of a ray leaving it
-                        double[] n = randomUnit(random);
+                        double[] n = RandomScenes.unitVector(random);
                         double[] p = {s.spheres[k] + s.spheres[k + 3] * n[0], s.spheres[k + 1] + s.spheres[k + 3] * n[1],
                                 s.spheres[k + 2] + s.spheres[k + 3] * n[2]};
                         double offset = epsilon * Math.max(1, Math.sqrt(dot(p, p))) * random.nextDouble();
                         double[] o = {p[0] + offset * n[0], p[1] + offset * n[1], p[2] + offset * n[2]};
-                        double[] d = ray % 2 == 0 ? randomUnit(random)
+                        double[] d = ray % 2 == 0 ? RandomScenes.unitVector(random)
                                 : grazing(s, random.nextInt(s.sphereCount), o, random.nextDouble(-1e-6, 1e-6), random);
                         if (d == null || dot(d, n) <= 0) {
                             continue; // rays leave a sphere's outer side outwards

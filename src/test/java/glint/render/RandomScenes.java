@@ -2,11 +2,23 @@ package glint.render;
 
 import java.util.Locale;
 import java.util.Random;
+import java.util.SplittableRandom;
 
 /** Test helper: random scenes as scene-file text, from a seeded generator. */
 final class RandomScenes {
 
     private RandomScenes() {
+    }
+
+    /** A random unit vector, uniform over directions (rejection from the unit ball's shell). */
+    static double[] unitVector(SplittableRandom random) {
+        while (true) {
+            double x = random.nextDouble(-1, 1), y = random.nextDouble(-1, 1), z = random.nextDouble(-1, 1);
+            double length = Math.sqrt(x * x + y * y + z * z);
+            if (length > 0.1 && length <= 1) {
+                return new double[] {x / length, y / length, z / length};
+            }
+        }
     }
 
     /** A scene of 1 to 6 spheres (few enough to be searched one by one), a floor, 1 to 3 lights and a random camera. */
