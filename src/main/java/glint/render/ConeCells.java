@@ -13,8 +13,6 @@ final class ConeCells {
     static final double ANGLE_MARGIN = 1e-4;
     static final int FACES = 6;
 
-    /** Cells along each side of a cube face. */
-    final int side;
     /** Cell c lists spheres[cellStart[c] .. cellStart[c + 1]), in the order the spheres were given. */
     final int[] cellStart;
     final int[] cellSpheres;
@@ -24,8 +22,7 @@ final class ConeCells {
      */
     final double nearestSurface;
 
-    private ConeCells(int side, int[] cellStart, int[] cellSpheres, double nearestSurface) {
-        this.side = side;
+    private ConeCells(int[] cellStart, int[] cellSpheres, double nearestSurface) {
         this.cellStart = cellStart;
         this.cellSpheres = cellSpheres;
         this.nearestSurface = nearestSurface;
@@ -69,7 +66,7 @@ final class ConeCells {
         for (int j = 0; j < n; j++) {
             addToCells(rect, j, order[j], side, fill, cellSpheres);
         }
-        return new ConeCells(side, cellStart, cellSpheres, nearest);
+        return new ConeCells(cellStart, cellSpheres, nearest);
     }
 
     /** Entries in the lists. */
@@ -148,11 +145,6 @@ final class ConeCells {
     private static int cellOf(double s, int side) {
         int cell = (int) Math.floor((s + 1) * (side / 2.0));
         return Math.max(0, Math.min(side - 1, cell));
-    }
-
-    /** The cell holding direction (vx, vy, vz) from the point (not necessarily unit length, not zero). */
-    int cell(double vx, double vy, double vz) {
-        return cell(vx, vy, vz, side);
     }
 
     /**

@@ -227,8 +227,8 @@ public final class RenderScene {
      * Scenes with fewer spheres than this search them all for reflected and refracted rays: a few
      * sphere tests cost less than a cell lookup. Millions of instructions a frame of the render
      * thread (800x600, 1 sample, depth 5, one thread), without and with {@link NeighbourCells}:
-     * default scene 464-474 and 488-495, 5 glass spheres 392-408 and 398-402, 10 glass 573 and 509,
-     * 25 glass 739-769 and 615-637.
+     * default scene 464-474 and 488-495, 5 glass spheres 392-408 and 398-402, 10 glass 524-621 and
+     * 486-516, 25 glass 761-768 and 629-672 (docs/benchmarks.md, "Rays leaving a sphere").
      */
     static final int NEIGHBOUR_MIN_SPHERES = 8;
     /**
@@ -248,11 +248,11 @@ public final class RenderScene {
      */
     private NeighbourCells[] buildNeighbourCells() {
         NeighbourCells[] cells = new NeighbourCells[sphereCount];
-        long left = NEIGHBOUR_ENTRIES;
-        boolean phong = settings.shading() == Shading.PHONG;
         if (sphereCount < NEIGHBOUR_MIN_SPHERES || sphereCount > NEIGHBOUR_MAX_SPHERES) {
             return cells;
         }
+        long left = NEIGHBOUR_ENTRIES;
+        boolean phong = settings.shading() == Shading.PHONG;
         for (int i = 0; i < sphereCount; i++) {
             if ((!phong && materialType[sphereMaterial[i]] == MATTE) || left < NeighbourCells.CELL_INDEX_SIZE) {
                 continue;
