@@ -39,6 +39,11 @@ final class CameraRows {
         return px * scaleX + offsetX;
     }
 
+    /** Image x (pixels from the left, fractional) of screen x: the inverse of {@link #screenX}. */
+    double pixelOf(double sx) {
+        return (sx - offsetX) / scaleX;
+    }
+
     /** Screen y of image y (pixels from the top; screen y grows upwards). */
     double screenY(double py) {
         return py * scaleY + offsetY;

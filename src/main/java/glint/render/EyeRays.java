@@ -95,6 +95,16 @@ final class EyeRays {
         preparedFor = s;
     }
 
+    /** The left edge of sphere i's screen x range (possibly -infinity). */
+    double leftEdge(int sphere) {
+        return screenRange[4 * sphere];
+    }
+
+    /** The right edge of sphere i's screen x range (possibly +infinity). */
+    double rightEdge(int sphere) {
+        return screenRange[4 * sphere + 1];
+    }
+
     /** Keeps the spheres whose screen range meets the tile's rectangle [xLow, xHigh] x [yLow, yHigh]. */
     void aimTile(double xLow, double xHigh, double yLow, double yHigh) {
         int count = 0;

@@ -128,9 +128,17 @@ final class TracerWorker {
         lightMatteHits();
     }
 
-    /** Stage 1: the nearest hit of each camera ray of the row, swept left to right as in {@link #traceOneByOne}. */
+    /**
+     * Stage 1: the nearest hit of each camera ray of the row: sphere by sphere where no pixel of the
+     * row can show more spheres than a camera ray tests one by one, otherwise pixel by pixel, swept
+     * left to right as in {@link #traceOneByOne}.
+     */
     private void findHitsFromEye(int rays) {
         EyeRays eye = caster.eye;
+        if (scene.bvh == null || eye.rowCount <= RayCaster.MOST_SPHERES_SWEPT) {
+            findHitsSphereBySphere(rays);
+            return;
+        }
         if (eye.rowCount == 0) {
             for (int ray = 0; ray < rays; ray++) {
                 findHitFromEye(ray); // no sphere in the row: no pixel shows one
@@ -143,6 +151,71 @@ final class TracerWorker {
                 findHitFromEye(ray);
             }
         }
+    }
+
+    /**
+     * Stage 1 sphere by sphere: each sphere the row can show is tested against the rays of the
+     * pixels its screen range spans (and a pixel more on each side), in the order the sweep lists
+     * them, then every ray against the planes. Each ray meets the tests {@link
+     * RayCaster#nearestFromEye} gives it, in the same order, and at most a few more of spheres
+     * whose range it lies outside of, which it cannot meet: it finds the same hit. A loop over one
+     * sphere's rays does the same arithmetic for each, with no sweep and no call per ray.
+     */
+    private void findHitsSphereBySphere(int rays) {
+        RowHits h = hits;
+        CameraRows r = rows;
+        EyeRays eye = caster.eye;
+        RenderScene s = scene;
+        double[] t = h.t;
+        int[] sphereHit = h.sphere, planeHit = h.plane;
+        for (int ray = 0; ray < rays; ray++) {
+            t[ray] = Intersect.MISS;
+            sphereHit[ray] = -1;
+            planeHit[ray] = -1;
+        }
+        int pixels = rays / raysPerPixel;
+        double[] toCentre = eye.toCentre, c = eye.c, spheres = s.spheres;
+        double[] dirX = r.dirX, dirY = r.dirY, dirZ = r.dirZ;
+        for (int j = 0; j < eye.rowCount; j++) {
+            int i = eye.rowSpheres[j];
+            int first = raysPerPixel * pixelAtOrBefore(eye.leftEdge(i), pixels);
+            int end = raysPerPixel * (pixelAtOrAfter(eye.rightEdge(i), pixels) + 1);
+            double fx = toCentre[3 * i], fy = toCentre[3 * i + 1], fz = toCentre[3 * i + 2], ci = c[i];
+            double radius = spheres[4 * i + 3];
+            for (int ray = first; ray < end; ray++) {
+                double hitT = Intersect.sphereFrom(fx, fy, fz, ci, radius, dirX[ray], dirY[ray], dirZ[ray], t[ray]);
+                if (hitT < t[ray]) {
+                    t[ray] = hitT;
+                    sphereHit[ray] = i;
+                }
+            }
+        }
+        double[] planes = s.planes, numerators = eye.planeNumerator;
+        for (int p = 0, n = s.planeCount; p < n; p++) {
+            int k = 4 * p;
+            double px = planes[k], py = planes[k + 1], pz = planes[k + 2], numerator = numerators[p];
+            for (int ray = 0; ray < rays; ray++) {
+                double hitT = Intersect.planeFrom(numerator, px * dirX[ray] + py * dirY[ray] + pz * dirZ[ray], t[ray]);
+                if (hitT < t[ray]) {
+                    t[ray] = hitT;
+                    planeHit[ray] = p;
+                    sphereHit[ray] = -1;
+                }
+            }
+        }
+        caster.rays += rays;
+    }
+
+    /** A pixel of the row at or left of the one holding screen x (a pixel's margin on the safe side), in [0, pixels). */
+    private int pixelAtOrBefore(double screenX, int pixels) {
+        double pixel = Math.floor(rows.pixelOf(screenX)) - rowX0 - 1;
+        return pixel > 0 ? (int) Math.min(pixel, pixels - 1) : 0;
+    }
+
+    /** A pixel of the row at or right of the one holding screen x, in [0, pixels). */
+    private int pixelAtOrAfter(double screenX, int pixels) {
+        double pixel = Math.floor(rows.pixelOf(screenX)) - rowX0 + 1;
+        return pixel < pixels - 1 ? (int) Math.max(pixel, 0) : pixels - 1;
     }
 
     private void findHitFromEye(int ray) {

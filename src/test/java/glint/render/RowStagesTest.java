@@ -59,6 +59,34 @@ class RowStagesTest {
                 80, 60, 1, Shading.COOK_TORRANCE);
     }
 
+    /**
+     * The stage finds camera-ray hits sphere by sphere, over the pixels each sphere's screen range
+     * spans: spheres smaller than a pixel, spheres cut by tile edges, spheres reaching behind the
+     * eye (an unbounded range) and rows of up to 40 spheres, in odd image sizes and tilings.
+     */
+    @Test
+    void tinySpheresSpheresCutByTilesAndSpheresBehindTheEye() {
+        Random random = new Random(1122);
+        for (int scene = 0; scene < 8; scene++) {
+            StringBuilder yaml = new StringBuilder("""
+                    camera: {position: [0, 1, -6], look_at: [0, 1, 0], fov: 60}
+                    lights: [{type: point, position: [-3, 6, -4], color: [1, 1, 1], intensity: 60}]
+                    objects:
+                      - {type: plane, point: [0, 0, 0], normal: [0, 1, 0], material: {type: matte, color: [0.6, 0.6, 0.6]}}
+                      - {type: sphere, center: [2, 1, -6.5], radius: 1.5, material: {type: matte, color: [0.2, 0.6, 0.2]}}
+                    """);
+            for (int i = 0, n = 5 + random.nextInt(36); i < n; i++) {
+                double radius = random.nextInt(3) == 0 ? 0.002 + 0.01 * random.nextDouble() : 0.05 + 0.5 * random.nextDouble();
+                yaml.append(String.format(java.util.Locale.ROOT,
+                        "  - {type: sphere, center: [%.4f, %.4f, %.4f], radius: %.4f, material: {type: %s}}%n",
+                        -4 + 8 * random.nextDouble(), 3 * random.nextDouble(), -2 + 6 * random.nextDouble(), radius,
+                        random.nextBoolean() ? "matte, color: [0.8, 0.3, 0.2]" : "metal, color: [0.9, 0.9, 0.9]"));
+            }
+            assertSameImage(Renders.scene(yaml.toString()), 61 + scene, 47 + 2 * scene, scene % 2 == 0 ? 1 : 4,
+                    Shading.COOK_TORRANCE);
+        }
+    }
+
     @Test
     void noLightsAndNothingButSky() {
         assertSameImage(Renders.scene("""
