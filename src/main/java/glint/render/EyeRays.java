@@ -6,8 +6,10 @@ package glint.render;
  * distance 1, x right, y up) outside which no camera ray meets it. From those rectangles, the
  * spheres a tile can show, then a row of the tile, then a pixel of the row: a camera ray tests only
  * its pixel's spheres, which a sweep along the row keeps up to date (spheres enter at their left
- * edge and leave past their right edge, as in scanline rasterization). Per worker; allocates
- * nothing once its arrays have grown to the scene.
+ * edge and leave past their right edge, as in scanline rasterization). A row traced in stages
+ * turns this around: each of the row's spheres is tested against the rays of the pixels its range
+ * spans ({@link #leftEdge}, {@link #rightEdge}). Per worker; allocates nothing once its arrays have
+ * grown to the scene.
  */
 final class EyeRays {
 
