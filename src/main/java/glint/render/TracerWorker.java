@@ -163,47 +163,58 @@ final class TracerWorker {
      */
     private void findHitsSphereBySphere(int rays) {
         RowHits h = hits;
-        CameraRows r = rows;
-        EyeRays eye = caster.eye;
-        RenderScene s = scene;
-        double[] t = h.t;
-        int[] sphereHit = h.sphere, planeHit = h.plane;
         for (int ray = 0; ray < rays; ray++) {
-            t[ray] = Intersect.MISS;
-            sphereHit[ray] = -1;
-            planeHit[ray] = -1;
+            h.t[ray] = Intersect.MISS;
+            h.sphere[ray] = -1;
+            h.plane[ray] = -1;
         }
+        EyeRays eye = caster.eye;
         int pixels = rays / raysPerPixel;
-        double[] toCentre = eye.toCentre, c = eye.c, spheres = s.spheres;
-        double[] dirX = r.dirX, dirY = r.dirY, dirZ = r.dirZ;
         for (int j = 0; j < eye.rowCount; j++) {
             int i = eye.rowSpheres[j];
             int first = raysPerPixel * pixelAtOrBefore(eye.leftEdge(i), pixels);
             int end = raysPerPixel * (pixelAtOrAfter(eye.rightEdge(i), pixels) + 1);
-            double fx = toCentre[3 * i], fy = toCentre[3 * i + 1], fz = toCentre[3 * i + 2], ci = c[i];
-            double radius = spheres[4 * i + 3];
-            for (int ray = first; ray < end; ray++) {
-                double hitT = Intersect.sphereFrom(fx, fy, fz, ci, radius, dirX[ray], dirY[ray], dirZ[ray], t[ray]);
-                if (hitT < t[ray]) {
-                    t[ray] = hitT;
-                    sphereHit[ray] = i;
-                }
-            }
+            keepNearerSphereHits(i, first, end);
         }
-        double[] planes = s.planes, numerators = eye.planeNumerator;
-        for (int p = 0, n = s.planeCount; p < n; p++) {
-            int k = 4 * p;
-            double px = planes[k], py = planes[k + 1], pz = planes[k + 2], numerator = numerators[p];
-            for (int ray = 0; ray < rays; ray++) {
-                double hitT = Intersect.planeFrom(numerator, px * dirX[ray] + py * dirY[ray] + pz * dirZ[ray], t[ray]);
-                if (hitT < t[ray]) {
-                    t[ray] = hitT;
-                    planeHit[ray] = p;
-                    sphereHit[ray] = -1;
-                }
-            }
+        for (int p = 0; p < scene.planeCount; p++) {
+            keepNearerPlaneHits(p, rays);
         }
         caster.rays += rays;
+    }
+
+    /** Camera rays [first, end) of the row against sphere i: each keeps it where it meets it nearer than its hit so far. */
+    private void keepNearerSphereHits(int i, int first, int end) {
+        EyeRays eye = caster.eye;
+        CameraRows r = rows;
+        double[] t = hits.t, dirX = r.dirX, dirY = r.dirY, dirZ = r.dirZ;
+        int[] sphereHit = hits.sphere;
+        double fx = eye.toCentre[3 * i], fy = eye.toCentre[3 * i + 1], fz = eye.toCentre[3 * i + 2], c = eye.c[i];
+        double radius = scene.spheres[4 * i + 3];
+        for (int ray = first; ray < end; ray++) {
+            double hitT = Intersect.sphereFrom(fx, fy, fz, c, radius, dirX[ray], dirY[ray], dirZ[ray], t[ray]);
+            if (hitT < t[ray]) {
+                t[ray] = hitT;
+                sphereHit[ray] = i;
+            }
+        }
+    }
+
+    /** Camera rays [0, rays) of the row against plane p, as {@link #keepNearerSphereHits}. */
+    private void keepNearerPlaneHits(int p, int rays) {
+        CameraRows r = rows;
+        double[] t = hits.t, dirX = r.dirX, dirY = r.dirY, dirZ = r.dirZ;
+        int[] sphereHit = hits.sphere, planeHit = hits.plane;
+        int k = 4 * p;
+        double nx = scene.planes[k], ny = scene.planes[k + 1], nz = scene.planes[k + 2];
+        double numerator = caster.eye.planeNumerator[p];
+        for (int ray = 0; ray < rays; ray++) {
+            double hitT = Intersect.planeFrom(numerator, nx * dirX[ray] + ny * dirY[ray] + nz * dirZ[ray], t[ray]);
+            if (hitT < t[ray]) {
+                t[ray] = hitT;
+                planeHit[ray] = p;
+                sphereHit[ray] = -1;
+            }
+        }
     }
 
     /** A pixel of the row at or left of the one holding screen x (a pixel's margin on the safe side), in [0, pixels). */
