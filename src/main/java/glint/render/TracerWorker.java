@@ -139,12 +139,6 @@ final class TracerWorker {
             findHitsSphereBySphere(rays);
             return;
         }
-        if (eye.rowCount == 0) {
-            for (int ray = 0; ray < rays; ray++) {
-                findHitFromEye(ray); // no sphere in the row: no pixel shows one
-            }
-            return;
-        }
         for (int pixel = 0, ray = 0; ray < rays; pixel++) {
             eye.aimPixel(rows.screenX(rowX0 + pixel), rows.screenX(rowX0 + pixel + 1));
             for (int end = ray + raysPerPixel; ray < end; ray++) {
