@@ -2,8 +2,8 @@ package glint.render;
 
 /**
  * What the camera rays of one tile row met, per worker, kept between the stages a row is traced in:
- * first every ray's nearest hit, then every hit's surface, then the shading, with the matte hits
- * lit together light by light. Working a stage across the row keeps each loop short and its
+ * first every ray's nearest hit (found here, sphere by sphere, where it can be), then every hit's
+ * surface, then the shading, with the matte hits lit together light by light. Working a stage across the row keeps each loop short and its
  * iterations independent, so the square roots and divisions of neighbouring rays overlap instead
  * of waiting on one another. Slot i belongs to camera ray i of the row ({@link CameraRows}); the
  * matte arrays are indexed by the matte hit's place in {@link #matteRays}. World space throughout.
@@ -64,6 +64,77 @@ final class RowHits {
         sumR = new double[rays];
         sumG = new double[rays];
         sumB = new double[rays];
+    }
+
+    /**
+     * Stage 1 sphere by sphere: the nearest hit of camera rays [0, rays) of the row whose first
+     * pixel is image x {@code rowX0}, {@code raysPerPixel} rays a pixel. Each sphere the row can show
+     * ({@code eye}, aimed at the row) is tested against the rays of the pixels its screen range
+     * spans (and a pixel more on each side), in the order the sweep lists them, then every ray
+     * against the planes. Each ray meets the tests {@link RayCaster#nearestFromEye} gives it, in the
+     * same order, and at most a few more of spheres whose range it lies outside of, which it cannot
+     * meet: it finds the same hit. A loop over one sphere's rays does the same arithmetic for each,
+     * with no sweep and no call per ray.
+     */
+    void findFromEyeSphereBySphere(RenderScene s, EyeRays eye, CameraRows rows, int rowX0, int raysPerPixel,
+                                   int rays) {
+        for (int ray = 0; ray < rays; ray++) {
+            t[ray] = Intersect.MISS;
+            sphere[ray] = -1;
+            plane[ray] = -1;
+        }
+        int pixels = rays / raysPerPixel;
+        for (int j = 0; j < eye.rowCount; j++) {
+            int i = eye.rowSpheres[j];
+            int first = raysPerPixel * pixelAtOrBefore(rows, eye.leftEdge(i), rowX0, pixels);
+            int end = raysPerPixel * (pixelAtOrAfter(rows, eye.rightEdge(i), rowX0, pixels) + 1);
+            keepNearerSphereHits(s, eye, rows, i, first, end);
+        }
+        for (int p = 0; p < s.planeCount; p++) {
+            keepNearerPlaneHits(s, eye, rows, p, rays);
+        }
+    }
+
+    /** Camera rays [first, end) against sphere i: each keeps it where it meets it nearer than its hit so far. */
+    private void keepNearerSphereHits(RenderScene s, EyeRays eye, CameraRows rows, int i, int first, int end) {
+        double[] dirX = rows.dirX, dirY = rows.dirY, dirZ = rows.dirZ;
+        double fx = eye.toCentre[3 * i], fy = eye.toCentre[3 * i + 1], fz = eye.toCentre[3 * i + 2], c = eye.c[i];
+        double radius = s.spheres[4 * i + 3];
+        for (int ray = first; ray < end; ray++) {
+            double hitT = Intersect.sphereFrom(fx, fy, fz, c, radius, dirX[ray], dirY[ray], dirZ[ray], t[ray]);
+            if (hitT < t[ray]) {
+                t[ray] = hitT;
+                sphere[ray] = i;
+            }
+        }
+    }
+
+    /** Camera rays [0, rays) against plane p, as {@link #keepNearerSphereHits}. */
+    private void keepNearerPlaneHits(RenderScene s, EyeRays eye, CameraRows rows, int p, int rays) {
+        double[] dirX = rows.dirX, dirY = rows.dirY, dirZ = rows.dirZ;
+        int k = 4 * p;
+        double nx = s.planes[k], ny = s.planes[k + 1], nz = s.planes[k + 2];
+        double numerator = eye.planeNumerator[p];
+        for (int ray = 0; ray < rays; ray++) {
+            double hitT = Intersect.planeFrom(numerator, nx * dirX[ray] + ny * dirY[ray] + nz * dirZ[ray], t[ray]);
+            if (hitT < t[ray]) {
+                t[ray] = hitT;
+                plane[ray] = p;
+                sphere[ray] = -1;
+            }
+        }
+    }
+
+    /** A pixel of the row at or left of the one holding screen x (a pixel's margin on the safe side), in [0, pixels). */
+    private static int pixelAtOrBefore(CameraRows rows, double screenX, int rowX0, int pixels) {
+        double pixel = Math.floor(rows.pixelOf(screenX)) - rowX0 - 1;
+        return pixel > 0 ? (int) Math.min(pixel, pixels - 1) : 0;
+    }
+
+    /** A pixel of the row at or right of the one holding screen x, in [0, pixels). */
+    private static int pixelAtOrAfter(CameraRows rows, double screenX, int rowX0, int pixels) {
+        double pixel = Math.floor(rows.pixelOf(screenX)) - rowX0 + 1;
+        return pixel < pixels - 1 ? (int) Math.max(pixel, 0) : pixels - 1;
     }
 
     /** Stores the caster's last nearest-hit answer as ray i's hit. */

@@ -136,7 +136,8 @@ final class TracerWorker {
     private void findHitsFromEye(int rays) {
         EyeRays eye = caster.eye;
         if (scene.bvh == null || eye.rowCount <= RayCaster.MOST_SPHERES_SWEPT) {
-            findHitsSphereBySphere(rays);
+            hits.findFromEyeSphereBySphere(scene, eye, rows, rowX0, raysPerPixel, rays);
+            caster.rays += rays;
             return;
         }
         for (int pixel = 0, ray = 0; ray < rays; pixel++) {
@@ -145,82 +146,6 @@ final class TracerWorker {
                 findHitFromEye(ray);
             }
         }
-    }
-
-    /**
-     * Stage 1 sphere by sphere: each sphere the row can show is tested against the rays of the
-     * pixels its screen range spans (and a pixel more on each side), in the order the sweep lists
-     * them, then every ray against the planes. Each ray meets the tests {@link
-     * RayCaster#nearestFromEye} gives it, in the same order, and at most a few more of spheres
-     * whose range it lies outside of, which it cannot meet: it finds the same hit. A loop over one
-     * sphere's rays does the same arithmetic for each, with no sweep and no call per ray.
-     */
-    private void findHitsSphereBySphere(int rays) {
-        RowHits h = hits;
-        for (int ray = 0; ray < rays; ray++) {
-            h.t[ray] = Intersect.MISS;
-            h.sphere[ray] = -1;
-            h.plane[ray] = -1;
-        }
-        EyeRays eye = caster.eye;
-        int pixels = rays / raysPerPixel;
-        for (int j = 0; j < eye.rowCount; j++) {
-            int i = eye.rowSpheres[j];
-            int first = raysPerPixel * pixelAtOrBefore(eye.leftEdge(i), pixels);
-            int end = raysPerPixel * (pixelAtOrAfter(eye.rightEdge(i), pixels) + 1);
-            keepNearerSphereHits(i, first, end);
-        }
-        for (int p = 0; p < scene.planeCount; p++) {
-            keepNearerPlaneHits(p, rays);
-        }
-        caster.rays += rays;
-    }
-
-    /** Camera rays [first, end) of the row against sphere i: each keeps it where it meets it nearer than its hit so far. */
-    private void keepNearerSphereHits(int i, int first, int end) {
-        EyeRays eye = caster.eye;
-        CameraRows r = rows;
-        double[] t = hits.t, dirX = r.dirX, dirY = r.dirY, dirZ = r.dirZ;
-        int[] sphereHit = hits.sphere;
-        double fx = eye.toCentre[3 * i], fy = eye.toCentre[3 * i + 1], fz = eye.toCentre[3 * i + 2], c = eye.c[i];
-        double radius = scene.spheres[4 * i + 3];
-        for (int ray = first; ray < end; ray++) {
-            double hitT = Intersect.sphereFrom(fx, fy, fz, c, radius, dirX[ray], dirY[ray], dirZ[ray], t[ray]);
-            if (hitT < t[ray]) {
-                t[ray] = hitT;
-                sphereHit[ray] = i;
-            }
-        }
-    }
-
-    /** Camera rays [0, rays) of the row against plane p, as {@link #keepNearerSphereHits}. */
-    private void keepNearerPlaneHits(int p, int rays) {
-        CameraRows r = rows;
-        double[] t = hits.t, dirX = r.dirX, dirY = r.dirY, dirZ = r.dirZ;
-        int[] sphereHit = hits.sphere, planeHit = hits.plane;
-        int k = 4 * p;
-        double nx = scene.planes[k], ny = scene.planes[k + 1], nz = scene.planes[k + 2];
-        double numerator = caster.eye.planeNumerator[p];
-        for (int ray = 0; ray < rays; ray++) {
-            double hitT = Intersect.planeFrom(numerator, nx * dirX[ray] + ny * dirY[ray] + nz * dirZ[ray], t[ray]);
-            if (hitT < t[ray]) {
-                t[ray] = hitT;
-                planeHit[ray] = p;
-                sphereHit[ray] = -1;
-            }
-        }
-    }
-
-    /** A pixel of the row at or left of the one holding screen x (a pixel's margin on the safe side), in [0, pixels). */
-    private int pixelAtOrBefore(double screenX, int pixels) {
-        double pixel = Math.floor(rows.pixelOf(screenX)) - rowX0 - 1;
-        return pixel > 0 ? (int) Math.min(pixel, pixels - 1) : 0;
-    }
-
-    /** A pixel of the row at or right of the one holding screen x, in [0, pixels). */
-    private int pixelAtOrAfter(double screenX, int pixels) {
-        double pixel = Math.floor(rows.pixelOf(screenX)) - rowX0 + 1;
-        return pixel < pixels - 1 ? (int) Math.max(pixel, 0) : pixels - 1;
     }
 
     private void findHitFromEye(int ray) {
