@@ -14,8 +14,13 @@ import java.util.Comparator;
  */
 final class NeighbourCells {
 
-    /** Cells along each side of a cube face. */
-    static final int CELLS = 16;
+    /**
+     * Cells along each side of a cube face. Each neighbour's cone is grown by the reach (about the
+     * radius), so it spans many cells at any size: finer cells list nearly the same spheres per ray,
+     * and at 4 x 4 a scene's lists stay small enough to stay in cache (glass-25: 0.37 MB against
+     * 5.7 MB at 16 x 16, for the same instructions a frame and a seventh fewer cycles).
+     */
+    static final int CELLS = 4;
 
     /** Room a buffer takes beyond its lists, in list entries: its cell index. */
     static final int CELL_INDEX_SIZE = ConeCells.indexSize(CELLS);
