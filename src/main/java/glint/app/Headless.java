@@ -55,10 +55,11 @@ final class Headless {
         long raysPerFrame;
         try (Tracer tracer = new Tracer(config.effectiveThreads())) {
             for (int i = 0; i < frames; i++) {
+                long cpuBefore = tracer.renderCpuNanos();
                 long start = System.nanoTime();
                 tracer.render(compiled, frame, config.samples(), 0, config.screenDivider());
                 millis[i] = (System.nanoTime() - start) / 1e6;
-                out.printf(Locale.ROOT, "frame %d: %.2f ms%n", i + 1, millis[i]);
+                out.println(frameLine(i + 1, millis[i], tracer.renderCpuNanos(), cpuBefore));
             }
             raysPerFrame = tracer.raysCast() / frames; // every frame of the still camera casts the same rays
         }
@@ -70,5 +71,18 @@ final class Headless {
         out.printf(Locale.ROOT, "bench: frames=%d median_ms=%.2f p95_ms=%.2f rays_per_s=%.0f%n",
                 frames, median, p95, raysPerFrame / (median / 1000));
         return Main.OK;
+    }
+
+    /**
+     * A frame's line of {@code --bench}: its wall-clock time, then the CPU time of the render threads
+     * (summed), which leaves out the time they waited for a core; without the CPU time where the JVM
+     * cannot measure it.
+     */
+    static String frameLine(int frame, double millis, long cpuNanosAfter, long cpuNanosBefore) {
+        String line = String.format(Locale.ROOT, "frame %d: %.2f ms", frame, millis);
+        if (cpuNanosBefore < 0) {
+            return line;
+        }
+        return line + String.format(Locale.ROOT, ", render cpu %.2f ms", (cpuNanosAfter - cpuNanosBefore) / 1e6);
     }
 }

@@ -11,6 +11,7 @@ import java.util.Locale;
 import java.util.regex.Matcher;
 import java.util.regex.Pattern;
 import java.util.stream.Collectors;
+import java.util.stream.Stream;
 
 /**
  * Measures the frame-time targets of docs/benchmarks.md as the issue states them: rounds of
@@ -41,8 +42,11 @@ public final class TargetRounds {
     /** 2 threads must render at least this many times as fast as 1. */
     static final double MIN_SPEEDUP = 1.9;
 
-    /** What one {@code --bench} run printed in its summary line. */
-    record Run(double medianMillis, double p95Millis) {
+    /**
+     * What one {@code --bench} run printed: the median and p95 of its summary line, and the median of
+     * its frames' render CPU time (NaN where the run did not print one).
+     */
+    record Run(double medianMillis, double p95Millis, double cpuMedianMillis) {
     }
 
     /** The runs of one target: index [round], with 1 thread and with 2. */
@@ -50,6 +54,7 @@ public final class TargetRounds {
     }
 
     private static final Pattern SUMMARY = Pattern.compile("^bench: frames=\\d+ median_ms=([0-9.]+) p95_ms=([0-9.]+) .*");
+    private static final Pattern FRAME_CPU = Pattern.compile("^frame \\d+: [0-9.]+ ms, render cpu ([0-9.]+) ms$");
 
     private TargetRounds() {
     }
@@ -114,20 +119,27 @@ public final class TargetRounds {
                 .redirectErrorStream(true).start();
         String output = new String(process.getInputStream().readAllBytes(), StandardCharsets.UTF_8);
         int status = process.waitFor();
-        String summary = output.lines().filter(line -> line.startsWith("bench:")).reduce((a, b) -> b).orElse("");
-        if (status != 0 || summary.isEmpty()) {
+        if (status != 0 || output.lines().noneMatch(line -> line.startsWith("bench:"))) {
             throw new IOException("the bench run of " + scene + " failed (exit status " + status + "):\n" + output);
         }
-        return parse(summary);
+        return parse(output);
     }
 
-    /** Reads a {@code bench: frames=N median_ms=X p95_ms=Y rays_per_s=Z} line. */
-    static Run parse(String summary) {
+    /**
+     * Reads a {@code --bench} run's output: its last line, {@code bench: frames=N median_ms=X p95_ms=Y
+     * rays_per_s=Z}, and the render CPU time of its frame lines.
+     */
+    static Run parse(String output) {
+        List<String> lines = output.lines().collect(Collectors.toList());
+        String summary = lines.isEmpty() ? "" : lines.get(lines.size() - 1);
         Matcher m = SUMMARY.matcher(summary);
         if (!m.matches()) {
             throw new IllegalArgumentException("not a bench summary line: " + summary);
         }
-        return new Run(Double.parseDouble(m.group(1)), Double.parseDouble(m.group(2)));
+        double[] cpu = lines.stream().map(FRAME_CPU::matcher).filter(Matcher::matches)
+                .mapToDouble(frame -> Double.parseDouble(frame.group(1))).toArray();
+        return new Run(Double.parseDouble(m.group(1)), Double.parseDouble(m.group(2)),
+                cpu.length == 0 ? Double.NaN : median(cpu));
     }
 
     static double median(double[] values) {
@@ -156,7 +168,34 @@ public final class TargetRounds {
             out.append(String.format(Locale.ROOT, "| %s, 2 threads over 1 | >= %.1fx | %.3fx | %s | %s |%n",
                     r.target().name(), MIN_SPEEDUP, median, list(speedups, "%.2f"), median >= MIN_SPEEDUP ? "yes" : "no"));
         }
+        out.append(cpuTable(results));
         return out.toString();
+    }
+
+    /**
+     * The render threads' CPU time a frame (summed over them; median over frames, then over rounds),
+     * which leaves out the time they waited for a core, and what it makes of 2 threads over 1 on
+     * two free cores: 2 x CPU(1 thread) / CPU(2 threads), were the threads' work split evenly.
+     */
+    static String cpuTable(List<Rounds> results) {
+        StringBuilder out = new StringBuilder();
+        boolean measured = results.stream().flatMap(r -> Stream.concat(r.oneThread().stream(),
+                r.twoThreads().stream())).noneMatch(run -> Double.isNaN(run.cpuMedianMillis()));
+        if (!measured) {
+            return ""; // a JVM without thread CPU clocks
+        }
+        out.append("\n| render CPU a frame | 1 thread | 2 threads | 2 threads over 1 on two free cores |\n");
+        out.append("|---|---|---|---|\n");
+        for (Rounds r : results) {
+            double one = median(cpuMedians(r.oneThread())), two = median(cpuMedians(r.twoThreads()));
+            out.append(String.format(Locale.ROOT, "| %s | %.2f ms | %.2f ms | %.3fx |%n",
+                    r.target().name(), one, two, 2 * one / two));
+        }
+        return out.toString();
+    }
+
+    private static double[] cpuMedians(List<Run> runs) {
+        return runs.stream().mapToDouble(Run::cpuMedianMillis).toArray();
     }
 
     private static double[] medians(List<Run> runs) {

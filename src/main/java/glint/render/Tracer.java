@@ -1,5 +1,7 @@
 package glint.render;
 
+import java.lang.management.ManagementFactory;
+import java.lang.management.ThreadMXBean;
 import java.util.concurrent.ExecutorService;
 import java.util.concurrent.Executors;
 import java.util.concurrent.Phaser;
@@ -22,6 +24,10 @@ public final class Tracer implements AutoCloseable {
     /** The workers' tasks and the barrier a frame ends at, made once: a frame allocates nothing of its own. */
     private final Runnable[] tasks;
     private final Phaser frameDone;
+    /** Per worker: the CPU time its thread spent rendering frames, in ns; written by it, read after a frame. */
+    private final long[] workerCpuNanos;
+    /** Reads the render threads' CPU clocks; null where the JVM cannot. */
+    private final ThreadMXBean cpuClock;
 
     // the frame being rendered; written before the workers start, read by them
     private volatile RenderScene scene;
@@ -58,10 +64,13 @@ public final class Tracer implements AutoCloseable {
         this.pool = Executors.newFixedThreadPool(threads, factory);
         this.frameDone = new Phaser(threads + 1);
         this.tasks = new Runnable[threads];
+        this.workerCpuNanos = new long[threads];
         for (int i = 0; i < threads; i++) {
-            TracerWorker worker = workers[i];
-            tasks[i] = () -> runWorker(worker);
+            int index = i;
+            tasks[i] = () -> runWorker(index);
         }
+        ThreadMXBean bean = ManagementFactory.getThreadMXBean();
+        this.cpuClock = bean.isCurrentThreadCpuTimeSupported() && bean.isThreadCpuTimeEnabled() ? bean : null;
     }
 
     /** Rays cast by all workers so far (camera, reflected, refracted and shadow rays). */
@@ -69,6 +78,22 @@ public final class Tracer implements AutoCloseable {
         long sum = 0;
         for (TracerWorker worker : workers) {
             sum += worker.raysCast();
+        }
+        return sum;
+    }
+
+    /**
+     * CPU time the render threads have spent on frames so far, summed over them, in ns; -1 where the
+     * JVM cannot measure a thread's CPU time. Unlike a frame's wall-clock time, it leaves out the
+     * time the threads wait for a core, so on a shared machine it shows the renderer's own work.
+     */
+    public long renderCpuNanos() {
+        if (cpuClock == null) {
+            return -1;
+        }
+        long sum = 0;
+        for (long nanos : workerCpuNanos) {
+            sum += nanos;
         }
         return sum;
     }
@@ -121,7 +146,9 @@ public final class Tracer implements AutoCloseable {
         }
     }
 
-    private void runWorker(TracerWorker worker) {
+    private void runWorker(int index) {
+        TracerWorker worker = workers[index];
+        long cpuStart = cpuClock == null ? 0 : cpuClock.getCurrentThreadCpuTime();
         try {
             int tiles = divider * divider;
             for (int tile = nextTile.getAndIncrement(); tile < tiles; tile = nextTile.getAndIncrement()) {
@@ -130,7 +157,10 @@ public final class Tracer implements AutoCloseable {
         } catch (Throwable t) {
             failure.compareAndSet(null, t);
         } finally {
-            frameDone.arrive();
+            if (cpuClock != null) {
+                workerCpuNanos[index] += cpuClock.getCurrentThreadCpuTime() - cpuStart;
+            }
+            frameDone.arrive(); // publishes the CPU time to the thread awaiting the frame
         }
     }
 

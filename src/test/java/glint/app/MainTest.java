@@ -347,7 +347,7 @@ class MainTest {
         String[] lines = r.out().split("\n");
         assertEquals(4, lines.length, r.out());
         for (int i = 0; i < 3; i++) {
-            assertTrue(lines[i].matches("frame " + (i + 1) + ": \\d+\\.\\d\\d ms"), lines[i]);
+            assertTrue(lines[i].matches("frame " + (i + 1) + ": \\d+\\.\\d\\d ms, render cpu \\d+\\.\\d\\d ms"), lines[i]);
         }
         assertTrue(lines[3].matches("bench: frames=3 median_ms=\\d+\\.\\d\\d p95_ms=\\d+\\.\\d\\d rays_per_s=\\d+"),
                 lines[3]);
