@@ -28,8 +28,12 @@ public final class BenchReport {
     static final String START = "<!-- results:start -->";
     static final String END = "<!-- results:end -->";
 
-    /** One benchmark result: name, parameters, score and its 99.9% error, in ms per frame. */
-    record Result(String benchmark, Map<String, String> params, double score, double error, String unit) {
+    /**
+     * One benchmark result: name, parameters, the mean score and its 99.9% error, and the median,
+     * least and greatest of its measured iterations, in {@code unit} (ms per frame for frame times).
+     */
+    record Result(String benchmark, Map<String, String> params, double score, double error,
+                  double median, double min, double max, String unit) {
 
         String param(String key) {
             return params.getOrDefault(key, "");
@@ -82,8 +86,11 @@ public final class BenchReport {
             if (p instanceof Map<?, ?> map) {
                 map.forEach((k, v) -> params.put(String.valueOf(k), String.valueOf(v)));
             }
+            Map<String, Object> percentiles = metric.get("scorePercentiles") instanceof Map<?, ?> m
+                    ? (Map<String, Object>) m : Map.of();
             results.add(new Result(String.valueOf(entry.get("benchmark")), params,
                     number(metric.get("score")), number(metric.get("scoreError")),
+                    number(percentiles.get("50.0")), number(percentiles.get("0.0")), number(percentiles.get("100.0")),
                     String.valueOf(metric.get("scoreUnit"))));
         }
         return results;
@@ -93,14 +100,17 @@ public final class BenchReport {
         return value instanceof Number n ? n.doubleValue() : Double.NaN;
     }
 
+    /**
+     * The frame time of one material's scenes against their sphere count, a line per thread count:
+     * the median of each benchmark's iterations, which a moment's load on a shared machine moves
+     * less than the mean.
+     */
     private static void writeChart(List<Result> series, String material, Path file) throws IOException {
         XYChart chart = new XYChartBuilder().width(800).height(500)
                 .title("Frame time, " + material + " spheres on a floor (800x600, 1 spp, depth 5)")
-                .xAxisTitle("spheres").yAxisTitle("ms per frame (bars: 99.9 % interval, cut at the top)").build();
+                .xAxisTitle("spheres").yAxisTitle("ms per frame (median of the iterations)").build();
         chart.getStyler().setLegendVisible(true);
         chart.getStyler().setYAxisMin(0.0);
-        // a loaded machine gives intervals many times the means: keep the lines readable, cut the bars
-        chart.getStyler().setYAxisMax(2 * series.stream().mapToDouble(Result::score).max().orElse(1));
         TreeSet<Integer> threadCounts = new TreeSet<>();
         series.forEach(r -> threadCounts.add(Integer.parseInt(r.param("threads"))));
         for (int threads : threadCounts) {
@@ -108,25 +118,29 @@ public final class BenchReport {
                     .sorted((x, y) -> Integer.compare(Integer.parseInt(x.param("spheres")), Integer.parseInt(y.param("spheres"))))
                     .toList();
             double[] x = line.stream().mapToDouble(r -> Double.parseDouble(r.param("spheres"))).toArray();
-            double[] y = line.stream().mapToDouble(Result::score).toArray();
-            double[] e = line.stream().mapToDouble(r -> Double.isNaN(r.error()) ? 0 : r.error()).toArray();
-            chart.addSeries(threads + (threads == 1 ? " thread" : " threads"), x, y, e).setMarker(SeriesMarkers.CIRCLE);
+            double[] y = line.stream().mapToDouble(Result::median).toArray();
+            chart.addSeries(threads + (threads == 1 ? " thread" : " threads"), x, y).setMarker(SeriesMarkers.CIRCLE);
         }
         BitmapEncoder.saveBitmap(chart, file.toString(), BitmapEncoder.BitmapFormat.PNG);
     }
 
+    /**
+     * The results table in Markdown: per benchmark, the median of its iterations and their range
+     * (least to greatest), JMH's mean and 99.9% error, and, for frame times, the frames per second
+     * of the median.
+     */
     static String table(List<Result> results, String source) {
         StringBuilder md = new StringBuilder();
         md.append(String.format(Locale.ROOT, "Generated from `%s` by `java -cp target/glint.jar glint.bench.BenchReport %s`.%n%n",
                 source, source));
-        md.append("| benchmark | parameters | score | ± (99.9%) | unit | frames per second |\n"
-                + "|---|---|---:|---:|---|---:|\n");
+        md.append("| benchmark | parameters | median | range | mean ± error (99.9%) | unit | frames per second (median) |\n"
+                + "|---|---|---:|---:|---:|---|---:|\n");
         for (Result r : results) {
             String name = r.benchmark().substring(r.benchmark().lastIndexOf('.', r.benchmark().lastIndexOf('.') - 1) + 1);
             boolean frameTime = r.unit().equals("ms/op"); // a frame per operation: its rate means something
-            md.append(String.format(Locale.ROOT, "| %s | %s | %.2f | %.2f | %s | %s |%n", name,
-                    r.params().toString().replace("{", "").replace("}", ""), r.score(), r.error(), r.unit(),
-                    frameTime ? String.format(Locale.ROOT, "%.1f", 1000 / r.score()) : ""));
+            md.append(String.format(Locale.ROOT, "| %s | %s | %.2f | %.2f-%.2f | %.2f ± %.2f | %s | %s |%n", name,
+                    r.params().toString().replace("{", "").replace("}", ""), r.median(), r.min(), r.max(), r.score(),
+                    r.error(), r.unit(), frameTime ? String.format(Locale.ROOT, "%.1f", 1000 / r.median()) : ""));
         }
         return md.toString();
     }

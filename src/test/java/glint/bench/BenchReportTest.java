@@ -1,0 +1,89 @@
+package glint.bench;
+
+import static org.junit.jupiter.api.Assertions.assertEquals;
+import static org.junit.jupiter.api.Assertions.assertFalse;
+
+import glint.bench.BenchReport.Result;
+import java.awt.image.BufferedImage;
+import java.nio.file.Files;
+import java.nio.file.Path;
+import java.util.List;
+import java.util.Map;
+import javax.imageio.ImageIO;
+import org.junit.jupiter.api.Test;
+import org.junit.jupiter.api.io.TempDir;
+
+/** JMH's JSON read back, the results table, and the page and charts the report writes. */
+class BenchReportTest {
+
+    private static final String JSON = """
+            [
+              {"benchmark": "glint.bench.FrameBenchmark.renderFrame", "mode": "avgt",
+               "params": {"material": "glass", "spheres": "5", "threads": "2"},
+               "primaryMetric": {"score": 30.5, "scoreError": 2.25,
+                 "scorePercentiles": {"0.0": 29.0, "50.0": 30.0, "90.0": 32.5, "100.0": 32.5},
+                 "scoreUnit": "ms/op", "rawData": [[32.5, 30.0, 29.0]]}},
+              {"benchmark": "glint.bench.FrameBenchmark.renderFrame", "mode": "avgt",
+               "params": {"material": "glass", "spheres": "1", "threads": "2"},
+               "primaryMetric": {"score": 12.0, "scoreError": 1.0,
+                 "scorePercentiles": {"0.0": 11.0, "50.0": 12.5, "100.0": 12.5},
+                 "scoreUnit": "ms/op", "rawData": [[11.0, 12.5, 12.5]]}},
+              {"benchmark": "glint.bench.SceneBenchmark.raysPerSecond", "mode": "thrpt",
+               "params": {"scene": "default"},
+               "primaryMetric": {"score": 1500.0, "scoreError": 100.0,
+                 "scorePercentiles": {"0.0": 1400.0, "50.0": 1490.0, "100.0": 1620.0},
+                 "scoreUnit": "ops/s", "rawData": [[1400.0, 1490.0, 1620.0]]}}
+            ]
+            """;
+
+    @Test
+    void readsTheMeanItsErrorAndTheMedianAndRangeOfTheIterations(@TempDir Path dir) throws Exception {
+        Path json = Files.writeString(dir.resolve("jmh.json"), JSON);
+        List<Result> results = BenchReport.read(json);
+        assertEquals(3, results.size());
+        Result first = results.get(0);
+        assertEquals("glint.bench.FrameBenchmark.renderFrame", first.benchmark());
+        assertEquals(Map.of("material", "glass", "spheres", "5", "threads", "2"), first.params());
+        assertEquals(30.5, first.score());
+        assertEquals(2.25, first.error());
+        assertEquals(30.0, first.median());
+        assertEquals(29.0, first.min());
+        assertEquals(32.5, first.max());
+        assertEquals("ms/op", first.unit());
+    }
+
+    @Test
+    void theTableGivesMediansRangesMeansAndTheFrameRateOfFrameTimesOnly(@TempDir Path dir) throws Exception {
+        List<Result> results = BenchReport.read(Files.writeString(dir.resolve("jmh.json"), JSON));
+        assertEquals("""
+                Generated from `jmh.json` by `java -cp target/glint.jar glint.bench.BenchReport jmh.json`.
+
+                | benchmark | parameters | median | range | mean ± error (99.9%) | unit | frames per second (median) |
+                |---|---|---:|---:|---:|---|---:|
+                | FrameBenchmark.renderFrame | material=glass, spheres=5, threads=2 | 30.00 | 29.00-32.50 | 30.50 ± 2.25 | ms/op | 33.3 |
+                | FrameBenchmark.renderFrame | material=glass, spheres=1, threads=2 | 12.50 | 11.00-12.50 | 12.00 ± 1.00 | ms/op | 80.0 |
+                | SceneBenchmark.raysPerSecond | scene=default | 1490.00 | 1400.00-1620.00 | 1500.00 ± 100.00 | ops/s |  |
+                """, BenchReport.table(results, "jmh.json"));
+    }
+
+    @Test
+    void rewritesOnlyTheResultsBetweenTheMarkersAndDrawsTheChartsOfTheMaterialsMeasured(@TempDir Path dir)
+            throws Exception {
+        Path json = Files.writeString(dir.resolve("jmh.json"), JSON);
+        Path docs = Files.createDirectories(dir.resolve("docs"));
+        Path page = Files.writeString(docs.resolve("benchmarks.md"),
+                "# Benchmarks\n\nwritten by hand\n\n" + BenchReport.START + "\nold table\n" + BenchReport.END + "\n\nafter\n");
+        BenchReport.main(new String[] {json.toString(), docs.toString()});
+        String table = BenchReport.table(BenchReport.read(json), json.toString());
+        String expected = "# Benchmarks\n\nwritten by hand\n\n" + BenchReport.START + "\n" + table + BenchReport.END
+                + "\n\nafter\n";
+        assertEquals(expected, Files.readString(page));
+        BenchReport.main(new String[] {json.toString(), docs.toString()});
+        assertEquals(expected, Files.readString(page), "a second run leaves the page as the first wrote it");
+
+        BufferedImage glass = ImageIO.read(docs.resolve("images/bench-glass.png").toFile());
+        assertEquals(800, glass.getWidth());
+        assertEquals(500, glass.getHeight());
+        assertFalse(Files.exists(docs.resolve("images/bench-matte.png")), "no matte results, no matte chart");
+    }
+}
