@@ -126,12 +126,14 @@ public final class TargetRounds {
     }
 
     /**
-     * Reads a {@code --bench} run's output: its last line, {@code bench: frames=N median_ms=X p95_ms=Y
-     * rays_per_s=Z}, and the render CPU time of its frame lines.
+     * Reads a {@code --bench} run's output: its summary line, {@code bench: frames=N median_ms=X
+     * p95_ms=Y rays_per_s=Z} (the last such line, whatever the JVM printed after it), and the render
+     * CPU time of its frame lines.
      */
     static Run parse(String output) {
         List<String> lines = output.lines().collect(Collectors.toList());
-        String summary = lines.isEmpty() ? "" : lines.get(lines.size() - 1);
+        String summary = lines.stream().filter(line -> line.startsWith("bench:")).reduce((a, b) -> b)
+                .orElse(lines.isEmpty() ? "" : lines.get(lines.size() - 1));
         Matcher m = SUMMARY.matcher(summary);
         if (!m.matches()) {
             throw new IllegalArgumentException("not a bench summary line: " + summary);

@@ -3,9 +3,9 @@ package glint.render;
 /**
  * What the camera rays of one tile row met, per worker, kept between the stages a row is traced in:
  * first every ray's nearest hit (found here, sphere by sphere, where it can be), then every hit's
- * surface, then the shading, with the matte hits lit together light by light. Working a stage across the row keeps each loop short and its
- * iterations independent, so the square roots and divisions of neighbouring rays overlap instead
- * of waiting on one another. Slot i belongs to camera ray i of the row ({@link CameraRows}); the
+ * surface, then the shading, with the matte hits lit together light by light. Working a stage
+ * across the row keeps each loop short and its iterations independent, so the square roots and
+ * divisions of neighbouring rays overlap instead of waiting on one another. Slot i belongs to camera ray i of the row ({@link CameraRows}); the
  * matte arrays are indexed by the matte hit's place in {@link #matteRays}. World space throughout.
  * The arrays grow, never shrink.
  */
