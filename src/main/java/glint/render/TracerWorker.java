@@ -116,14 +116,13 @@ final class TracerWorker {
 
     /**
      * Traces the row's camera rays [0, rays) in stages, into the row's radiance: every ray's
-     * nearest hit, then every hit's surface, then the shading of each hit, with the matte ones lit
+     * nearest hit, then every hit's surface and shading, with the matte hits set aside and then lit
      * together. Each pixel gets the same arithmetic in the same order as {@link #trace}, so the
      * image is the same bit for bit.
      */
     private void traceInStages(int rays) {
         hits.fit(rays);
         findHitsFromEye(rays);
-        describeRowHits(rays);
         shadeRowHits(rays);
         lightMatteHits();
     }
@@ -153,70 +152,39 @@ final class TracerWorker {
         hits.storeHit(ray, caster, caster.nearestFromEye(scene, r.dirX[ray], r.dirY[ray], r.dirZ[ray]));
     }
 
-    /** Stage 2: the surface at each hit. */
-    private void describeRowHits(int rays) {
-        RowHits h = hits;
-        CameraRows r = rows;
-        CameraBasis camera = scene.camera;
-        for (int ray = 0; ray < rays; ray++) {
-            if (!h.met(ray)) {
-                continue;
-            }
-            describeHit(h.t[ray], h.sphere[ray], h.plane[ray], camera.eyeX, camera.eyeY, camera.eyeZ,
-                    r.dirX[ray], r.dirY[ray], r.dirZ[ray]);
-            keepHit(ray);
-        }
-    }
-
-    /** Stores the surface describeHit() found as camera ray i's, in the row's hits. */
-    private void keepHit(int ray) {
-        RowHits h = hits;
-        h.px[ray] = hitX;
-        h.py[ray] = hitY;
-        h.pz[ray] = hitZ;
-        h.nx[ray] = normalX;
-        h.ny[ray] = normalY;
-        h.nz[ray] = normalZ;
-        h.cosIncident[ray] = hitCosIncident;
-        h.offset[ray] = hitOffset;
-        h.entering[ray] = hitEntering;
-        h.material[ray] = hitMaterial;
-    }
-
-    /** Puts camera ray i's surface back where describeHit() leaves it, for the shade methods to read. */
-    private void recallHit(int ray) {
-        RowHits h = hits;
-        hitX = h.px[ray];
-        hitY = h.py[ray];
-        hitZ = h.pz[ray];
-        normalX = h.nx[ray];
-        normalY = h.ny[ray];
-        normalZ = h.nz[ray];
-        hitCosIncident = h.cosIncident[ray];
-        hitOffset = h.offset[ray];
-        hitEntering = h.entering[ray];
-        hitMaterial = h.material[ray];
-    }
-
     /**
-     * Stage 3: the background for misses, metal and glass hits shaded one by one (their reflected
-     * and refracted rays traced from there), matte hits listed for stage 4.
+     * Stage 2: the surface at each hit and its shading: the background for misses, metal and glass
+     * shaded one by one (their reflected and refracted rays traced from there), matte hits kept
+     * in the row's matte slots for stage 3.
      */
     private void shadeRowHits(int rays) {
         RowHits h = hits;
         CameraRows r = rows;
         RenderScene s = scene;
+        CameraBasis camera = s.camera;
         int matte = 0;
         for (int ray = 0; ray < rays; ray++) {
-            if (!h.met(ray)) {
+            int sphere = h.sphere[ray], plane = h.plane[ray];
+            if (sphere < 0 && plane < 0) {
                 outR = s.backgroundR;
                 outG = s.backgroundG;
                 outB = s.backgroundB;
-            } else if (s.materialType[h.material[ray]] == RenderScene.MATTE) {
-                h.matteRays[matte++] = ray;
-                continue;
             } else {
-                shadeMirrorOrGlass(ray);
+                double dx = r.dirX[ray], dy = r.dirY[ray], dz = r.dirZ[ray];
+                describeHit(h.t[ray], sphere, plane, camera.eyeX, camera.eyeY, camera.eyeZ, dx, dy, dz);
+                int m = hitMaterial;
+                int skipNear = RayCaster.skipNear(sphere, plane, hitEntering);
+                int type = s.materialType[m];
+                if (type == RenderScene.MATTE) {
+                    keepMatteHit(matte++, ray, skipNear);
+                    continue;
+                }
+                if (type == RenderScene.METAL) {
+                    shadeMetal(m, dx, dy, dz, recursionMax, 1, skipNear);
+                } else {
+                    shadeGlass(m, dx, dy, dz, recursionMax, 1, skipNear,
+                            RayCaster.skipFar(sphere, plane, hitEntering));
+                }
             }
             r.radianceR[ray] = outR;
             r.radianceG[ray] = outG;
@@ -225,21 +193,23 @@ final class TracerWorker {
         h.matteCount = matte;
     }
 
-    /** Shades the metal or glass surface camera ray i met, into outR/G/B. */
-    private void shadeMirrorOrGlass(int ray) {
+    /** Stores the matte surface describeHit() found for camera ray {@code ray} in matte slot j. */
+    private void keepMatteHit(int j, int ray, int skipNear) {
         RowHits h = hits;
-        CameraRows r = rows;
-        int m = h.material[ray];
-        recallHit(ray);
-        if (scene.materialType[m] == RenderScene.METAL) {
-            shadeMetal(m, r.dirX[ray], r.dirY[ray], r.dirZ[ray], recursionMax, 1, h.skipNear(ray));
-        } else {
-            shadeGlass(m, r.dirX[ray], r.dirY[ray], r.dirZ[ray], recursionMax, 1, h.skipNear(ray), h.skipFar(ray));
-        }
+        h.matteRays[j] = ray;
+        h.px[j] = hitX;
+        h.py[j] = hitY;
+        h.pz[j] = hitZ;
+        h.nx[j] = normalX;
+        h.ny[j] = normalY;
+        h.nz[j] = normalZ;
+        h.offset[j] = hitOffset;
+        h.skipNear[j] = skipNear;
+        h.material[j] = hitMaterial;
     }
 
     /**
-     * Stage 4: the matte hits of the row, lit as {@link #shadeMatte} lights one: light by light,
+     * Stage 3: the matte hits of the row, lit as {@link #shadeMatte} lights one: light by light,
      * first every hit's light sample, then every hit's shadow ray, each adding in light order.
      */
     private void lightMatteHits() {
@@ -258,7 +228,7 @@ final class TracerWorker {
         CameraRows r = rows;
         for (int j = 0; j < count; j++) {
             int ray = h.matteRays[j];
-            int c = 3 * h.material[ray];
+            int c = 3 * h.material[j];
             r.radianceR[ray] = lambert(s.materialColor[c], h.sumR[j], s.ambientR);
             r.radianceG[ray] = lambert(s.materialColor[c + 1], h.sumG[j], s.ambientG);
             r.radianceB[ray] = lambert(s.materialColor[c + 2], h.sumB[j], s.ambientB);
@@ -269,8 +239,7 @@ final class TracerWorker {
     private void sampleLight(int light, int count) {
         RowHits h = hits;
         for (int j = 0; j < count; j++) {
-            int ray = h.matteRays[j];
-            double cosLight = lightAt(light, h.px[ray], h.py[ray], h.pz[ray], h.nx[ray], h.ny[ray], h.nz[ray]);
+            double cosLight = lightAt(light, h.px[j], h.py[j], h.pz[j], h.nx[j], h.ny[j], h.nz[j]);
             h.cosLight[j] = cosLight;
             h.toLightX[j] = toLightX;
             h.toLightY[j] = toLightY;
@@ -290,12 +259,10 @@ final class TracerWorker {
             if (!(h.cosLight[j] > 0)) {
                 continue;
             }
-            int ray = h.matteRays[j];
-            double offset = h.offset[ray];
-            double ox = h.px[ray] + offset * h.nx[ray], oy = h.py[ray] + offset * h.ny[ray],
-                    oz = h.pz[ray] + offset * h.nz[ray];
+            double offset = h.offset[j];
+            double ox = h.px[j] + offset * h.nx[j], oy = h.py[j] + offset * h.ny[j], oz = h.pz[j] + offset * h.nz[j];
             if (!caster.shadowed(s, ox, oy, oz, h.toLightX[j], h.toLightY[j], h.toLightZ[j], h.lightDistance[j],
-                    h.skipNear(ray), light, offset)) {
+                    h.skipNear[j], light, offset)) {
                 h.sumR[j] += h.lightR[j];
                 h.sumG[j] += h.lightG[j];
                 h.sumB[j] += h.lightB[j];
