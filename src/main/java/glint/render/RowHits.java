@@ -141,4 +141,53 @@ final class RowHits {
         plane[ray] = found ? hit.hitPlane : -1;
         t[ray] = hit.hitT;
     }
+
+    /**
+     * Stage 3, the sample of a point light at (x, y, z) of power (powerR, powerG, powerB) at matte
+     * hits [0, count): the arithmetic of {@code TracerWorker.lightAt}, written for the whole row so
+     * that the light's terms stay in registers (a store to one double array could, for all the JIT
+     * knows, change the light's). A hit at the light itself gets n.l = 0, which the shadow stage
+     * passes over.
+     */
+    void samplePointLight(int count, double x, double y, double z, double powerR, double powerG, double powerB) {
+        for (int j = 0; j < count; j++) {
+            double lx = x - px[j], ly = y - py[j], lz = z - pz[j];
+            double distance2 = lx * lx + ly * ly + lz * lz;
+            if (distance2 == 0) {
+                cosLight[j] = 0;
+                continue;
+            }
+            double inv = 1 / Math.sqrt(distance2);
+            double ux = lx * inv, uy = ly * inv, uz = lz * inv;
+            double scale = inv * inv;
+            double cos = ux * nx[j] + uy * ny[j] + uz * nz[j];
+            cosLight[j] = cos;
+            toLightX[j] = ux;
+            toLightY[j] = uy;
+            toLightZ[j] = uz;
+            lightDistance[j] = distance2 * inv;
+            lightR[j] = powerR * scale * cos;
+            lightG[j] = powerG * scale * cos;
+            lightB[j] = powerB * scale * cos;
+        }
+    }
+
+    /**
+     * Stage 3, the sample of a directional light towards unit direction (x, y, z) (from the surface)
+     * of irradiance (powerR, powerG, powerB) at matte hits [0, count), as {@link #samplePointLight}.
+     */
+    void sampleDirectionalLight(int count, double x, double y, double z, double powerR, double powerG,
+                                double powerB) {
+        for (int j = 0; j < count; j++) {
+            double cos = x * nx[j] + y * ny[j] + z * nz[j];
+            cosLight[j] = cos;
+            toLightX[j] = x;
+            toLightY[j] = y;
+            toLightZ[j] = z;
+            lightDistance[j] = Double.POSITIVE_INFINITY;
+            lightR[j] = powerR * cos;
+            lightG[j] = powerG * cos;
+            lightB[j] = powerB * cos;
+        }
+    }
 }

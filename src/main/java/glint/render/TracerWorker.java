@@ -235,19 +235,15 @@ final class TracerWorker {
         }
     }
 
-    /** The sample of light {@code light} at each matte hit. */
+    /** The sample of light {@code light} at each matte hit, as {@link #lightAt} takes it. */
     private void sampleLight(int light, int count) {
-        RowHits h = hits;
-        for (int j = 0; j < count; j++) {
-            double cosLight = lightAt(light, h.px[j], h.py[j], h.pz[j], h.nx[j], h.ny[j], h.nz[j]);
-            h.cosLight[j] = cosLight;
-            h.toLightX[j] = toLightX;
-            h.toLightY[j] = toLightY;
-            h.toLightZ[j] = toLightZ;
-            h.lightDistance[j] = lightDistance;
-            h.lightR[j] = irradianceR * cosLight;
-            h.lightG[j] = irradianceG * cosLight;
-            h.lightB[j] = irradianceB * cosLight;
+        RenderScene s = scene;
+        int k = 3 * light;
+        double[] v = s.lightVector, power = s.lightPower;
+        if (s.lightIsPoint[light]) {
+            hits.samplePointLight(count, v[k], v[k + 1], v[k + 2], power[k], power[k + 1], power[k + 2]);
+        } else {
+            hits.sampleDirectionalLight(count, v[k], v[k + 1], v[k + 2], power[k], power[k + 1], power[k + 2]);
         }
     }
 
@@ -692,7 +688,8 @@ final class TracerWorker {
      * Samples light {@code i} from surface point o: sets toLight, irradiance on a surface facing the
      * light and lightDistance; returns n.l (the cosine at a surface of normal n). Taken from the
      * surface point itself rather than the offset shadow-ray origin (they differ by epsilon |p|), so
-     * that it need not wait for the offset.
+     * that it need not wait for the offset. {@link RowHits#samplePointLight} and
+     * {@link RowHits#sampleDirectionalLight} do the same arithmetic for a row's matte hits at once.
      */
     private double lightAt(int i, double ox, double oy, double oz, double nx, double ny, double nz) {
         RenderScene s = scene;
