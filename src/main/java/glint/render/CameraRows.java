@@ -109,7 +109,7 @@ final class CameraRows {
     }
 
     /** Stores the unit direction of the camera ray through image point (px, py), in pixels from the top-left. */
-    private void aim(CameraBasis camera, int ray, double px, double py) {
+    void aim(CameraBasis camera, int ray, double px, double py) {
         double sx = screenX(px), sy = screenY(py);
         double dx = camera.forwardX + sx * camera.rightX + sy * camera.upX;
         double dy = camera.forwardY + sx * camera.rightY + sy * camera.upY;
