@@ -5,10 +5,10 @@ import glint.config.Shading;
 /**
  * One render thread's tracer and scratch state: traces the pixels of the tiles it is handed. A
  * tile row's camera rays go in stages ({@link #traceInStages}: all aimed, all hits, each hit's
- * surface and shading, then the matte hits lit together); reflected and refracted rays, and every ray of the phong
- * model, go by recursion ({@link #trace}). Everything it writes between calls lives in its own
- * fields, so the per-pixel path allocates nothing. All vectors are world space; directions are
- * unit length.
+ * surface and shading, then the matte hits lit together); reflected and refracted rays, and every
+ * ray of the phong model, go by recursion ({@link #trace}). Everything it writes between calls
+ * lives in its own fields, so the per-pixel path allocates nothing. All vectors are world space;
+ * directions are unit length.
  */
 final class TracerWorker {
 

@@ -18,7 +18,8 @@ class CameraRowsTest {
         SplittableRandom random = new SplittableRandom(21);
         CameraRows rows = new CameraRows();
         for (int trial = 0; trial < 40; trial++) {
-            Vector3d eye = new Vector3d(random.nextDouble(-50, 50), random.nextDouble(-50, 50), random.nextDouble(-50, 50));
+            Vector3d eye = new Vector3d(random.nextDouble(-50, 50), random.nextDouble(-50, 50),
+                    random.nextDouble(-50, 50));
             double[] towards = RandomScenes.unitVector(random);
             Vector3d target = eye.add(new Vector3d(towards[0], towards[1], towards[2]));
             int width = 1 + random.nextInt(900), height = 1 + random.nextInt(700);
