@@ -1,5 +1,6 @@
 package glint.bench;
 
+import glint.config.Config;
 import glint.config.Shading;
 import glint.render.FrameBuffer;
 import glint.render.RenderScene;
@@ -9,11 +10,12 @@ import glint.scene.Scene;
 
 /**
  * What the frame benchmarks render with: a compiled scene, an 800x600 frame and a tracer, one
- * sample per pixel in 8 x 8 tiles, depth 5, cook-torrance, min_weight 0.001, epsilon 1e-9.
+ * sample per pixel in 8 x 8 tiles, depth 5, cook-torrance, and the shipped min_weight and epsilon.
  */
 final class BenchFrames implements AutoCloseable {
 
-    static final RenderSettings SETTINGS = new RenderSettings(Shading.COOK_TORRANCE, 5, 1e-3, 1e-9);
+    static final RenderSettings SETTINGS = new RenderSettings(Shading.COOK_TORRANCE, 5,
+            Config.defaults().minWeight(), Config.defaults().epsilon());
 
     private final RenderScene scene;
     private final FrameBuffer frame = new FrameBuffer(800, 600);

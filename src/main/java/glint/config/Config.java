@@ -30,7 +30,7 @@ public record Config(boolean debug, double epsilon, double displayScale, int scr
 
     public static Config defaults() {
         return new Config(false, 1e-9, 2, 8, 800, 600, 5, "Glint", "scenes/default.yaml",
-                0, Shading.COOK_TORRANCE, 4, 1e-3, 2.0, 60, 30, Limits.DEFAULT);
+                0, Shading.COOK_TORRANCE, 4, 1e-2, 2.0, 60, 30, Limits.DEFAULT);
     }
 
     /** Threads actually used: {@code threads}, or one per available core when it is 0. */

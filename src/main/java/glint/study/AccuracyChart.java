@@ -60,7 +60,11 @@ final class AccuracyChart {
         }
 
         StudyConfig.Knob[] swept = {StudyConfig.Knob.DEPTH, StudyConfig.Knob.SAMPLES, StudyConfig.Knob.MIN_WEIGHT};
-        String[] names = {"depth 1..8 (s4 w1e-3)", "samples 1..64 (d5 w1e-3)", "min_weight 0..0.1 (d5 s4)"};
+        StudyConfig centre = StudyConfig.shipped();
+        String weight = "w" + Numbers.sci(centre.minWeight());
+        String[] names = {"depth 1..8 (s" + centre.samples() + " " + weight + ")",
+                "samples 1..64 (d" + centre.depth() + " " + weight + ")",
+                "min_weight 0..0.1 (d" + centre.depth() + " s" + centre.samples() + ")"};
         int[] colors = {1, 3, 4};
         for (int k = 0; k < swept.length; k++) {
             List<Integer> members = new ArrayList<>();

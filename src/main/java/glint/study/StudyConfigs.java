@@ -25,7 +25,7 @@ public final class StudyConfigs {
         for (int samples : new int[] {1, 9, 16, 64}) {
             all.add(StudyConfig.ct(shipped.depth(), samples, shipped.minWeight()));
         }
-        for (double weight : new double[] {0, 1e-2, 1e-1}) {
+        for (double weight : new double[] {0, 1e-3, 1e-2, 1e-1}) { // the shipped one is already in
             all.add(StudyConfig.ct(shipped.depth(), shipped.samples(), weight));
         }
         all.add(shipped.withFresnel(GlassFresnel.SCHLICK));
@@ -49,7 +49,7 @@ public final class StudyConfigs {
         list.add(StudyConfig.ct(5, 1, 1e-3));
         list.add(StudyConfig.ct(5, 16, 1e-3));
         list.add(StudyConfig.ct(5, 4, 0));
-        list.add(StudyConfig.ct(5, 4, 1e-2));
+        list.add(StudyConfig.ct(5, 4, 1e-3));
         list.add(shipped.withFresnel(GlassFresnel.SCHLICK));
         list.add(shipped.withShading(Shading.PHONG));
         return list;

@@ -49,7 +49,7 @@ class ConfigLoaderTest {
         assertEquals(0, d.threads());
         assertEquals(Shading.COOK_TORRANCE, d.shading());
         assertEquals(4, d.samples());
-        assertEquals(1e-3, d.minWeight());
+        assertEquals(1e-2, d.minWeight());
         assertEquals(2.0, d.moveSpeed());
         assertEquals(60, d.turnSpeed());
         assertEquals(30, d.targetFps());

@@ -50,8 +50,9 @@ class MetricsTest {
         assertEquals(StudyConfig.Knob.NONE, shipped.knob());
         assertEquals(StudyConfig.Knob.DEPTH, StudyConfig.ct(2, shipped.samples(), shipped.minWeight()).knob());
         assertEquals(StudyConfig.Knob.SEVERAL, StudyConfig.ct(2, 16, shipped.minWeight()).knob());
-        assertEquals("d5 s4 w1e-3", shipped.label());
-        assertEquals("w1e-2", StudyConfig.ct(5, 4, 1e-2).knobLabel());
+        assertEquals("d5 s4 w1e-2", shipped.label());
+        assertEquals("w1e-3", StudyConfig.ct(5, 4, 1e-3).knobLabel());
+        assertEquals("shipped", shipped.knobLabel());
         assertEquals(StudyConfigs.full().size(), new java.util.HashSet<>(StudyConfigs.full()).size());
         assertEquals(21, StudyConfigs.full().size());
     }
