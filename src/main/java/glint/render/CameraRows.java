@@ -12,22 +12,39 @@ final class CameraRows {
     // per frame: screen x = px * scaleX + offsetX, likewise y (image plane at distance 1, y up)
     private double scaleX, offsetX, scaleY, offsetY;
 
+    // the tile being traced: its camera, image width, pixel columns [x0, x1), and the samples
+    // [firstSample, firstSample + sampleCount) of each pixel's side x side pattern for frame frameIndex
+    private CameraBasis camera;
+    private int width, x0, x1, side, firstSample, sampleCount, frameIndex;
+
     // one coordinate an array, so that a packet of neighbouring rays loads with one instruction
     double[] dirX = new double[0], dirY = new double[0], dirZ = new double[0];
     double[] radianceR = new double[0], radianceG = new double[0], radianceB = new double[0];
-    /** Screen x of the centres of pixels [centresFor, centresFor + centreCount), shared by the tile's rows. */
+    /** Screen x of the centres of the tile's pixels, shared by its rows (with one sample a pixel). */
     private double[] centreX = new double[0];
-    private int centresFor, centreCount;
 
-    /** Sets the mapping from pixels to screen for a frame of this size and room for {@code rays} rays a row. */
-    void prepare(CameraBasis camera, int width, int height, int rays) {
+    /**
+     * Sets the mapping from pixels to screen for a frame of this size, and the tile: pixel columns
+     * [x0, x1), each pixel's samples [firstSample, firstSample + sampleCount) of its
+     * {@code samples}-sample stratified pattern for frame {@code frameIndex}.
+     */
+    void prepare(CameraBasis camera, int width, int height, int x0, int x1, int samples, int firstSample,
+                 int sampleCount, int frameIndex) {
         double halfWidth = camera.tanHalfFov;
         double halfHeight = halfWidth * height / width;
         scaleX = 2 * halfWidth / width;
         offsetX = -halfWidth;
         scaleY = -2 * halfHeight / height;
         offsetY = halfHeight;
-        centreCount = 0; // the mapping may have changed
+        this.camera = camera;
+        this.width = width;
+        this.x0 = x0;
+        this.x1 = x1;
+        this.side = (int) Math.round(Math.sqrt(samples));
+        this.firstSample = firstSample;
+        this.sampleCount = sampleCount;
+        this.frameIndex = frameIndex;
+        int rays = (x1 - x0) * sampleCount;
         if (dirX.length < rays) {
             centreX = new double[rays];
             dirX = new double[rays];
@@ -36,6 +53,9 @@ final class CameraRows {
             radianceR = new double[rays];
             radianceG = new double[rays];
             radianceB = new double[rays];
+        }
+        for (int ray = 0, n = x1 - x0; ray < n; ray++) {
+            centreX[ray] = screenX(x0 + ray + 0.5);
         }
     }
 
@@ -55,13 +75,12 @@ final class CameraRows {
     }
 
     /**
-     * Aims the camera rays of pixels [x0, x1) of row y: each pixel's samples [firstSample,
-     * firstSample + sampleCount) of its side x side stratified pattern, or its centre when side is 1.
+     * Aims the camera rays of the tile's row y: each pixel's samples of its stratified pattern, or
+     * its centre when the pattern has one sample.
      */
-    void aim(CameraBasis camera, int width, int y, int x0, int x1, int side, int firstSample, int sampleCount,
-             int frameIndex) {
+    void aim(int y) {
         if (side == 1) {
-            aimCentres(camera, y, x0, x1);
+            aimCentres(y);
             return;
         }
         int ray = 0;
@@ -70,33 +89,25 @@ final class CameraRows {
             for (int sample = firstSample, end = firstSample + sampleCount; sample < end; sample++) {
                 int cellX = sample % side, cellY = sample / side;
                 long h = SamplePattern.hash(pixelIndex, frameIndex, sample);
-                aim(camera, ray++, x + (cellX + SamplePattern.jitterU(h)) / side,
+                aimThrough(ray++, x + (cellX + SamplePattern.jitterU(h)) / side,
                         y + (cellY + SamplePattern.jitterV(h)) / side);
             }
         }
     }
 
     /**
-     * Aims the camera rays through the centres of pixels [x0, x1) of row y, ray i through pixel
-     * x0 + i: the arithmetic of {@link #aim(CameraBasis, int, double, double)}, in a loop without
-     * branches or calls, which the JIT turns into SIMD instructions (four rays an instruction
-     * where the processor has AVX2).
+     * Aims the camera rays through the centres of the tile's pixels in row y, ray i through pixel
+     * x0 + i: the arithmetic of {@link #aimThrough}, in a loop without branches or calls, which the
+     * JIT turns into SIMD instructions (four rays an instruction where the processor has AVX2).
      */
-    private void aimCentres(CameraBasis camera, int y, int x0, int x1) {
+    private void aimCentres(int y) {
+        CameraBasis c = camera;
         double sy = screenY(y + 0.5);
-        double upX = sy * camera.upX, upY = sy * camera.upY, upZ = sy * camera.upZ;
-        double forwardX = camera.forwardX, forwardY = camera.forwardY, forwardZ = camera.forwardZ;
-        double rightX = camera.rightX, rightY = camera.rightY, rightZ = camera.rightZ;
-        int n = x1 - x0;
-        if (centresFor != x0 || centreCount != n) {
-            for (int ray = 0; ray < n; ray++) {
-                centreX[ray] = screenX(x0 + ray + 0.5);
-            }
-            centresFor = x0;
-            centreCount = n;
-        }
+        double upX = sy * c.upX, upY = sy * c.upY, upZ = sy * c.upZ;
+        double forwardX = c.forwardX, forwardY = c.forwardY, forwardZ = c.forwardZ;
+        double rightX = c.rightX, rightY = c.rightY, rightZ = c.rightZ;
         double[] outX = dirX, outY = dirY, outZ = dirZ, screenX = centreX;
-        for (int ray = 0; ray < n; ray++) {
+        for (int ray = 0, n = x1 - x0; ray < n; ray++) {
             double sx = screenX[ray];
             double dx = forwardX + sx * rightX + upX;
             double dy = forwardY + sx * rightY + upY;
@@ -108,8 +119,9 @@ final class CameraRows {
         }
     }
 
-    /** Stores the unit direction of the camera ray through image point (px, py), in pixels from the top-left. */
-    void aim(CameraBasis camera, int ray, double px, double py) {
+    /** Stores the unit direction of camera ray i through image point (px, py), in pixels from the top-left. */
+    void aimThrough(int ray, double px, double py) {
+        CameraBasis camera = this.camera;
         double sx = screenX(px), sy = screenY(py);
         double dx = camera.forwardX + sx * camera.rightX + sy * camera.upX;
         double dy = camera.forwardY + sx * camera.rightY + sy * camera.upY;
@@ -120,8 +132,8 @@ final class CameraRows {
         dirZ[ray] = dz * inv;
     }
 
-    /** Writes into the frame the average of each pixel's traced samples, pixels [x0, x1) of row y. */
-    void writeRow(FrameBuffer frame, int y, int x0, int x1, int sampleCount) {
+    /** Writes into the frame the average of each pixel's traced samples, the tile's pixels of row y. */
+    void writeRow(FrameBuffer frame, int y) {
         if (sampleCount == 1) {
             for (int x = x0, ray = 0; x < x1; x++, ray++) {
                 frame.set(x, y, radianceR[ray], radianceG[ray], radianceB[ray]);

@@ -42,8 +42,6 @@ final class TracerWorker {
     private final CameraRows rows = new CameraRows();
     /** The image x of the current row's first pixel, and the camera rays each pixel of it gets. */
     private int rowX0, raysPerPixel;
-    /** What aiming the current row's camera rays takes beyond rowX0 and raysPerPixel: see {@link CameraRows#aim}. */
-    private int rowY, rowX1, imageWidth, patternSide, firstSample, frameIndex;
 
     /** The current tile row's hits, for tracing it in stages. */
     private final RowHits hits = new RowHits();
@@ -77,34 +75,29 @@ final class TracerWorker {
         phong = settings.shading() == Shading.PHONG;
         exactFresnel = settings.glassFresnel() == RenderSettings.GlassFresnel.EXACT;
         int rowRays = (x1 - x0) * sampleCount;
-        rows.prepare(renderScene.camera, frame.width(), frame.height(), rowRays);
+        rows.prepare(renderScene.camera, frame.width(), frame.height(), x0, x1, samples, firstSample, sampleCount,
+                frameIndex);
         rowX0 = x0;
-        rowX1 = x1;
         raysPerPixel = sampleCount;
-        imageWidth = frame.width();
-        this.firstSample = firstSample;
-        this.frameIndex = frameIndex;
         EyeRays eye = caster.eye;
         eye.prepare(renderScene);
         // screen y grows upwards, image y downwards
         eye.aimTile(rows.screenX(x0), rows.screenX(x1), rows.screenY(y1), rows.screenY(y0));
-        patternSide = (int) Math.round(Math.sqrt(samples));
         boolean inPackets = packets != null && settings.simd() && packets.handles(renderScene);
         boolean inStages = stages && !phong;
         for (int y = y0; y < y1; y++) {
             eye.aimRow(rows.screenY(y + 1), rows.screenY(y));
-            rowY = y;
             if (inStages && !inPackets) {
-                traceInStages(rowRays);
+                traceInStages(y, rowRays);
             } else {
-                aimRow();
+                rows.aim(y);
                 if (inPackets) {
                     traceInPackets(rowRays);
                 } else {
                     traceOneByOne(0, rowRays);
                 }
             }
-            rows.writeRow(frame, y, x0, x1, sampleCount);
+            rows.writeRow(frame, y);
         }
     }
 
@@ -123,34 +116,29 @@ final class TracerWorker {
         traceOneByOne(ray, rays);
     }
 
-    /** Aims the current row's camera rays. */
-    private void aimRow() {
-        rows.aim(scene.camera, imageWidth, rowY, rowX0, rowX1, patternSide, firstSample, raysPerPixel, frameIndex);
-    }
-
     /**
-     * Traces the row's camera rays [0, rays) in stages, into the row's radiance: the rays aimed,
+     * Traces the camera rays [0, rays) of the tile's row y in stages, into the row's radiance: the rays aimed,
      * every ray's nearest hit, then every hit's surface and shading, with the matte hits set aside
      * and then lit together. Each pixel gets the same arithmetic in the same order as {@link #trace},
      * so the image is the same bit for bit.
      */
-    private void traceInStages(int rays) {
+    private void traceInStages(int y, int rays) {
         hits.fit(rays);
-        findHitsFromEye(rays);
+        findHitsFromEye(y, rays);
         shadeRowHits(rays);
         lightMatteHits();
     }
 
     /**
-     * Stage 1: the row's camera rays aimed, then the nearest hit of each: sphere by sphere where no
+     * Stage 1: the camera rays of the tile's row y aimed, then the nearest hit of each: sphere by sphere where no
      * pixel of the row can show more spheres than a camera ray tests one by one, otherwise pixel by
      * pixel, swept left to right as in {@link #traceOneByOne}. The aiming is here rather than in
      * {@link #renderTile} because the JIT compiles this method on its own, and there the loop that
      * aims the pixel centres becomes SIMD instructions (see docs/benchmarks.md); inlined into the
      * much larger renderTile, it stays scalar.
      */
-    private void findHitsFromEye(int rays) {
-        aimRow();
+    private void findHitsFromEye(int y, int rays) {
+        rows.aim(y);
         EyeRays eye = caster.eye;
         if (scene.bvh == null || eye.rowCount <= RayCaster.MOST_SPHERES_SWEPT) {
             hits.findFromEyeSphereBySphere(scene, eye, rows, rowX0, raysPerPixel, rays);

@@ -38,12 +38,12 @@ class CameraRowsTest {
         CameraRows single = new CameraRows();
         for (int column = 0; column < divider; column++) {
             int x0 = column * width / divider, x1 = (column + 1) * width / divider;
-            rows.prepare(camera, width, height, x1 - x0);
-            single.prepare(camera, width, height, x1 - x0);
+            rows.prepare(camera, width, height, x0, x1, 1, 0, 1, 0);
+            single.prepare(camera, width, height, x0, x1, 1, 0, 1, 0);
             for (int y = 0; y < height; y += 1 + random.nextInt(height)) {
-                rows.aim(camera, width, y, x0, x1, 1, 0, 1, 0);
+                rows.aim(y);
                 for (int x = x0; x < x1; x++) {
-                    single.aim(camera, x - x0, x + 0.5, y + 0.5);
+                    single.aimThrough(x - x0, x + 0.5, y + 0.5);
                     int ray = x - x0, pixel = x, row = y;
                     assertEquals(single.dirX[ray], rows.dirX[ray], () -> "x of pixel " + pixel + ", " + row);
                     assertEquals(single.dirY[ray], rows.dirY[ray], () -> "y of pixel " + pixel + ", " + row);

@@ -31,17 +31,16 @@ class EyeRaysTest {
                                                                      int samples, int divider) {
         RayCaster caster = new RayCaster();
         CameraRows rows = new CameraRows();
-        int side = (int) Math.round(Math.sqrt(samples));
         int sphereHits = 0;
         for (int tile = 0; tile < divider * divider; tile++) {
             int x0 = tile % divider * width / divider, x1 = (tile % divider + 1) * width / divider;
             int y0 = tile / divider * height / divider, y1 = (tile / divider + 1) * height / divider;
-            rows.prepare(s.camera, width, height, (x1 - x0) * samples);
+            rows.prepare(s.camera, width, height, x0, x1, samples, 0, samples, 0);
             caster.eye.prepare(s);
             caster.eye.aimTile(rows.screenX(x0), rows.screenX(x1), rows.screenY(y1), rows.screenY(y0));
             for (int y = y0; y < y1; y++) {
                 caster.eye.aimRow(rows.screenY(y + 1), rows.screenY(y));
-                rows.aim(s.camera, width, y, x0, x1, side, 0, samples, 0);
+                rows.aim(y);
                 for (int x = x0; x < x1; x++) {
                     caster.eye.aimPixel(rows.screenX(x), rows.screenX(x + 1));
                     for (int ray = (x - x0) * samples; ray < (x - x0 + 1) * samples; ray++) {
@@ -125,7 +124,7 @@ class EyeRaysTest {
         // the centre pixel shows every sphere: more than a sweep takes
         RayCaster caster = new RayCaster();
         CameraRows rows = new CameraRows();
-        rows.prepare(scene.camera, 31, 31, 31);
+        rows.prepare(scene.camera, 31, 31, 0, 31, 1, 0, 1, 0);
         caster.eye.prepare(scene);
         caster.eye.aimTile(rows.screenX(0), rows.screenX(31), rows.screenY(31), rows.screenY(0));
         caster.eye.aimRow(rows.screenY(16), rows.screenY(15));
