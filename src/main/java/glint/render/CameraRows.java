@@ -75,12 +75,33 @@ final class CameraRows {
     }
 
     /**
-     * Aims the camera rays of the tile's row y: each pixel's samples of its stratified pattern, or
-     * its centre when the pattern has one sample.
+     * Aims the camera rays of the tile's row y: each pixel's samples of its stratified pattern, or,
+     * when the pattern has one sample, its centre. The centres are aimed with the arithmetic of
+     * {@link #aimThrough} in a loop without branches or calls, which the JIT turns into SIMD
+     * instructions (four rays an instruction where the processor has AVX2), but only where it
+     * compiles the loop in a small method of its own: inlined into a large caller, the same loop
+     * stayed scalar (docs/benchmarks.md). So both loops are kept in this one method, whose
+     * bytecode is longer than the 325 bytes up to which HotSpot's C2 inlines a hot method
+     * ({@code -XX:FreqInlineSize}'s default): it is always compiled on its own.
      */
     void aim(int y) {
         if (side == 1) {
-            aimCentres(y);
+            CameraBasis c = camera;
+            double sy = screenY(y + 0.5);
+            double upX = sy * c.upX, upY = sy * c.upY, upZ = sy * c.upZ;
+            double forwardX = c.forwardX, forwardY = c.forwardY, forwardZ = c.forwardZ;
+            double rightX = c.rightX, rightY = c.rightY, rightZ = c.rightZ;
+            double[] outX = dirX, outY = dirY, outZ = dirZ, screenX = centreX;
+            for (int ray = 0, n = x1 - x0; ray < n; ray++) {
+                double sx = screenX[ray];
+                double dx = forwardX + sx * rightX + upX;
+                double dy = forwardY + sx * rightY + upY;
+                double dz = forwardZ + sx * rightZ + upZ;
+                double inv = 1 / Math.sqrt(dx * dx + dy * dy + dz * dz);
+                outX[ray] = dx * inv;
+                outY[ray] = dy * inv;
+                outZ[ray] = dz * inv;
+            }
             return;
         }
         int ray = 0;
@@ -92,30 +113,6 @@ final class CameraRows {
                 aimThrough(ray++, x + (cellX + SamplePattern.jitterU(h)) / side,
                         y + (cellY + SamplePattern.jitterV(h)) / side);
             }
-        }
-    }
-
-    /**
-     * Aims the camera rays through the centres of the tile's pixels in row y, ray i through pixel
-     * x0 + i: the arithmetic of {@link #aimThrough}, in a loop without branches or calls, which the
-     * JIT turns into SIMD instructions (four rays an instruction where the processor has AVX2).
-     */
-    private void aimCentres(int y) {
-        CameraBasis c = camera;
-        double sy = screenY(y + 0.5);
-        double upX = sy * c.upX, upY = sy * c.upY, upZ = sy * c.upZ;
-        double forwardX = c.forwardX, forwardY = c.forwardY, forwardZ = c.forwardZ;
-        double rightX = c.rightX, rightY = c.rightY, rightZ = c.rightZ;
-        double[] outX = dirX, outY = dirY, outZ = dirZ, screenX = centreX;
-        for (int ray = 0, n = x1 - x0; ray < n; ray++) {
-            double sx = screenX[ray];
-            double dx = forwardX + sx * rightX + upX;
-            double dy = forwardY + sx * rightY + upY;
-            double dz = forwardZ + sx * rightZ + upZ;
-            double inv = 1 / Math.sqrt(dx * dx + dy * dy + dz * dz);
-            outX[ray] = dx * inv;
-            outY[ray] = dy * inv;
-            outZ[ray] = dz * inv;
         }
     }
 

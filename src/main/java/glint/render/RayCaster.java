@@ -303,11 +303,16 @@ final class RayCaster {
 
     /**
      * {@link #occluded} for a shadow ray towards light {@code light}, leaving from a point
-     * {@code offset} from the surface: tests only the spheres the light's {@link LightBuffer} lists
-     * for its direction, where it can.
+     * {@code offset} from the surface: tests only the spheres whose {@link LightCones} hold its
+     * direction, or those the light's {@link LightBuffer} lists for it, where it can.
      */
     boolean shadowed(RenderScene s, double ox, double oy, double oz, double dx, double dy, double dz, double tMax,
                      int skipCode, int light, double offset) {
+        LightCones cones = s.lightCones[light];
+        if (cones != null && offset <= cones.maxOffset) {
+            return anyPlaneBefore(s, ox, oy, oz, dx, dy, dz, tMax, skipCode)
+                    || anySphereInCone(s, cones, ox, oy, oz, dx, dy, dz, tMax);
+        }
         LightBuffer buffer = s.lightBuffers[light];
         if (buffer == null || offset > buffer.maxOffset) {
             return occluded(s, ox, oy, oz, dx, dy, dz, tMax, skipCode);
@@ -321,8 +326,35 @@ final class RayCaster {
                 || anyListedSphere(s, buffer.cellSpheres, first, end, ox, oy, oz, dx, dy, dz, tMax);
     }
 
-    /** Whether a plane lies on the ray before tMax; sets {@link #skip} for the sphere tests that follow. */
-    private boolean anyPlaneBefore(RenderScene s, double ox, double oy, double oz, double dx, double dy, double dz,
+    /**
+     * Whether a sphere may lie on the shadow ray towards light {@code light} along unit d, leaving
+     * from a point {@code offset} from the surface: false only where the light's cones or buffer
+     * rule every sphere out, and then {@link #shadowed} is {@link #anyPlaneBefore}. Has no calls
+     * the JIT would not inline, so that a loop over a row's shadow rays stays in registers.
+     */
+    boolean sphereMayShadow(RenderScene s, double dx, double dy, double dz, int light, double offset) {
+        LightCones cones = s.lightCones[light];
+        if (cones != null && offset <= cones.maxOffset) {
+            for (int i = 0, n = cones.count; i < n; i++) {
+                if (cones.holds(i, dx, dy, dz)) {
+                    return true;
+                }
+            }
+            return false;
+        }
+        LightBuffer buffer = s.lightBuffers[light];
+        if (buffer == null || offset > buffer.maxOffset) {
+            return s.sphereCount > 0;
+        }
+        int cell = buffer.cell(-dx, -dy, -dz);
+        return buffer.cellStart[cell] != buffer.cellStart[cell + 1];
+    }
+
+    /**
+     * Whether a plane lies on the ray before tMax (counted as a ray cast); sets {@link #skip} for
+     * the sphere tests that follow.
+     */
+    boolean anyPlaneBefore(RenderScene s, double ox, double oy, double oz, double dx, double dy, double dz,
                                    double tMax, int skipCode) {
         skip = skipped(skipCode);
         rays++;
@@ -351,6 +383,17 @@ final class RayCaster {
                                     double dx, double dy, double dz, double tMax) {
         for (int j = first; j < end; j++) {
             if (blocks(s, list[j], ox, oy, oz, dx, dy, dz, tMax)) {
+                return true;
+            }
+        }
+        return false;
+    }
+
+    /** Whether any sphere whose cone holds the ray's direction lies on the ray before tMax. */
+    private boolean anySphereInCone(RenderScene s, LightCones cones, double ox, double oy, double oz,
+                                    double dx, double dy, double dz, double tMax) {
+        for (int i = 0, n = cones.count; i < n; i++) {
+            if (cones.holds(i, dx, dy, dz) && blocks(s, i, ox, oy, oz, dx, dy, dz, tMax)) {
                 return true;
             }
         }

@@ -72,7 +72,11 @@ public final class RenderScene {
     final boolean[] lightIsPoint;
     final double[] lightVector; // 3 per light
     final double[] lightPower;  // 3 per light: color x intensity
-    /** Per light, the spheres that can shadow it by direction; null for a directional light. */
+    /**
+     * Per point light, the spheres that can shadow it by direction: as cones in a scene of few
+     * spheres, otherwise as a light buffer; both null for a directional light.
+     */
+    final LightCones[] lightCones;
     final LightBuffer[] lightBuffers;
 
     final double backgroundR, backgroundG, backgroundB;
@@ -147,6 +151,7 @@ public final class RenderScene {
             }
             put3(lightPower, i, light.color().scale(light.intensity()));
         }
+        lightCones = buildLightCones();
         lightBuffers = buildLightBuffers();
         neighbours = buildNeighbourCells();
 
@@ -184,6 +189,7 @@ public final class RenderScene {
         lightIsPoint = base.lightIsPoint;
         lightVector = base.lightVector;
         lightPower = base.lightPower;
+        lightCones = base.lightCones;
         lightBuffers = base.lightBuffers;
         backgroundR = base.backgroundR;
         backgroundG = base.backgroundG;
@@ -199,8 +205,21 @@ public final class RenderScene {
     /** List entries and cell indices all light buffers together may hold: 32 MB. */
     static final long LIGHT_BUFFER_ENTRIES = 8L << 20;
 
+    /** {@link LightCones} for each point light, in a scene of at most {@link LightCones#MOST_SPHERES} spheres. */
+    private LightCones[] buildLightCones() {
+        LightCones[] cones = new LightCones[lightCount];
+        for (int i = 0; i < lightCount && sphereCount > 0 && sphereCount <= LightCones.MOST_SPHERES; i++) {
+            if (lightIsPoint[i]) {
+                cones[i] = LightCones.build(spheres, sphereCount, lightVector[3 * i], lightVector[3 * i + 1],
+                        lightVector[3 * i + 2]);
+            }
+        }
+        return cones;
+    }
+
     /**
-     * A {@link LightBuffer} for each of the first point lights, while they fit the budget: a scene
+     * In a scene of more spheres than {@link LightCones#MOST_SPHERES}, a {@link LightBuffer} for
+     * each of the first point lights, while they fit the budget: a scene
      * of many lights, or of many spheres crowding around one, must not cost the memory or the
      * compile time of a buffer for each.
      */
@@ -208,7 +227,7 @@ public final class RenderScene {
         LightBuffer[] buffers = new LightBuffer[lightCount];
         long left = LIGHT_BUFFER_ENTRIES;
         int built = 0;
-        for (int i = 0; i < lightCount && built < MOST_LIGHT_BUFFERS && sphereCount > 0; i++) {
+        for (int i = 0; i < lightCount && built < MOST_LIGHT_BUFFERS && sphereCount > LightCones.MOST_SPHERES; i++) {
             if (!lightIsPoint[i] || left < LightBuffer.CELL_INDEX_SIZE) {
                 continue;
             }

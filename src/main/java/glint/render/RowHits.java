@@ -25,6 +25,8 @@ final class RowHits {
     double[] nx = new double[0], ny = new double[0], nz = new double[0];
     double[] offset = new double[0];
     int[] skipNear = new int[0], material = new int[0];
+    /** Stage 2's metal and glass hits, by camera ray, shaded after the row's matte hits are set aside. */
+    int[] tracedRays = new int[0];
 
     // stage 3, per matte hit: the current light's sample (unit direction, distance, n.l and the
     // irradiance it brings, n.l included) and the radiance summed over the lights so far
@@ -32,6 +34,8 @@ final class RowHits {
     double[] lightDistance = new double[0], cosLight = new double[0];
     double[] lightR = new double[0], lightG = new double[0], lightB = new double[0];
     double[] sumR = new double[0], sumG = new double[0], sumB = new double[0];
+    /** The matte hits a sphere may shadow from the current light, set aside for the whole test. */
+    int[] suspects = new int[0];
 
     /** Makes room for a row of {@code rays} camera rays. */
     void fit(int rays) {
@@ -51,6 +55,7 @@ final class RowHits {
         skipNear = new int[rays];
         material = new int[rays];
         matteRays = new int[rays];
+        tracedRays = new int[rays];
         toLightX = new double[rays];
         toLightY = new double[rays];
         toLightZ = new double[rays];
@@ -62,6 +67,7 @@ final class RowHits {
         sumR = new double[rays];
         sumG = new double[rays];
         sumB = new double[rays];
+        suspects = new int[rays];
     }
 
     /**

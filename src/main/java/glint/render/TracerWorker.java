@@ -159,44 +159,57 @@ final class TracerWorker {
     }
 
     /**
-     * Stage 2: the surface at each hit and its shading: the background for misses, metal and glass
-     * shaded one by one (their reflected and refracted rays traced from there), matte hits kept
-     * in the row's matte slots for stage 3.
+     * Stage 2: the background for misses, and the surface at each matte hit, kept in the row's
+     * matte slots for stage 3; then the metal and glass hits, their surfaces found and shaded one
+     * by one (their reflected and refracted rays traced from there). The second kind waits for a
+     * loop of its own: a call the JIT does not inline, left in the first loop, would make it keep
+     * its values on the stack for every hit rather than in registers (docs/benchmarks.md).
      */
     private void shadeRowHits(int rays) {
         RowHits h = hits;
         CameraRows r = rows;
         RenderScene s = scene;
         CameraBasis camera = s.camera;
-        int matte = 0;
+        int matte = 0, traced = 0;
         for (int ray = 0; ray < rays; ray++) {
             int sphere = h.sphere[ray], plane = h.plane[ray];
             if (sphere < 0 && plane < 0) {
-                outR = s.backgroundR;
-                outG = s.backgroundG;
-                outB = s.backgroundB;
+                r.radianceR[ray] = s.backgroundR;
+                r.radianceG[ray] = s.backgroundG;
+                r.radianceB[ray] = s.backgroundB;
+            } else if (s.materialType[sphere >= 0 ? s.sphereMaterial[sphere] : s.planeMaterial[plane]]
+                    != RenderScene.MATTE) {
+                h.tracedRays[traced++] = ray;
             } else {
-                double dx = r.dirX[ray], dy = r.dirY[ray], dz = r.dirZ[ray];
-                describeHit(h.t[ray], sphere, plane, camera.eyeX, camera.eyeY, camera.eyeZ, dx, dy, dz);
-                int m = hitMaterial;
-                int skipNear = RayCaster.skipNear(sphere, plane, hitEntering);
-                int type = s.materialType[m];
-                if (type == RenderScene.MATTE) {
-                    keepMatteHit(matte++, ray, skipNear);
-                    continue;
-                }
-                if (type == RenderScene.METAL) {
-                    shadeMetal(m, dx, dy, dz, recursionMax, 1, skipNear);
-                } else {
-                    shadeGlass(m, dx, dy, dz, recursionMax, 1, skipNear,
-                            RayCaster.skipFar(sphere, plane, hitEntering));
-                }
+                describeHit(h.t[ray], sphere, plane, camera.eyeX, camera.eyeY, camera.eyeZ, r.dirX[ray], r.dirY[ray],
+                        r.dirZ[ray]);
+                keepMatteHit(matte++, ray, RayCaster.skipNear(sphere, plane, hitEntering));
             }
-            r.radianceR[ray] = outR;
-            r.radianceG[ray] = outG;
-            r.radianceB[ray] = outB;
         }
         h.matteCount = matte;
+        for (int j = 0; j < traced; j++) {
+            shadeTracedHit(h.tracedRays[j]);
+        }
+    }
+
+    /** The shading of camera ray {@code ray}'s metal or glass hit, into the row's radiance. */
+    private void shadeTracedHit(int ray) {
+        RowHits h = hits;
+        CameraRows r = rows;
+        CameraBasis camera = scene.camera;
+        int sphere = h.sphere[ray], plane = h.plane[ray];
+        double dx = r.dirX[ray], dy = r.dirY[ray], dz = r.dirZ[ray];
+        describeHit(h.t[ray], sphere, plane, camera.eyeX, camera.eyeY, camera.eyeZ, dx, dy, dz);
+        int m = hitMaterial;
+        int skipNear = RayCaster.skipNear(sphere, plane, hitEntering);
+        if (scene.materialType[m] == RenderScene.METAL) {
+            shadeMetal(m, dx, dy, dz, recursionMax, 1, skipNear);
+        } else {
+            shadeGlass(m, dx, dy, dz, recursionMax, 1, skipNear, RayCaster.skipFar(sphere, plane, hitEntering));
+        }
+        r.radianceR[ray] = outR;
+        r.radianceG[ray] = outG;
+        r.radianceB[ray] = outB;
     }
 
     /** Stores the matte surface describeHit() found for camera ray {@code ray} in matte slot j. */
@@ -253,23 +266,48 @@ final class TracerWorker {
         }
     }
 
-    /** Adds light {@code light} at each matte hit that faces it and sees it. */
+    /**
+     * Adds light {@code light} at each matte hit that faces it and sees it: first the hits no sphere
+     * can shadow, which need only the planes tested, then those a sphere may shadow, which take the
+     * whole test. The first loop has no call the JIT would not inline; left in it, such a call
+     * would make it keep its values on the stack for every hit rather than in registers.
+     */
     private void addUnshadowed(int light, int count) {
         RowHits h = hits;
         RenderScene s = scene;
+        RayCaster shadows = caster;
+        int suspects = 0;
         for (int j = 0; j < count; j++) {
             if (!(h.cosLight[j] > 0)) {
                 continue;
             }
-            double offset = h.offset[j];
+            double dx = h.toLightX[j], dy = h.toLightY[j], dz = h.toLightZ[j], offset = h.offset[j];
+            if (shadows.sphereMayShadow(s, dx, dy, dz, light, offset)) {
+                h.suspects[suspects++] = j;
+                continue;
+            }
             double ox = h.px[j] + offset * h.nx[j], oy = h.py[j] + offset * h.ny[j], oz = h.pz[j] + offset * h.nz[j];
-            if (!caster.shadowed(s, ox, oy, oz, h.toLightX[j], h.toLightY[j], h.toLightZ[j], h.lightDistance[j],
-                    h.skipNear[j], light, offset)) {
-                h.sumR[j] += h.lightR[j];
-                h.sumG[j] += h.lightG[j];
-                h.sumB[j] += h.lightB[j];
+            if (!shadows.anyPlaneBefore(s, ox, oy, oz, dx, dy, dz, h.lightDistance[j], h.skipNear[j])) {
+                addLight(j);
             }
         }
+        for (int k = 0; k < suspects; k++) {
+            int j = h.suspects[k];
+            double offset = h.offset[j];
+            double ox = h.px[j] + offset * h.nx[j], oy = h.py[j] + offset * h.ny[j], oz = h.pz[j] + offset * h.nz[j];
+            if (!shadows.shadowed(s, ox, oy, oz, h.toLightX[j], h.toLightY[j], h.toLightZ[j], h.lightDistance[j],
+                    h.skipNear[j], light, offset)) {
+                addLight(j);
+            }
+        }
+    }
+
+    /** Adds the current light's sample at matte hit j to its sum. */
+    private void addLight(int j) {
+        RowHits h = hits;
+        h.sumR[j] += h.lightR[j];
+        h.sumG[j] += h.lightG[j];
+        h.sumB[j] += h.lightB[j];
     }
 
     /**

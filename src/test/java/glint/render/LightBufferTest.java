@@ -19,8 +19,9 @@ import java.util.SplittableRandom;
 import org.junit.jupiter.api.Test;
 
 /**
- * A shadow ray that tests only the spheres its light's buffer lists for its direction finds a
- * blocker exactly when testing every sphere does.
+ * A shadow ray that tests only the spheres its light's cones hold or its light's buffer lists for
+ * its direction finds a blocker exactly when testing every sphere does; where the cones or the
+ * buffer rule every sphere out, the planes alone give the same answer.
  */
 class LightBufferTest {
 
@@ -45,14 +46,23 @@ class LightBufferTest {
         boolean everySphere = caster.occluded(s, ox, oy, oz, dx, dy, dz, distance, skipCode);
         boolean listed = caster.shadowed(s, ox, oy, oz, dx, dy, dz, distance, skipCode, 0, offset);
         assertEquals(everySphere, listed, () -> String.format("point (%g, %g, %g) offset %g", p[0], p[1], p[2], offset));
+        if (!caster.sphereMayShadow(s, dx, dy, dz, 0, offset)) {
+            assertEquals(everySphere, caster.anyPlaneBefore(s, ox, oy, oz, dx, dy, dz, distance, skipCode),
+                    () -> String.format("planes only: point (%g, %g, %g) offset %g", p[0], p[1], p[2], offset));
+        }
         return everySphere;
+    }
+
+    /** The largest offset for which the first light's cones or buffer answer for a shadow ray. */
+    private static double maxOffset(RenderScene s) {
+        return s.lightCones[0] != null ? s.lightCones[0].maxOffset : s.lightBuffers[0].maxOffset;
     }
 
     @Test
     void randomScenesAndPoints() {
         SplittableRandom random = new SplittableRandom(9);
         int blocked = 0, open = 0;
-        for (int count : new int[] {1, 3, 6, 40, 400}) {
+        for (int count : new int[] {1, 3, LightCones.MOST_SPHERES, 40, 400}) {
             for (int trial = 0; trial < 4; trial++) {
                 List<SceneObject> objects = new ArrayList<>();
                 double extent = Math.cbrt(count) * 3;
@@ -70,7 +80,7 @@ class LightBufferTest {
                 for (int i = 0; i < 4000; i++) {
                     double[] p = {random.nextDouble(-2 * extent, 2 * extent), random.nextDouble(-2 * extent, 2 * extent),
                             random.nextDouble(-2 * extent, 2 * extent)};
-                    double offset = i % 2 == 0 ? 1e-9 : s.lightBuffers[0].maxOffset * random.nextDouble(0, 2);
+                    double offset = i % 2 == 0 ? 1e-9 : maxOffset(s) * random.nextDouble(0, 2);
                     int skipped = random.nextInt(count + 1) - 1;
                     if (assertSameAnswer(s, caster, p, RandomScenes.unitVector(random), offset,
                             skipped < 0 ? 0 : RayCaster.surfaceId(skipped, -1))) {
@@ -90,7 +100,11 @@ class LightBufferTest {
      */
     @Test
     void raysGrazingASphereNearTheLight() {
-        SplittableRandom random = new SplittableRandom(10);
+        raysGrazingASphereNearTheLight(30, new SplittableRandom(10)); // a light buffer
+        raysGrazingASphereNearTheLight(2, new SplittableRandom(11)); // cones
+    }
+
+    private static void raysGrazingASphereNearTheLight(int others, SplittableRandom random) {
         int blocked = 0, open = 0;
         for (int trial = 0; trial < 50; trial++) {
             double radius = random.nextDouble(0.1, 1);
@@ -100,14 +114,14 @@ class LightBufferTest {
             Vector3d centre = new Vector3d(towards[0] * distance, towards[1] * distance, towards[2] * distance);
             List<SceneObject> objects = new ArrayList<>();
             objects.add(new SceneObject(new Sphere(centre, radius), MATTE));
-            for (int i = 0; i < 30; i++) { // others further out, for a hierarchy and fuller cells
+            for (int i = 0; i < others; i++) { // others further out
                 double[] u = RandomScenes.unitVector(random);
                 double far = random.nextDouble(3, 20);
                 objects.add(new SceneObject(new Sphere(new Vector3d(u[0] * far, u[1] * far, u[2] * far), 0.5), MATTE));
             }
             RenderScene s = scene(objects, Vector3d.ZERO);
-            LightBuffer buffer = s.lightBuffers[0];
-            assertTrue(buffer.maxOffset <= Math.sin(ConeCells.ANGLE_MARGIN) * gap * (1 + 1e-12));
+            double maxOffset = maxOffset(s);
+            assertTrue(maxOffset <= Math.sin(ConeCells.ANGLE_MARGIN) * gap * (1 + 1e-12));
             RayCaster caster = new RayCaster();
             // directions on the sphere's silhouette cone, turned in or out by up to twice the margin
             double halfAngle = Math.asin(radius / distance);
@@ -119,7 +133,7 @@ class LightBufferTest {
                         Math.cos(angle) * towards[2] + Math.sin(angle) * side[2]};
                 double reach = random.nextDouble(10, 1e4);
                 double[] p = {dir[0] * reach, dir[1] * reach, dir[2] * reach};
-                double offset = buffer.maxOffset * random.nextDouble(0.5, 1.0);
+                double offset = maxOffset * random.nextDouble(0.5, 1.0);
                 if (assertSameAnswer(s, caster, p, RandomScenes.unitVector(random), offset, 0)) {
                     blocked++;
                 } else {
@@ -142,7 +156,8 @@ class LightBufferTest {
     void aLightInsideASphereFindsItInEveryDirection() {
         List<SceneObject> objects = List.of(new SceneObject(new Sphere(new Vector3d(0, 0, 0), 2), MATTE),
                 new SceneObject(new Sphere(new Vector3d(5, 0, 0), 1), MATTE));
-        LightBuffer buffer = scene(objects, new Vector3d(1.8, 0.2, 0)).lightBuffers[0];
+        RenderScene s = scene(objects, new Vector3d(1.8, 0.2, 0));
+        LightBuffer buffer = LightBuffer.build(s.spheres, 2, 1.8, 0.2, 0, Long.MAX_VALUE);
         SplittableRandom random = new SplittableRandom(3);
         for (int i = 0; i < 1000; i++) {
             double[] d = RandomScenes.unitVector(random);
@@ -155,6 +170,7 @@ class LightBufferTest {
         }
         // only the sphere outside limits the offsets
         assertEquals(Math.sin(ConeCells.ANGLE_MARGIN) * (Math.sqrt(3.2 * 3.2 + 0.2 * 0.2) - 1), buffer.maxOffset, 1e-15);
+        assertEquals(buffer.maxOffset, s.lightCones[0].maxOffset, 1e-15);
     }
 
     /**
@@ -186,16 +202,31 @@ class LightBufferTest {
         }
     }
 
-    /** Past the first few point lights, or past the memory budget, shadow rays take the full test. */
+    /**
+     * A scene of few spheres gets cones for every point light, and no buffer; one of more spheres
+     * gets buffers for its first few point lights, within the memory budget, and no cones; past
+     * those, shadow rays take the full test.
+     */
     @Test
     void manyLightsOrCrowdedOnesGetNoBuffer() {
         List<Light> lights = new ArrayList<>();
         for (int i = 0; i < RenderScene.MOST_LIGHT_BUFFERS + 1; i++) {
             lights.add(new Light.Point(new Vector3d(i, 10, 0), new Vector3d(1, 1, 1), 1));
         }
-        List<SceneObject> one = List.of(new SceneObject(new Sphere(new Vector3d(0, 0, 0), 1), MATTE));
-        RenderScene many = RenderScene.compile(new Scene(Camera.defaults(), Vector3d.ZERO, Vector3d.ZERO, lights, one),
+        List<SceneObject> few = new ArrayList<>(), more = new ArrayList<>();
+        for (int i = 0; i <= LightCones.MOST_SPHERES; i++) {
+            (i < LightCones.MOST_SPHERES ? few : more).add(new SceneObject(new Sphere(new Vector3d(3 * i, 0, 0), 1), MATTE));
+        }
+        more.addAll(few);
+        RenderScene withCones = RenderScene.compile(new Scene(Camera.defaults(), Vector3d.ZERO, Vector3d.ZERO, lights,
+                few), SETTINGS);
+        RenderScene many = RenderScene.compile(new Scene(Camera.defaults(), Vector3d.ZERO, Vector3d.ZERO, lights, more),
                 SETTINGS);
+        for (int i = 0; i <= RenderScene.MOST_LIGHT_BUFFERS; i++) {
+            assertTrue(withCones.lightCones[i] != null, "light " + i);
+            assertEquals(null, withCones.lightBuffers[i]);
+            assertEquals(null, many.lightCones[i]);
+        }
         for (int i = 0; i < RenderScene.MOST_LIGHT_BUFFERS; i++) {
             assertTrue(many.lightBuffers[i] != null, "light " + i);
         }
@@ -216,10 +247,11 @@ class LightBufferTest {
     }
 
     @Test
-    void aDirectionalLightHasNoBuffer() {
+    void aDirectionalLightHasNoConesOrBuffer() {
         RenderScene s = RenderScene.compile(new Scene(Camera.defaults(), Vector3d.ZERO, Vector3d.ZERO,
                 List.of(new Light.Directional(new Vector3d(0, -1, 0), new Vector3d(1, 1, 1), 1)),
                 List.of(new SceneObject(new Sphere(new Vector3d(0, 0, 0), 1), MATTE))), SETTINGS);
         assertEquals(null, s.lightBuffers[0]);
+        assertEquals(null, s.lightCones[0]);
     }
 }

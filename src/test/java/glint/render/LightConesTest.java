@@ -1,0 +1,68 @@
+package glint.render;
+
+import static org.junit.jupiter.api.Assertions.assertEquals;
+import static org.junit.jupiter.api.Assertions.assertFalse;
+import static org.junit.jupiter.api.Assertions.assertTrue;
+
+import java.util.SplittableRandom;
+import org.junit.jupiter.api.Test;
+
+/**
+ * A sphere's cone seen from the light holds every direction within its half-angle widened by the
+ * margin, and none much beyond it; a light inside a sphere finds that sphere in every direction.
+ * Shadow rays through the cones are compared with full tests in {@link LightBufferTest}.
+ */
+class LightConesTest {
+
+    /** Direction at angle {@code angle} from unit axis {@code towards}, turned towards a random side. */
+    private static double[] turned(double[] towards, double angle, SplittableRandom random) {
+        double[] v = RandomScenes.unitVector(random);
+        double along = towards[0] * v[0] + towards[1] * v[1] + towards[2] * v[2];
+        double[] side = {v[0] - along * towards[0], v[1] - along * towards[1], v[2] - along * towards[2]};
+        double length = Math.sqrt(side[0] * side[0] + side[1] * side[1] + side[2] * side[2]);
+        double c = Math.cos(angle), s = Math.sin(angle) / length;
+        return new double[] {c * towards[0] + s * side[0], c * towards[1] + s * side[1], c * towards[2] + s * side[2]};
+    }
+
+    @Test
+    void aConeHoldsTheWidenedHalfAngleAndLittleMore() {
+        SplittableRandom random = new SplittableRandom(21);
+        for (int trial = 0; trial < 3000; trial++) {
+            double[] towards = RandomScenes.unitVector(random);
+            double distance = random.nextDouble(1, 50);
+            double radius = distance * random.nextDouble(1e-3, 0.9);
+            double[] light = {random.nextDouble(-5, 5), random.nextDouble(-5, 5), random.nextDouble(-5, 5)};
+            double[] sphere = {light[0] + towards[0] * distance, light[1] + towards[1] * distance,
+                    light[2] + towards[2] * distance, radius};
+            LightCones cones = LightCones.build(sphere, 1, light[0], light[1], light[2]);
+            double halfAngle = Math.asin(radius / distance);
+            for (int i = 0; i < 100; i++) {
+                double inside = i % 2 == 0 ? halfAngle * random.nextDouble()
+                        : halfAngle + ConeCells.ANGLE_MARGIN * random.nextDouble(0, 0.999);
+                double[] d = turned(towards, inside, random);
+                // holds() takes the shadow ray's direction, towards the light
+                assertTrue(cones.holds(0, -d[0], -d[1], -d[2]), "trial " + trial + ", direction " + i);
+                double outside = Math.min(Math.PI, halfAngle + 3 * ConeCells.ANGLE_MARGIN + random.nextDouble(0, 1));
+                double[] e = turned(towards, outside, random);
+                assertFalse(cones.holds(0, -e[0], -e[1], -e[2]), "trial " + trial + ", outside " + i);
+            }
+        }
+    }
+
+    @Test
+    void aLightInsideASphereFindsItInEveryDirection() {
+        double[] spheres = {0, 0, 0, 2, 5, 0, 0, 1};
+        LightCones cones = LightCones.build(spheres, 2, 1.8, 0.2, 0);
+        SplittableRandom random = new SplittableRandom(3);
+        int second = 0;
+        for (int i = 0; i < 1000; i++) {
+            double[] d = RandomScenes.unitVector(random);
+            assertTrue(cones.holds(0, d[0], d[1], d[2]), "direction " + i);
+            second += cones.holds(1, d[0], d[1], d[2]) ? 1 : 0;
+        }
+        // the sphere outside fills a cone of half-angle asin(1 / 3.21): about 2.6 % of directions
+        assertTrue(second > 5 && second < 60, second + " of 1000");
+        // only the sphere outside limits the offsets
+        assertEquals(Math.sin(ConeCells.ANGLE_MARGIN) * (Math.sqrt(3.2 * 3.2 + 0.2 * 0.2) - 1), cones.maxOffset, 1e-15);
+    }
+}
