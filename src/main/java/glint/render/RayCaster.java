@@ -328,15 +328,17 @@ final class RayCaster {
 
     /**
      * Whether a sphere may lie on the shadow ray towards light {@code light} along unit d, leaving
-     * from a point {@code offset} from the surface: false only where the light's cones or buffer
-     * rule every sphere out, and then {@link #shadowed} is {@link #anyPlaneBefore}. Has no calls
-     * the JIT would not inline, so that a loop over a row's shadow rays stays in registers.
+     * from a point {@code offset} from the surface with skip code {@code skipCode}: false only where
+     * the light's cones or buffer rule every sphere out (the sphere the ray leaves on its outer
+     * side included), and then {@link #shadowed} is {@link #anyPlaneBefore}. Has no calls the JIT
+     * would not inline, so that a loop over a row's shadow rays keeps its values in registers.
      */
-    boolean sphereMayShadow(RenderScene s, double dx, double dy, double dz, int light, double offset) {
+    boolean sphereMayShadow(RenderScene s, double dx, double dy, double dz, int light, double offset, int skipCode) {
         LightCones cones = s.lightCones[light];
         if (cones != null && offset <= cones.maxOffset) {
+            int left = skipped(skipCode) - 1; // the sphere left on its outer side, or below 0
             for (int i = 0, n = cones.count; i < n; i++) {
-                if (cones.holds(i, dx, dy, dz)) {
+                if (i != left && cones.holds(i, dx, dy, dz)) {
                     return true;
                 }
             }

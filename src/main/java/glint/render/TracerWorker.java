@@ -282,7 +282,7 @@ final class TracerWorker {
                 continue;
             }
             double dx = h.toLightX[j], dy = h.toLightY[j], dz = h.toLightZ[j], offset = h.offset[j];
-            if (shadows.sphereMayShadow(s, dx, dy, dz, light, offset)) {
+            if (shadows.sphereMayShadow(s, dx, dy, dz, light, offset, h.skipNear[j])) {
                 h.suspects[suspects++] = j;
                 continue;
             }

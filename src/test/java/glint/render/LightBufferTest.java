@@ -46,7 +46,7 @@ class LightBufferTest {
         boolean everySphere = caster.occluded(s, ox, oy, oz, dx, dy, dz, distance, skipCode);
         boolean listed = caster.shadowed(s, ox, oy, oz, dx, dy, dz, distance, skipCode, 0, offset);
         assertEquals(everySphere, listed, () -> String.format("point (%g, %g, %g) offset %g", p[0], p[1], p[2], offset));
-        if (!caster.sphereMayShadow(s, dx, dy, dz, 0, offset)) {
+        if (!caster.sphereMayShadow(s, dx, dy, dz, 0, offset, skipCode)) {
             assertEquals(everySphere, caster.anyPlaneBefore(s, ox, oy, oz, dx, dy, dz, distance, skipCode),
                     () -> String.format("planes only: point (%g, %g, %g) offset %g", p[0], p[1], p[2], offset));
         }
