@@ -13,8 +13,13 @@ package glint.render;
  */
 final class LightCones {
 
-    /** Scenes of at most this many spheres get cones; more get a {@link LightBuffer}. */
-    static final int MOST_SPHERES = 8;
+    /**
+     * Scenes of at most this many spheres get cones; more get a {@link LightBuffer}. Millions of
+     * instructions a frame of the render thread (800x600, 1 sample, depth 5), with cones and with
+     * the buffer: default scene (3 spheres) 321-322 and 324-332, 5 glass spheres 279-284 and 265-266,
+     * 5 matte 181-182 and 175-179 (docs/benchmarks.md).
+     */
+    static final int MOST_SPHERES = 4;
 
     /**
      * Taken off each cone's cosine, so that rounding in the cosine and in the dot product can
