@@ -126,11 +126,8 @@ class LightBufferTest {
             // directions on the sphere's silhouette cone, turned in or out by up to twice the margin
             double halfAngle = Math.asin(radius / distance);
             for (int i = 0; i < 400; i++) {
-                double[] side = perpendicular(towards, RandomScenes.unitVector(random));
                 double angle = halfAngle + ConeCells.ANGLE_MARGIN * random.nextDouble(-2, 2);
-                double[] dir = {Math.cos(angle) * towards[0] + Math.sin(angle) * side[0],
-                        Math.cos(angle) * towards[1] + Math.sin(angle) * side[1],
-                        Math.cos(angle) * towards[2] + Math.sin(angle) * side[2]};
+                double[] dir = RandomScenes.atAngle(towards, angle, random);
                 double reach = random.nextDouble(10, 1e4);
                 double[] p = {dir[0] * reach, dir[1] * reach, dir[2] * reach};
                 double offset = maxOffset * random.nextDouble(0.5, 1.0);
@@ -142,14 +139,6 @@ class LightBufferTest {
             }
         }
         assertTrue(blocked > 1000 && open > 1000, blocked + " blocked, " + open + " open");
-    }
-
-    /** The unit component of v perpendicular to unit vector axis. */
-    private static double[] perpendicular(double[] axis, double[] v) {
-        double along = axis[0] * v[0] + axis[1] * v[1] + axis[2] * v[2];
-        double[] p = {v[0] - along * axis[0], v[1] - along * axis[1], v[2] - along * axis[2]};
-        double length = Math.sqrt(p[0] * p[0] + p[1] * p[1] + p[2] * p[2]);
-        return new double[] {p[0] / length, p[1] / length, p[2] / length};
     }
 
     @Test
@@ -189,12 +178,9 @@ class LightBufferTest {
             LightBuffer buffer = LightBuffer.build(sphere, 1, 0, 0, 0, Long.MAX_VALUE);
             double halfAngle = Math.asin(radius / distance);
             for (int i = 0; i < 100; i++) {
-                double[] side = perpendicular(towards, RandomScenes.unitVector(random));
                 double angle = i % 2 == 0 ? halfAngle * random.nextDouble()
                         : halfAngle + ConeCells.ANGLE_MARGIN * random.nextDouble(0, 0.999);
-                double[] d = {Math.cos(angle) * towards[0] + Math.sin(angle) * side[0],
-                        Math.cos(angle) * towards[1] + Math.sin(angle) * side[1],
-                        Math.cos(angle) * towards[2] + Math.sin(angle) * side[2]};
+                double[] d = RandomScenes.atAngle(towards, angle, random);
                 int cell = buffer.cell(d[0], d[1], d[2]);
                 assertEquals(1, buffer.cellStart[cell + 1] - buffer.cellStart[cell],
                         "trial " + trial + ", direction " + i);

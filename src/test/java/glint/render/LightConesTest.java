@@ -14,16 +14,6 @@ import org.junit.jupiter.api.Test;
  */
 class LightConesTest {
 
-    /** Direction at angle {@code angle} from unit axis {@code towards}, turned towards a random side. */
-    private static double[] turned(double[] towards, double angle, SplittableRandom random) {
-        double[] v = RandomScenes.unitVector(random);
-        double along = towards[0] * v[0] + towards[1] * v[1] + towards[2] * v[2];
-        double[] side = {v[0] - along * towards[0], v[1] - along * towards[1], v[2] - along * towards[2]};
-        double length = Math.sqrt(side[0] * side[0] + side[1] * side[1] + side[2] * side[2]);
-        double c = Math.cos(angle), s = Math.sin(angle) / length;
-        return new double[] {c * towards[0] + s * side[0], c * towards[1] + s * side[1], c * towards[2] + s * side[2]};
-    }
-
     @Test
     void aConeHoldsTheWidenedHalfAngleAndLittleMore() {
         SplittableRandom random = new SplittableRandom(21);
@@ -39,11 +29,11 @@ class LightConesTest {
             for (int i = 0; i < 100; i++) {
                 double inside = i % 2 == 0 ? halfAngle * random.nextDouble()
                         : halfAngle + ConeCells.ANGLE_MARGIN * random.nextDouble(0, 0.999);
-                double[] d = turned(towards, inside, random);
+                double[] d = RandomScenes.atAngle(towards, inside, random);
                 // holds() takes the shadow ray's direction, towards the light
                 assertTrue(cones.holds(0, -d[0], -d[1], -d[2]), "trial " + trial + ", direction " + i);
                 double outside = Math.min(Math.PI, halfAngle + 3 * ConeCells.ANGLE_MARGIN + random.nextDouble(0, 1));
-                double[] e = turned(towards, outside, random);
+                double[] e = RandomScenes.atAngle(towards, outside, random);
                 assertFalse(cones.holds(0, -e[0], -e[1], -e[2]), "trial " + trial + ", outside " + i);
             }
         }

@@ -21,6 +21,16 @@ final class RandomScenes {
         }
     }
 
+    /** A unit direction at {@code angle} radians from unit vector {@code axis}, turned towards a random side. */
+    static double[] atAngle(double[] axis, double angle, SplittableRandom random) {
+        double[] v = unitVector(random);
+        double along = axis[0] * v[0] + axis[1] * v[1] + axis[2] * v[2];
+        double[] side = {v[0] - along * axis[0], v[1] - along * axis[1], v[2] - along * axis[2]};
+        double length = Math.sqrt(side[0] * side[0] + side[1] * side[1] + side[2] * side[2]);
+        double c = Math.cos(angle), s = Math.sin(angle) / length;
+        return new double[] {c * axis[0] + s * side[0], c * axis[1] + s * side[1], c * axis[2] + s * side[2]};
+    }
+
     /** A scene of 1 to 6 spheres (few enough to be searched one by one), a floor, 1 to 3 lights and a random camera. */
     static String upToSixSpheres(Random random) {
         StringBuilder yaml = new StringBuilder();
