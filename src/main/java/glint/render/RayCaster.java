@@ -357,7 +357,7 @@ final class RayCaster {
      * the sphere tests that follow.
      */
     boolean anyPlaneBefore(RenderScene s, double ox, double oy, double oz, double dx, double dy, double dz,
-                                   double tMax, int skipCode) {
+                           double tMax, int skipCode) {
         skip = skipped(skipCode);
         rays++;
         double[] planes = s.planes;

@@ -219,9 +219,9 @@ public final class RenderScene {
 
     /**
      * In a scene of more spheres than {@link LightCones#MOST_SPHERES}, a {@link LightBuffer} for
-     * each of the first point lights, while they fit the budget: a scene
-     * of many lights, or of many spheres crowding around one, must not cost the memory or the
-     * compile time of a buffer for each.
+     * each of the first point lights, while they fit the budget: a scene of many lights, or of many
+     * spheres crowding around one, must not cost the memory or the compile time of a buffer for
+     * each.
      */
     private LightBuffer[] buildLightBuffers() {
         LightBuffer[] buffers = new LightBuffer[lightCount];
