@@ -87,15 +87,13 @@ final class TracerWorker {
         boolean inStages = stages && !phong;
         for (int y = y0; y < y1; y++) {
             eye.aimRow(rows.screenY(y + 1), rows.screenY(y));
-            if (inStages && !inPackets) {
-                traceInStages(y, rowRays);
+            rows.aim(y);
+            if (inPackets) {
+                traceInPackets(rowRays);
+            } else if (inStages) {
+                traceInStages(rowRays);
             } else {
-                rows.aim(y);
-                if (inPackets) {
-                    traceInPackets(rowRays);
-                } else {
-                    traceOneByOne(0, rowRays);
-                }
+                traceOneByOne(0, rowRays);
             }
             rows.writeRow(frame, y);
         }
@@ -117,28 +115,24 @@ final class TracerWorker {
     }
 
     /**
-     * Traces the camera rays [0, rays) of the tile's row y in stages, into the row's radiance: the rays aimed,
-     * every ray's nearest hit, then every hit's surface and shading, with the matte hits set aside
-     * and then lit together. Each pixel gets the same arithmetic in the same order as {@link #trace},
-     * so the image is the same bit for bit.
+     * Traces the row's camera rays [0, rays) in stages, into the row's radiance: every ray's nearest
+     * hit, then every hit's surface and shading, with the matte hits set aside and then lit
+     * together. Each pixel gets the same arithmetic in the same order as {@link #trace}, so the
+     * image is the same bit for bit.
      */
-    private void traceInStages(int y, int rays) {
+    private void traceInStages(int rays) {
         hits.fit(rays);
-        findHitsFromEye(y, rays);
+        findHitsFromEye(rays);
         shadeRowHits(rays);
         lightMatteHits();
     }
 
     /**
-     * Stage 1: the camera rays of the tile's row y aimed, then the nearest hit of each: sphere by sphere where no
-     * pixel of the row can show more spheres than a camera ray tests one by one, otherwise pixel by
-     * pixel, swept left to right as in {@link #traceOneByOne}. The aiming is here rather than in
-     * {@link #renderTile} because the JIT compiles this method on its own, and there the loop that
-     * aims the pixel centres becomes SIMD instructions (see docs/benchmarks.md); inlined into the
-     * much larger renderTile, it stays scalar.
+     * Stage 1: the nearest hit of each camera ray of the row: sphere by sphere where no pixel of the
+     * row can show more spheres than a camera ray tests one by one, otherwise pixel by pixel, swept
+     * left to right as in {@link #traceOneByOne}.
      */
-    private void findHitsFromEye(int y, int rays) {
-        rows.aim(y);
+    private void findHitsFromEye(int rays) {
         EyeRays eye = caster.eye;
         if (scene.bvh == null || eye.rowCount <= RayCaster.MOST_SPHERES_SWEPT) {
             hits.findFromEyeSphereBySphere(scene, eye, rows, rowX0, raysPerPixel, rays);
