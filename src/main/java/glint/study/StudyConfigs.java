@@ -38,18 +38,23 @@ public final class StudyConfigs {
         return new ArrayList<>(all);
     }
 
-    /** A smaller set for a short run: no 64-sample point. */
+    /**
+     * A smaller set for a short run, each knob swept from the shipped default as in {@link #full}:
+     * no 64-sample point.
+     */
     public static List<StudyConfig> quick() {
         StudyConfig shipped = StudyConfig.shipped();
+        int depth = shipped.depth(), samples = shipped.samples();
+        double weight = shipped.minWeight();
         List<StudyConfig> list = new ArrayList<>();
         list.add(shipped);
-        list.add(StudyConfig.ct(1, 4, 1e-3));
-        list.add(StudyConfig.ct(3, 4, 1e-3));
-        list.add(StudyConfig.ct(8, 4, 1e-3));
-        list.add(StudyConfig.ct(5, 1, 1e-3));
-        list.add(StudyConfig.ct(5, 16, 1e-3));
-        list.add(StudyConfig.ct(5, 4, 0));
-        list.add(StudyConfig.ct(5, 4, 1e-3));
+        list.add(StudyConfig.ct(1, samples, weight));
+        list.add(StudyConfig.ct(3, samples, weight));
+        list.add(StudyConfig.ct(8, samples, weight));
+        list.add(StudyConfig.ct(depth, 1, weight));
+        list.add(StudyConfig.ct(depth, 16, weight));
+        list.add(StudyConfig.ct(depth, samples, 0));
+        list.add(StudyConfig.ct(depth, samples, 1e-3));
         list.add(shipped.withFresnel(GlassFresnel.SCHLICK));
         list.add(shipped.withShading(Shading.PHONG));
         return list;

@@ -2,6 +2,7 @@ package glint.study;
 
 import static org.junit.jupiter.api.Assertions.assertEquals;
 import static org.junit.jupiter.api.Assertions.assertThrows;
+import static org.junit.jupiter.api.Assertions.assertTrue;
 
 import glint.render.FrameBuffer;
 import java.util.List;
@@ -55,6 +56,16 @@ class MetricsTest {
         assertEquals("shipped", shipped.knobLabel());
         assertEquals(StudyConfigs.full().size(), new java.util.HashSet<>(StudyConfigs.full()).size());
         assertEquals(21, StudyConfigs.full().size());
+    }
+
+    /** The short run's configurations are points of the full one: each knob swept from the shipped default. */
+    @Test
+    void theQuickSetIsPartOfTheFullOne() {
+        List<StudyConfig> full = StudyConfigs.full();
+        for (StudyConfig config : StudyConfigs.quick()) {
+            assertTrue(full.contains(config), config.label());
+            assertTrue(config.knob() != StudyConfig.Knob.SEVERAL, config.label());
+        }
     }
 
     @Test
