@@ -70,29 +70,51 @@ final class RowHits {
         suspects = new int[rays];
     }
 
+    // stage 1 sphere by sphere: the camera rays [sphereFirst[j], sphereEnd[j]) of the row are
+    // tested against the row's j-th sphere ({@link EyeRays#rowSpheres})
+    private int[] sphereFirst = new int[0], sphereEnd = new int[0];
+
     /**
-     * Stage 1 sphere by sphere: the nearest hit of camera rays [0, rays) of the row whose first
-     * pixel is image x {@code rowX0}, {@code raysPerPixel} rays a pixel. Each sphere the row can show
-     * ({@code eye}, aimed at the row) is tested against the rays of the pixels its screen range
-     * spans (and a pixel more on each side), in the order the sweep lists them, then every ray
-     * against the planes. Each ray meets the tests {@link RayCaster#nearestFromEye} gives it, in the
-     * same order, and at most a few more of spheres whose range it lies outside of, which it cannot
-     * meet: it finds the same hit. A loop over one sphere's rays does the same arithmetic for each,
-     * with no sweep and no call per ray.
+     * Plans stage 1 sphere by sphere for camera rays [0, rays) of the row whose first pixel is image
+     * x {@code rowX0}, {@code raysPerPixel} rays a pixel: each sphere the row can show ({@code eye},
+     * aimed at the row) is to be tested against the rays of the pixels its screen range spans, and
+     * a pixel more on each side. Returns the number of sphere tests that makes.
      */
-    void findFromEyeSphereBySphere(RenderScene s, EyeRays eye, CameraRows rows, int rowX0, int raysPerPixel,
-                                   int rays) {
+    long planSphereBySphere(EyeRays eye, CameraRows rows, int rowX0, int raysPerPixel, int rays) {
+        if (sphereFirst.length < eye.rowCount) {
+            sphereFirst = new int[eye.rowSpheres.length];
+            sphereEnd = new int[eye.rowSpheres.length];
+        }
+        int pixels = rays / raysPerPixel;
+        long tests = 0;
+        for (int j = 0; j < eye.rowCount; j++) {
+            int i = eye.rowSpheres[j];
+            sphereFirst[j] = raysPerPixel * pixelAtOrBefore(rows, eye.leftEdge(i), rowX0, pixels);
+            sphereEnd[j] = raysPerPixel * (pixelAtOrAfter(rows, eye.rightEdge(i), rowX0, pixels) + 1);
+            tests += sphereEnd[j] - sphereFirst[j];
+        }
+        return tests;
+    }
+
+    /**
+     * Stage 1 sphere by sphere, as {@link #planSphereBySphere} planned it: the nearest hit of camera
+     * rays [0, rays) of the row. Each sphere is tested against its rays, in the order the sweep
+     * lists the spheres, then every ray against the planes. Each ray meets the tests {@link
+     * RayCaster#nearestFromEye} gives it, in the same order, and at most a few more of spheres
+     * whose range it lies outside of, which it cannot meet: it finds the same hit. (Where a pixel
+     * can show more spheres than a ray tests one by one, {@code nearestFromEye} searches the
+     * hierarchy instead: the same tests, in another order, so the same hit unless two surfaces
+     * meet the ray at the very same distance.) A loop over one sphere's rays does the same
+     * arithmetic for each, with no sweep and no call per ray.
+     */
+    void findFromEyeSphereBySphere(RenderScene s, EyeRays eye, CameraRows rows, int rays) {
         for (int ray = 0; ray < rays; ray++) {
             t[ray] = Intersect.MISS;
             sphere[ray] = -1;
             plane[ray] = -1;
         }
-        int pixels = rays / raysPerPixel;
         for (int j = 0; j < eye.rowCount; j++) {
-            int i = eye.rowSpheres[j];
-            int first = raysPerPixel * pixelAtOrBefore(rows, eye.leftEdge(i), rowX0, pixels);
-            int end = raysPerPixel * (pixelAtOrAfter(rows, eye.rightEdge(i), rowX0, pixels) + 1);
-            keepNearerSphereHits(s, eye, rows, i, first, end);
+            keepNearerSphereHits(s, eye, rows, eye.rowSpheres[j], sphereFirst[j], sphereEnd[j]);
         }
         for (int p = 0; p < s.planeCount; p++) {
             keepNearerPlaneHits(s, eye, rows, p, rays);

@@ -128,14 +128,16 @@ final class TracerWorker {
     }
 
     /**
-     * Stage 1: the nearest hit of each camera ray of the row: sphere by sphere where no pixel of the
-     * row can show more spheres than a camera ray tests one by one, otherwise pixel by pixel, swept
-     * left to right as in {@link #traceOneByOne}.
+     * Stage 1: the nearest hit of each camera ray of the row: sphere by sphere where that takes no
+     * more sphere tests a ray, on average over the row, than a camera ray makes one by one before
+     * the hierarchy pays, otherwise pixel by pixel, swept left to right as in
+     * {@link #traceOneByOne}.
      */
     private void findHitsFromEye(int rays) {
         EyeRays eye = caster.eye;
-        if (scene.bvh == null || eye.rowCount <= RayCaster.MOST_SPHERES_SWEPT) {
-            hits.findFromEyeSphereBySphere(scene, eye, rows, rowX0, raysPerPixel, rays);
+        long tests = hits.planSphereBySphere(eye, rows, rowX0, raysPerPixel, rays);
+        if (scene.bvh == null || tests <= (long) RayCaster.MOST_SPHERES_SWEPT * rays) {
+            hits.findFromEyeSphereBySphere(scene, eye, rows, rays);
             caster.rays += rays;
             return;
         }
