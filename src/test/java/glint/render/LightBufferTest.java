@@ -171,16 +171,10 @@ class LightBufferTest {
     void everyDirectionWithinTheWidenedConeIsListed() {
         SplittableRandom random = new SplittableRandom(12);
         for (int trial = 0; trial < 3000; trial++) {
-            double[] towards = RandomScenes.unitVector(random);
-            double distance = random.nextDouble(1, 50);
-            double radius = distance * random.nextDouble(1e-3, 0.9);
-            double[] sphere = {towards[0] * distance, towards[1] * distance, towards[2] * distance, radius};
-            LightBuffer buffer = LightBuffer.build(sphere, 1, 0, 0, 0, Long.MAX_VALUE);
-            double halfAngle = Math.asin(radius / distance);
+            RandomScenes.SeenSphere seen = RandomScenes.SeenSphere.random(random);
+            LightBuffer buffer = LightBuffer.build(seen.from(0, 0, 0), 1, 0, 0, 0, Long.MAX_VALUE);
             for (int i = 0; i < 100; i++) {
-                double angle = i % 2 == 0 ? halfAngle * random.nextDouble()
-                        : halfAngle + ConeCells.ANGLE_MARGIN * random.nextDouble(0, 0.999);
-                double[] d = RandomScenes.atAngle(towards, angle, random);
+                double[] d = RandomScenes.atAngle(seen.towards(), seen.angleWithinMargin(i, random), random);
                 int cell = buffer.cell(d[0], d[1], d[2]);
                 assertEquals(1, buffer.cellStart[cell + 1] - buffer.cellStart[cell],
                         "trial " + trial + ", direction " + i);

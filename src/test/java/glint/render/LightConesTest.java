@@ -18,21 +18,17 @@ class LightConesTest {
     void aConeHoldsTheWidenedHalfAngleAndLittleMore() {
         SplittableRandom random = new SplittableRandom(21);
         for (int trial = 0; trial < 3000; trial++) {
-            double[] towards = RandomScenes.unitVector(random);
-            double distance = random.nextDouble(1, 50);
-            double radius = distance * random.nextDouble(1e-3, 0.9);
+            RandomScenes.SeenSphere seen = RandomScenes.SeenSphere.random(random);
             double[] light = {random.nextDouble(-5, 5), random.nextDouble(-5, 5), random.nextDouble(-5, 5)};
-            double[] sphere = {light[0] + towards[0] * distance, light[1] + towards[1] * distance,
-                    light[2] + towards[2] * distance, radius};
-            LightCones cones = LightCones.build(sphere, 1, light[0], light[1], light[2]);
-            double halfAngle = Math.asin(radius / distance);
+            LightCones cones = LightCones.build(seen.from(light[0], light[1], light[2]), 1, light[0], light[1],
+                    light[2]);
+            double[] towards = seen.towards();
             for (int i = 0; i < 100; i++) {
-                double inside = i % 2 == 0 ? halfAngle * random.nextDouble()
-                        : halfAngle + ConeCells.ANGLE_MARGIN * random.nextDouble(0, 0.999);
-                double[] d = RandomScenes.atAngle(towards, inside, random);
+                double[] d = RandomScenes.atAngle(towards, seen.angleWithinMargin(i, random), random);
                 // holds() takes the shadow ray's direction, towards the light
                 assertTrue(cones.holds(0, -d[0], -d[1], -d[2]), "trial " + trial + ", direction " + i);
-                double outside = Math.min(Math.PI, halfAngle + 3 * ConeCells.ANGLE_MARGIN + random.nextDouble(0, 1));
+                double outside = Math.min(Math.PI,
+                        seen.halfAngle() + 3 * ConeCells.ANGLE_MARGIN + random.nextDouble(0, 1));
                 double[] e = RandomScenes.atAngle(towards, outside, random);
                 assertFalse(cones.holds(0, -e[0], -e[1], -e[2]), "trial " + trial + ", outside " + i);
             }

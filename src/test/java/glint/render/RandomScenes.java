@@ -31,6 +31,39 @@ final class RandomScenes {
         return new double[] {c * axis[0] + s * side[0], c * axis[1] + s * side[1], c * axis[2] + s * side[2]};
     }
 
+    /**
+     * A random sphere as a point light sees it: the unit direction towards its centre, the
+     * distance to the centre (1 to 50) and a radius of 0.1 % to 90 % of it.
+     */
+    record SeenSphere(double[] towards, double distance, double radius) {
+
+        static SeenSphere random(SplittableRandom random) {
+            double[] towards = unitVector(random);
+            double distance = random.nextDouble(1, 50);
+            return new SeenSphere(towards, distance, distance * random.nextDouble(1e-3, 0.9));
+        }
+
+        /** The sphere's centre and radius (cx, cy, cz, r) for a light at (x, y, z). */
+        double[] from(double x, double y, double z) {
+            return new double[] {x + towards[0] * distance, y + towards[1] * distance, z + towards[2] * distance,
+                    radius};
+        }
+
+        /** The half-angle of the cone of directions the sphere fills. */
+        double halfAngle() {
+            return Math.asin(radius / distance);
+        }
+
+        /**
+         * An angle from the cone's axis that its widened cone holds: for even {@code i} within the
+         * half-angle, for odd ones within the margin ({@link ConeCells#ANGLE_MARGIN}) beyond it.
+         */
+        double angleWithinMargin(int i, SplittableRandom random) {
+            return i % 2 == 0 ? halfAngle() * random.nextDouble()
+                    : halfAngle() + ConeCells.ANGLE_MARGIN * random.nextDouble(0, 0.999);
+        }
+    }
+
     /** A scene of 1 to 6 spheres (few enough to be searched one by one), a floor, 1 to 3 lights and a random camera. */
     static String upToSixSpheres(Random random) {
         StringBuilder yaml = new StringBuilder();
