@@ -3,8 +3,8 @@ package glint.render;
 /**
  * What the camera rays of one tile row met, per worker, kept between the stages a row is traced in:
  * first every ray's nearest hit (found here, sphere by sphere, where it can be), then every hit's
- * surface and shading, and, in a scene of several lights, the matte hits set aside in slots of
- * their own, then lit together light by light. Working a stage across the row keeps each loop short and its
+ * surface and shading, with the matte hits set aside in slots of their own, then those lit
+ * together light by light. Working a stage across the row keeps each loop short and its
  * iterations independent, so the square roots and divisions of neighbouring rays overlap instead
  * of waiting on one another. Stage 1's slot i belongs to camera ray i of the row ({@link
  * CameraRows}); the matte slots are indexed by the matte hit's place in the row, and {@link
@@ -25,11 +25,8 @@ final class RowHits {
     double[] nx = new double[0], ny = new double[0], nz = new double[0];
     double[] offset = new double[0];
     int[] skipNear = new int[0], material = new int[0];
-    /**
-     * Stage 2's metal and glass hits, and in a scene of one light its matte hits a sphere may
-     * shadow, by camera ray: each shaded whole after the loop over the row's hits.
-     */
-    int[] tracedRays = new int[0], shadowedRays = new int[0];
+    /** Stage 2's metal and glass hits, by camera ray, shaded after the row's matte hits are set aside. */
+    int[] tracedRays = new int[0];
 
     // stage 3, per matte hit: the current light's sample (unit direction, distance, n.l and the
     // irradiance it brings, n.l included) and the radiance summed over the lights so far
@@ -59,7 +56,6 @@ final class RowHits {
         material = new int[rays];
         matteRays = new int[rays];
         tracedRays = new int[rays];
-        shadowedRays = new int[rays];
         toLightX = new double[rays];
         toLightY = new double[rays];
         toLightZ = new double[rays];

@@ -5,10 +5,10 @@ import glint.config.Shading;
 /**
  * One render thread's tracer and scratch state: traces the pixels of the tiles it is handed. A
  * tile row's camera rays go in stages ({@link #traceInStages}: all aimed, all hits, each hit's
- * surface and shading, then, in scenes of several lights, the matte hits lit together); reflected
- * and refracted rays, and every ray of the phong model, go by recursion ({@link #trace}).
- * Everything it writes between calls lives in its own fields, so the per-pixel path allocates
- * nothing. All vectors are world space; directions are unit length.
+ * surface and shading, then the matte hits lit together); reflected and refracted rays, and every
+ * ray of the phong model, go by recursion ({@link #trace}). Everything it writes between calls
+ * lives in its own fields, so the per-pixel path allocates nothing. All vectors are world space;
+ * directions are unit length.
  */
 final class TracerWorker {
 
@@ -116,9 +116,9 @@ final class TracerWorker {
 
     /**
      * Traces the row's camera rays [0, rays) in stages, into the row's radiance: every ray's nearest
-     * hit, then every hit's surface and shading, the matte hits lit on the spot where the scene has
-     * one light, set aside and then lit together where it has more. Each pixel gets the same
-     * arithmetic in the same order as {@link #trace}, so the image is the same bit for bit.
+     * hit, then every hit's surface and shading, with the matte hits set aside and then lit
+     * together. Each pixel gets the same arithmetic in the same order as {@link #trace}, so the
+     * image is the same bit for bit.
      */
     private void traceInStages(int rays) {
         hits.fit(rays);
@@ -155,117 +155,54 @@ final class TracerWorker {
     }
 
     /**
-     * Stage 2: the background for misses; the matte hits' surfaces; then the metal and glass hits,
-     * their surfaces found and shaded one by one (their reflected and refracted rays traced from
-     * there). In a scene of one light, a matte hit no sphere may shadow
-     * ({@link RayCaster#sphereMayShadow}) is lit there and then, as {@link #shadeMatte} lights it,
-     * its shadow ray tested against the planes alone; one a sphere may shadow is shaded whole after
-     * the loop. With more lights, each matte hit is kept in the row's matte slots for stage 3.
-     * Metal, glass and the matte hits a sphere may shadow wait for loops of their own: a call the
-     * JIT does not inline, left in the first loop, would make it keep its values on the stack for
-     * every hit rather than in registers (docs/benchmarks.md). For the same reason the lighting is
-     * written out in the loop: as a method of its own, the JIT may compile it first, and then not
-     * inline it.
+     * Stage 2: the background for misses, and the surface at each matte hit, kept in the row's
+     * matte slots for stage 3; then the metal and glass hits, their surfaces found and shaded one
+     * by one (their reflected and refracted rays traced from there). The second kind waits for a
+     * loop of its own: a call the JIT does not inline, left in the first loop, would make it keep
+     * its values on the stack for every hit rather than in registers (docs/benchmarks.md).
      */
     private void shadeRowHits(int rays) {
         RowHits h = hits;
         CameraRows r = rows;
         RenderScene s = scene;
-        RayCaster shadows = caster;
         CameraBasis camera = s.camera;
-        boolean oneLight = s.lightCount == 1;
-        int matte = 0, shadowed = 0, traced = 0;
+        int matte = 0, traced = 0;
         for (int ray = 0; ray < rays; ray++) {
             int sphere = h.sphere[ray], plane = h.plane[ray];
             if (sphere < 0 && plane < 0) {
                 r.radianceR[ray] = s.backgroundR;
                 r.radianceG[ray] = s.backgroundG;
                 r.radianceB[ray] = s.backgroundB;
-                continue;
-            }
-            if (s.materialType[sphere >= 0 ? s.sphereMaterial[sphere] : s.planeMaterial[plane]] != RenderScene.MATTE) {
+            } else if (s.materialType[sphere >= 0 ? s.sphereMaterial[sphere] : s.planeMaterial[plane]]
+                    != RenderScene.MATTE) {
                 h.tracedRays[traced++] = ray;
-                continue;
+            } else {
+                describeHit(h.t[ray], sphere, plane, camera.eyeX, camera.eyeY, camera.eyeZ, r.dirX[ray], r.dirY[ray],
+                        r.dirZ[ray]);
+                keepMatteHit(matte++, ray, RayCaster.skipNear(sphere, plane, hitEntering));
             }
-            describeHit(h.t[ray], sphere, plane, camera.eyeX, camera.eyeY, camera.eyeZ, r.dirX[ray], r.dirY[ray],
-                    r.dirZ[ray]);
-            int skipNear = RayCaster.skipNear(sphere, plane, hitEntering);
-            if (!oneLight) {
-                keepMatteHit(matte++, ray, skipNear);
-                continue;
-            }
-            double px = hitX, py = hitY, pz = hitZ, nx = normalX, ny = normalY, nz = normalZ, offset = hitOffset;
-            double cosLight = lightAt(0, px, py, pz, nx, ny, nz);
-            double sumR = 0, sumG = 0, sumB = 0;
-            if (cosLight > 0) {
-                if (shadows.sphereMayShadow(s, toLightX, toLightY, toLightZ, 0, offset, skipNear)) {
-                    h.shadowedRays[shadowed++] = ray;
-                    continue;
-                }
-                double ox = px + offset * nx, oy = py + offset * ny, oz = pz + offset * nz;
-                if (!shadows.anyPlaneBefore(s, ox, oy, oz, toLightX, toLightY, toLightZ, lightDistance, skipNear)) {
-                    sumR += irradianceR * cosLight;
-                    sumG += irradianceG * cosLight;
-                    sumB += irradianceB * cosLight;
-                }
-            }
-            storeLambert(ray, hitMaterial, sumR, sumG, sumB);
         }
         h.matteCount = matte;
-        for (int j = 0; j < shadowed; j++) {
-            shadeMatteHitWhole(h.shadowedRays[j]);
-        }
         for (int j = 0; j < traced; j++) {
             shadeTracedHit(h.tracedRays[j]);
         }
     }
 
-    /** Stores as camera ray {@code ray}'s radiance that of matte material m under irradiance (sumR, sumG, sumB), n.l applied. */
-    private void storeLambert(int ray, int m, double sumR, double sumG, double sumB) {
-        RenderScene s = scene;
-        CameraRows r = rows;
-        int c = 3 * m;
-        r.radianceR[ray] = lambert(s.materialColor[c], sumR, s.ambientR);
-        r.radianceG[ray] = lambert(s.materialColor[c + 1], sumG, s.ambientG);
-        r.radianceB[ray] = lambert(s.materialColor[c + 2], sumB, s.ambientB);
-    }
-
-    /** The shading of camera ray {@code ray}'s matte hit by {@link #shadeMatte}, into the row's radiance. */
-    private void shadeMatteHitWhole(int ray) {
-        describeCameraHit(ray);
-        shadeMatte(hitMaterial, hitSkipNear);
-        storeRadiance(ray);
-    }
-
     /** The shading of camera ray {@code ray}'s metal or glass hit, into the row's radiance. */
     private void shadeTracedHit(int ray) {
-        describeCameraHit(ray);
-        int m = hitMaterial;
-        CameraRows r = rows;
-        double dx = r.dirX[ray], dy = r.dirY[ray], dz = r.dirZ[ray];
-        if (scene.materialType[m] == RenderScene.METAL) {
-            shadeMetal(m, dx, dy, dz, recursionMax, 1, hitSkipNear);
-        } else {
-            int sphere = hits.sphere[ray], plane = hits.plane[ray];
-            shadeGlass(m, dx, dy, dz, recursionMax, 1, hitSkipNear, RayCaster.skipFar(sphere, plane, hitEntering));
-        }
-        storeRadiance(ray);
-    }
-
-    /** {@link #describeHit} for the hit of camera ray {@code ray}; sets {@link #hitSkipNear} too. */
-    private void describeCameraHit(int ray) {
         RowHits h = hits;
         CameraRows r = rows;
         CameraBasis camera = scene.camera;
         int sphere = h.sphere[ray], plane = h.plane[ray];
-        describeHit(h.t[ray], sphere, plane, camera.eyeX, camera.eyeY, camera.eyeZ, r.dirX[ray], r.dirY[ray],
-                r.dirZ[ray]);
-        hitSkipNear = RayCaster.skipNear(sphere, plane, hitEntering);
-    }
-
-    /** Stores the radiance trace() or a shade method returned as camera ray {@code ray}'s. */
-    private void storeRadiance(int ray) {
-        CameraRows r = rows;
+        double dx = r.dirX[ray], dy = r.dirY[ray], dz = r.dirZ[ray];
+        describeHit(h.t[ray], sphere, plane, camera.eyeX, camera.eyeY, camera.eyeZ, dx, dy, dz);
+        int m = hitMaterial;
+        int skipNear = RayCaster.skipNear(sphere, plane, hitEntering);
+        if (scene.materialType[m] == RenderScene.METAL) {
+            shadeMetal(m, dx, dy, dz, recursionMax, 1, skipNear);
+        } else {
+            shadeGlass(m, dx, dy, dz, recursionMax, 1, skipNear, RayCaster.skipFar(sphere, plane, hitEntering));
+        }
         r.radianceR[ray] = outR;
         r.radianceG[ray] = outG;
         r.radianceB[ray] = outB;
@@ -287,9 +224,8 @@ final class TracerWorker {
     }
 
     /**
-     * Stage 3, in a scene of several lights: the matte hits of the row, lit as {@link #shadeMatte}
-     * lights one: light by light, first every hit's light sample, then every hit's shadow ray, each
-     * adding in light order. (Stage 2 has already lit them where the scene has one light.)
+     * Stage 3: the matte hits of the row, lit as {@link #shadeMatte} lights one: light by light,
+     * first every hit's light sample, then every hit's shadow ray, each adding in light order.
      */
     private void lightMatteHits() {
         RowHits h = hits;
@@ -304,8 +240,13 @@ final class TracerWorker {
             sampleLight(light, count);
             addUnshadowed(light, count);
         }
+        CameraRows r = rows;
         for (int j = 0; j < count; j++) {
-            storeLambert(h.matteRays[j], h.material[j], h.sumR[j], h.sumG[j], h.sumB[j]);
+            int ray = h.matteRays[j];
+            int c = 3 * h.material[j];
+            r.radianceR[ray] = lambert(s.materialColor[c], h.sumR[j], s.ambientR);
+            r.radianceG[ray] = lambert(s.materialColor[c + 1], h.sumG[j], s.ambientG);
+            r.radianceB[ray] = lambert(s.materialColor[c + 2], h.sumB[j], s.ambientB);
         }
     }
 
@@ -389,7 +330,9 @@ final class TracerWorker {
         CameraBasis camera = scene.camera;
         for (int ray = first; ray < end; ray++) {
             trace(camera.eyeX, camera.eyeY, camera.eyeZ, r.dirX[ray], r.dirY[ray], r.dirZ[ray], recursionMax, 1, EYE);
-            storeRadiance(ray);
+            r.radianceR[ray] = outR;
+            r.radianceG[ray] = outG;
+            r.radianceB[ray] = outB;
         }
     }
 
@@ -430,8 +373,6 @@ final class TracerWorker {
     private double hitX, hitY, hitZ, normalX, normalY, normalZ, hitCosIncident, hitOffset;
     private boolean hitEntering;
     private int hitMaterial;
-    /** The skip code of rays leaving a camera ray's hit on its side, set by {@link #describeCameraHit}. */
-    private int hitSkipNear;
 
     /**
      * Works out the surface a ray from o along unit d meets at distance t (sphere or plane, the
