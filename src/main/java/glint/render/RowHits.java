@@ -34,6 +34,8 @@ final class RowHits {
     double[] lightDistance = new double[0], cosLight = new double[0];
     double[] lightR = new double[0], lightG = new double[0], lightB = new double[0];
     double[] sumR = new double[0], sumG = new double[0], sumB = new double[0];
+    /** Per matte hit, 1 / its distance to the current point light. */
+    double[] inverseDistance = new double[0];
     /** The matte hits a sphere may shadow from the current light, set aside for the whole test. */
     int[] suspects = new int[0];
 
@@ -67,6 +69,7 @@ final class RowHits {
         sumR = new double[rays];
         sumG = new double[rays];
         sumB = new double[rays];
+        inverseDistance = new double[rays];
         suspects = new int[rays];
     }
 
@@ -174,29 +177,39 @@ final class RowHits {
      * Stage 3, the sample of a point light at (x, y, z) of power (powerR, powerG, powerB) at matte
      * hits [0, count): the arithmetic of {@code TracerWorker.lightAt}, written for the whole row so
      * that the light's terms stay in registers (a store to one double array could, for all the JIT
-     * knows, change the light's). A hit at the light itself gets n.l = 0, which the shadow stage
-     * passes over.
+     * knows, change the light's). It goes in five loops, each without branches and small enough
+     * for C2 to unroll, which it does only for a loop under {@code -XX:LoopUnrollLimit}, and so to
+     * turn into SIMD instructions, four hits at a time; in one loop it stays scalar
+     * (docs/benchmarks.md, {@code DividerBenchmark}). A hit at the light itself gets n.l = NaN
+     * (0 times infinity), which the shadow stage passes over as it passes over n.l <= 0.
      */
     void samplePointLight(int count, double x, double y, double z, double powerR, double powerG, double powerB) {
+        double[] px = this.px, py = this.py, pz = this.pz, inv = this.inverseDistance;
         for (int j = 0; j < count; j++) {
             double lx = x - px[j], ly = y - py[j], lz = z - pz[j];
-            double distance2 = lx * lx + ly * ly + lz * lz;
-            if (distance2 == 0) {
-                cosLight[j] = 0;
-                continue;
-            }
-            double inv = 1 / Math.sqrt(distance2);
-            double ux = lx * inv, uy = ly * inv, uz = lz * inv;
-            double scale = inv * inv;
-            double cos = ux * nx[j] + uy * ny[j] + uz * nz[j];
-            cosLight[j] = cos;
-            toLightX[j] = ux;
-            toLightY[j] = uy;
-            toLightZ[j] = uz;
-            lightDistance[j] = distance2 * inv;
-            lightR[j] = powerR * scale * cos;
-            lightG[j] = powerG * scale * cos;
-            lightB[j] = powerB * scale * cos;
+            inv[j] = 1 / Math.sqrt(lx * lx + ly * ly + lz * lz);
+        }
+        double[] distance = this.lightDistance;
+        for (int j = 0; j < count; j++) {
+            double lx = x - px[j], ly = y - py[j], lz = z - pz[j];
+            distance[j] = (lx * lx + ly * ly + lz * lz) * inv[j];
+        }
+        double[] ux = toLightX, uy = toLightY, uz = toLightZ;
+        for (int j = 0; j < count; j++) {
+            ux[j] = (x - px[j]) * inv[j];
+            uy[j] = (y - py[j]) * inv[j];
+            uz[j] = (z - pz[j]) * inv[j];
+        }
+        double[] nx = this.nx, ny = this.ny, nz = this.nz, cos = this.cosLight;
+        for (int j = 0; j < count; j++) {
+            cos[j] = ux[j] * nx[j] + uy[j] * ny[j] + uz[j] * nz[j];
+        }
+        double[] r = lightR, g = lightG, b = lightB;
+        for (int j = 0; j < count; j++) {
+            double scale = inv[j] * inv[j], c = cos[j];
+            r[j] = powerR * scale * c;
+            g[j] = powerG * scale * c;
+            b[j] = powerB * scale * c;
         }
     }
 
