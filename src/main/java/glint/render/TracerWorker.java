@@ -265,20 +265,30 @@ final class TracerWorker {
     /**
      * Adds light {@code light} at each matte hit that faces it and sees it: first the hits no sphere
      * can shadow, which need only the planes tested, then those a sphere may shadow, which take the
-     * whole test. The first loop has no call the JIT would not inline; left in it, such a call
-     * would make it keep its values on the stack for every hit rather than in registers.
+     * whole test. Where the light has cones, the row's cone margins, worked out first in SIMD, rule
+     * out most hits without a cone tested one by one. The first loop has no call the JIT would not
+     * inline; left in it, such a call would make it keep its values on the stack for every hit
+     * rather than in registers.
      */
     private void addUnshadowed(int light, int count) {
         RowHits h = hits;
         RenderScene s = scene;
         RayCaster shadows = caster;
+        LightCones cones = s.lightCones[light];
+        double conesReach = Double.NEGATIVE_INFINITY; // hits offset no further than this may use the margins
+        if (cones != null) {
+            h.coneMargins(count, cones);
+            conesReach = cones.maxOffset;
+        }
+        double[] margin = h.coneMargin;
         int suspects = 0;
         for (int j = 0; j < count; j++) {
             if (!(h.cosLight[j] > 0)) {
                 continue;
             }
             double dx = h.toLightX[j], dy = h.toLightY[j], dz = h.toLightZ[j], offset = h.offset[j];
-            if (shadows.sphereMayShadow(s, dx, dy, dz, light, offset, h.skipNear[j])) {
+            if ((offset > conesReach || margin[j] >= 0)
+                    && shadows.sphereMayShadow(s, dx, dy, dz, light, offset, h.skipNear[j])) {
                 h.suspects[suspects++] = j;
                 continue;
             }

@@ -2,10 +2,15 @@ package glint.render;
 
 import static org.junit.jupiter.api.Assertions.assertEquals;
 import static org.junit.jupiter.api.Assertions.assertFalse;
+import static org.junit.jupiter.api.Assertions.assertTrue;
 
+import java.util.Random;
 import org.junit.jupiter.api.Test;
 
-/** A row's point-light samples ({@link RowHits#samplePointLight}) against values worked out by hand. */
+/**
+ * A row's point-light samples ({@link RowHits#samplePointLight}) against values worked out by hand,
+ * and its cone margins ({@link RowHits#coneMargins}) against {@link LightCones#holds}.
+ */
 class RowHitsTest {
 
     private static final double LIGHT_X = 1, LIGHT_Y = 3, LIGHT_Z = -2;
@@ -44,6 +49,93 @@ class RowHitsTest {
         hits.samplePointLight(2, LIGHT_X, LIGHT_Y, LIGHT_Z, 8, 8, 8);
         assertFalse(hits.cosLight[0] > 0, "n.l at the light: " + hits.cosLight[0]);
         assertEquals(1, hits.cosLight[1]); // its neighbour keeps its own sample
+    }
+
+    @Test
+    void theMarginOfASphereStraightBelowTheLightIsItsConesWidthAlongTheAxis() {
+        // a sphere of radius 1, 2 below the light: half-angle 30 degrees (plus the cones' widening)
+        LightCones cones = LightCones.build(new double[] {0, -2, 0, 1}, 1, 0, 0, 0);
+        RowHits hits = directionsToLight(new double[][] {{0, 1, 0}, {1, 0, 0}, {0, -1, 0}});
+        hits.coneMargins(3, cones);
+        assertEquals(1 - Math.cos(Math.toRadians(30)), hits.coneMargin[0], 1e-3); // from straight below: inside
+        assertEquals(-Math.cos(Math.toRadians(30)), hits.coneMargin[1], 1e-3); // from the side: outside
+        assertEquals(-1 - Math.cos(Math.toRadians(30)), hits.coneMargin[2], 1e-3); // from above: far outside
+    }
+
+    @Test
+    void aMarginIsBelowZeroExactlyWhereNoConeHoldsTheDirection() {
+        Random random = new Random(20261122);
+        for (int scene = 0; scene < 200; scene++) {
+            int count = 1 + random.nextInt(4);
+            double[] spheres = new double[4 * count];
+            for (int i = 0; i < count; i++) {
+                for (int c = 0; c < 3; c++) {
+                    spheres[4 * i + c] = random.nextDouble() * 8 - 4;
+                }
+                spheres[4 * i + 3] = 0.1 + random.nextDouble() * 2; // some hold the light: every direction
+            }
+            LightCones cones = LightCones.build(spheres, count, 0, 0, 0);
+            double[][] directions = new double[64][];
+            for (int j = 0; j < directions.length; j++) {
+                // towards the light: many along a cone's axis, or its edge, as a shadow ray near a silhouette is
+                int near = random.nextInt(count);
+                double[] d = j % 2 == 0 ? randomUnit(random) : nearAxis(cones, near, random);
+                directions[j] = d;
+            }
+            RowHits hits = directionsToLight(directions);
+            hits.coneMargins(directions.length, cones);
+            for (int j = 0; j < directions.length; j++) {
+                double[] d = directions[j];
+                boolean held = false;
+                for (int i = 0; i < count; i++) {
+                    held |= cones.holds(i, d[0], d[1], d[2]);
+                }
+                assertEquals(held, hits.coneMargin[j] >= 0, "scene " + scene + ", direction " + j);
+            }
+        }
+    }
+
+    @Test
+    void aConeHoldingEveryDirectionGivesEveryHitAMargin() {
+        LightCones cones = LightCones.build(new double[] {0, 0.5, 0, 1}, 1, 0, 0, 0); // the light inside it
+        RowHits hits = directionsToLight(new double[][] {{0, 1, 0}, {0, -1, 0}, {0.6, 0, 0.8}});
+        hits.coneMargins(3, cones);
+        for (int j = 0; j < 3; j++) {
+            assertTrue(hits.coneMargin[j] >= 1, "margin " + hits.coneMargin[j]);
+        }
+    }
+
+    private static double[] randomUnit(Random random) {
+        double x = random.nextGaussian(), y = random.nextGaussian(), z = random.nextGaussian();
+        double length = Math.sqrt(x * x + y * y + z * z);
+        return new double[] {x / length, y / length, z / length};
+    }
+
+    /** A unit direction to the light (minus the axis) turned off cone i's axis by about its half-angle. */
+    private static double[] nearAxis(LightCones cones, int i, Random random) {
+        double[] axis = {cones.cones[4 * i], cones.cones[4 * i + 1], cones.cones[4 * i + 2]};
+        double cos = Math.max(-1, Math.min(1, cones.cones[4 * i + 3]));
+        double sin = Math.sqrt(1 - cos * cos) * (1 + (random.nextDouble() - 0.5) * 1e-6);
+        double[] side = randomUnit(random);
+        double along = side[0] * axis[0] + side[1] * axis[1] + side[2] * axis[2];
+        double ox = side[0] - along * axis[0], oy = side[1] - along * axis[1], oz = side[2] - along * axis[2];
+        double length = Math.sqrt(ox * ox + oy * oy + oz * oz);
+        double x = -(cos * axis[0] + sin * ox / length), y = -(cos * axis[1] + sin * oy / length),
+                z = -(cos * axis[2] + sin * oz / length);
+        double norm = Math.sqrt(x * x + y * y + z * z);
+        return new double[] {x / norm, y / norm, z / norm};
+    }
+
+    /** Matte slots whose unit directions to the light are the given ones. */
+    private static RowHits directionsToLight(double[][] directions) {
+        RowHits hits = new RowHits();
+        hits.fit(directions.length);
+        for (int j = 0; j < directions.length; j++) {
+            hits.toLightX[j] = directions[j][0];
+            hits.toLightY[j] = directions[j][1];
+            hits.toLightZ[j] = directions[j][2];
+        }
+        return hits;
     }
 
     /** Matte slots holding the given points and normals, {x, y, z, nx, ny, nz} each. */
