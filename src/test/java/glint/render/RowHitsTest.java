@@ -4,7 +4,7 @@ import static org.junit.jupiter.api.Assertions.assertEquals;
 import static org.junit.jupiter.api.Assertions.assertFalse;
 import static org.junit.jupiter.api.Assertions.assertTrue;
 
-import java.util.Random;
+import java.util.SplittableRandom;
 import org.junit.jupiter.api.Test;
 
 /**
@@ -64,7 +64,7 @@ class RowHitsTest {
 
     @Test
     void aMarginIsBelowZeroExactlyWhereNoConeHoldsTheDirection() {
-        Random random = new Random(20261122);
+        SplittableRandom random = new SplittableRandom(20261122);
         for (int scene = 0; scene < 200; scene++) {
             int count = 1 + random.nextInt(4);
             double[] spheres = new double[4 * count];
@@ -77,10 +77,9 @@ class RowHitsTest {
             LightCones cones = LightCones.build(spheres, count, 0, 0, 0);
             double[][] directions = new double[64][];
             for (int j = 0; j < directions.length; j++) {
-                // towards the light: many along a cone's axis, or its edge, as a shadow ray near a silhouette is
+                // towards the light: many at a cone's edge, as a shadow ray near a silhouette is
                 int near = random.nextInt(count);
-                double[] d = j % 2 == 0 ? randomUnit(random) : nearAxis(cones, near, random);
-                directions[j] = d;
+                directions[j] = j % 2 == 0 ? RandomScenes.unitVector(random) : nearEdge(cones, near, random);
             }
             RowHits hits = directionsToLight(directions);
             hits.coneMargins(directions.length, cones);
@@ -105,25 +104,19 @@ class RowHitsTest {
         }
     }
 
-    private static double[] randomUnit(Random random) {
-        double x = random.nextGaussian(), y = random.nextGaussian(), z = random.nextGaussian();
-        double length = Math.sqrt(x * x + y * y + z * z);
-        return new double[] {x / length, y / length, z / length};
-    }
-
-    /** A unit direction to the light (minus the axis) turned off cone i's axis by about its half-angle. */
-    private static double[] nearAxis(LightCones cones, int i, Random random) {
+    /**
+     * A unit direction to the light whose direction from it lies within a millionth of cone i's
+     * half-angle of its edge; any direction where the cone holds every one.
+     */
+    private static double[] nearEdge(LightCones cones, int i, SplittableRandom random) {
+        double cos = cones.cones[4 * i + 3];
+        if (cos < -1) {
+            return RandomScenes.unitVector(random);
+        }
         double[] axis = {cones.cones[4 * i], cones.cones[4 * i + 1], cones.cones[4 * i + 2]};
-        double cos = Math.max(-1, Math.min(1, cones.cones[4 * i + 3]));
-        double sin = Math.sqrt(1 - cos * cos) * (1 + (random.nextDouble() - 0.5) * 1e-6);
-        double[] side = randomUnit(random);
-        double along = side[0] * axis[0] + side[1] * axis[1] + side[2] * axis[2];
-        double ox = side[0] - along * axis[0], oy = side[1] - along * axis[1], oz = side[2] - along * axis[2];
-        double length = Math.sqrt(ox * ox + oy * oy + oz * oz);
-        double x = -(cos * axis[0] + sin * ox / length), y = -(cos * axis[1] + sin * oy / length),
-                z = -(cos * axis[2] + sin * oz / length);
-        double norm = Math.sqrt(x * x + y * y + z * z);
-        return new double[] {x / norm, y / norm, z / norm};
+        double angle = Math.acos(cos) * (1 + (random.nextDouble() - 0.5) * 1e-6);
+        double[] fromLight = RandomScenes.atAngle(axis, angle, random);
+        return new double[] {-fromLight[0], -fromLight[1], -fromLight[2]};
     }
 
     /** Matte slots whose unit directions to the light are the given ones. */
