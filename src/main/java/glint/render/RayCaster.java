@@ -360,6 +360,9 @@ final class RayCaster {
                            double tMax, int skipCode) {
         skip = skipped(skipCode);
         rays++;
+        if (noPlaneToTest(s, skipCode)) {
+            return false;
+        }
         double[] planes = s.planes;
         for (int i = 0, n = s.planeCount; i < n; i++) {
             if (-(i + 1) == skip) {
@@ -373,6 +376,18 @@ final class RayCaster {
         }
         return false;
     }
+
+    /**
+     * Whether a ray with skip code {@code skipCode} has no plane to test: the scene has none, or only
+     * the one the ray leaves (the floor of most scenes, whose hits make most of a frame's shadow
+     * rays). Spares those rays the plane loop's setup.
+     */
+    static boolean noPlaneToTest(RenderScene s, int skipCode) {
+        return s.planeCount == 0 || (s.planeCount == 1 && skipCode == ONLY_PLANE);
+    }
+
+    /** The skip code of a ray leaving plane 0. */
+    private static final int ONLY_PLANE = -1;
 
     /**
      * A shadow ray whose light-buffer cell lists more spheres than this searches the hierarchy

@@ -292,6 +292,11 @@ final class TracerWorker {
                 h.suspects[suspects++] = j;
                 continue;
             }
+            if (RayCaster.noPlaneToTest(s, h.skipNear[j])) {
+                shadows.rays++; // the shadow ray, which meets nothing
+                addLight(j);
+                continue;
+            }
             double ox = h.px[j] + offset * h.nx[j], oy = h.py[j] + offset * h.ny[j], oz = h.pz[j] + offset * h.nz[j];
             if (!shadows.anyPlaneBefore(s, ox, oy, oz, dx, dy, dz, h.lightDistance[j], h.skipNear[j])) {
                 addLight(j);
