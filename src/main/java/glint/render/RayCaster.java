@@ -71,6 +71,24 @@ final class RayCaster {
         return plane >= 0 || !entering ? surfaceId(sphere, plane) : insideOf(sphere);
     }
 
+    /**
+     * {@code n}, which the caller knows is at most {@code most} (a small constant), written so that
+     * the JIT knows it too. C2 keeps a safepoint poll in a loop counted by an int and wraps the loop
+     * in an outer one, strip-mined, unless the types of its bounds show it runs at most
+     * {@code -XX:LoopStripMiningIterShortLoop} (100) times. Set up on every entry, that outer loop
+     * costs more instructions than the one to four tests of a small scene's loops over its planes,
+     * cones or spheres (docs/benchmarks.md, "Short loops").
+     */
+    static int few(int n, int most) {
+        return Math.min(n, most);
+    }
+
+    /**
+     * The planes a loop over them tests in a loop the JIT knows is short ({@link #few}); the rest,
+     * in scenes of more, go in a second loop.
+     */
+    static final int FEW_PLANES = 8;
+
     /** Nearest hit along the ray; sets hitT and hitSphere or hitPlane (the other is -1). */
     boolean nearest(RenderScene s, double ox, double oy, double oz, double dx, double dy, double dz, int skipCode) {
         rays++;
@@ -88,7 +106,8 @@ final class RayCaster {
             nearestPlane(s, ox, oy, oz, dx, dy, dz);
             nearestListedSphere(s, around, ox, oy, oz, dx, dy, dz);
         } else if (s.bvh == null) {
-            nearestSphereIn(s, 0, s.sphereCount, ox, oy, oz, dx, dy, dz);
+            // without a hierarchy a scene has at most BVH_MIN_SPHERES spheres
+            nearestSphereIn(s, 0, few(s.sphereCount, RenderScene.BVH_MIN_SPHERES), ox, oy, oz, dx, dy, dz);
             nearestPlane(s, ox, oy, oz, dx, dy, dz);
         } else {
             // the planes first: their distance bounds the search of the hierarchy
@@ -99,19 +118,28 @@ final class RayCaster {
     }
 
     private void nearestPlane(RenderScene s, double ox, double oy, double oz, double dx, double dy, double dz) {
-        double[] planes = s.planes;
-        for (int i = 0, n = s.planeCount; i < n; i++) {
-            if (-(i + 1) == skip) {
-                continue;
-            }
-            int k = 4 * i;
-            double t = Intersect.planeBefore(planes[k], planes[k + 1], planes[k + 2], planes[k + 3],
-                    ox, oy, oz, dx, dy, dz, hitT);
-            if (t < hitT) {
-                hitT = t;
-                hitPlane = i;
-                hitSphere = -1;
-            }
+        int n = s.planeCount;
+        for (int i = 0, few = few(n, FEW_PLANES); i < few; i++) {
+            keepPlaneIfNearer(s.planes, i, ox, oy, oz, dx, dy, dz);
+        }
+        for (int i = FEW_PLANES; i < n; i++) {
+            keepPlaneIfNearer(s.planes, i, ox, oy, oz, dx, dy, dz);
+        }
+    }
+
+    /** Tests plane i unless the query skips it; makes it the hit when the ray meets it nearer than the hit so far. */
+    private void keepPlaneIfNearer(double[] planes, int i, double ox, double oy, double oz,
+                                   double dx, double dy, double dz) {
+        if (-(i + 1) == skip) {
+            return;
+        }
+        int k = 4 * i;
+        double t = Intersect.planeBefore(planes[k], planes[k + 1], planes[k + 2], planes[k + 3],
+                ox, oy, oz, dx, dy, dz, hitT);
+        if (t < hitT) {
+            hitT = t;
+            hitPlane = i;
+            hitSphere = -1;
         }
     }
 
@@ -135,10 +163,12 @@ final class RayCaster {
         return true;
     }
 
-    private void nearestSphereIn(RenderScene s, int first, int end,
+    /** The nearest of spheres [first, first + count), count typed as few ({@link #few}). */
+    private void nearestSphereIn(RenderScene s, int first, int count,
                                  double ox, double oy, double oz, double dx, double dy, double dz) {
         double[] spheres = s.spheres;
-        for (int i = first; i < end; i++) {
+        for (int j = 0; j < count; j++) {
+            int i = first + j;
             if (i + 1 != skip) {
                 keepIfNearer(spheres, i, ox, oy, oz, dx, dy, dz);
             }
@@ -187,7 +217,7 @@ final class RayCaster {
             int link = links[2 * node];
             int count = links[2 * node + 1];
             if (count > 0) {
-                nearestSphereIn(s, link, link + count, ox, oy, oz, dx, dy, dz);
+                nearestSphereIn(s, link, few(count, SphereBvh.LEAF_SIZE), ox, oy, oz, dx, dy, dz);
             } else {
                 double left = boxEntry(bounds, link, ox, oy, oz, ix, iy, iz);
                 double right = boxEntry(bounds, link + 1, ox, oy, oz, ix, iy, iz);
@@ -297,7 +327,7 @@ final class RayCaster {
                      int skipCode) {
         return anyPlaneBefore(s, ox, oy, oz, dx, dy, dz, tMax, skipCode)
                 || (s.bvh == null
-                ? anySphereIn(s, 0, s.sphereCount, ox, oy, oz, dx, dy, dz, tMax)
+                ? anySphereIn(s, 0, few(s.sphereCount, RenderScene.BVH_MIN_SPHERES), ox, oy, oz, dx, dy, dz, tMax)
                 : anySphereInBvh(s, ox, oy, oz, dx, dy, dz, tMax));
     }
 
@@ -337,7 +367,7 @@ final class RayCaster {
         LightCones cones = s.lightCones[light];
         if (cones != null && offset <= cones.maxOffset) {
             int left = skipped(skipCode) - 1; // the sphere left on its outer side, or below 0
-            for (int i = 0, n = cones.count; i < n; i++) {
+            for (int i = 0, n = few(cones.count, LightCones.MOST_SPHERES); i < n; i++) {
                 if (i != left && cones.holds(i, dx, dy, dz)) {
                     return true;
                 }
@@ -363,18 +393,26 @@ final class RayCaster {
         if (noPlaneToTest(s, skipCode)) {
             return false;
         }
-        double[] planes = s.planes;
-        for (int i = 0, n = s.planeCount; i < n; i++) {
-            if (-(i + 1) == skip) {
-                continue;
+        int n = s.planeCount;
+        for (int i = 0, few = few(n, FEW_PLANES); i < few; i++) {
+            if (planeBlocks(s.planes, i, ox, oy, oz, dx, dy, dz, tMax)) {
+                return true;
             }
-            int k = 4 * i;
-            if (Intersect.planeBefore(planes[k], planes[k + 1], planes[k + 2], planes[k + 3],
-                    ox, oy, oz, dx, dy, dz, tMax) < tMax) {
+        }
+        for (int i = FEW_PLANES; i < n; i++) {
+            if (planeBlocks(s.planes, i, ox, oy, oz, dx, dy, dz, tMax)) {
                 return true;
             }
         }
         return false;
+    }
+
+    /** Whether plane i, unless the query skips it, lies on the ray before tMax. */
+    private boolean planeBlocks(double[] planes, int i, double ox, double oy, double oz, double dx, double dy,
+                                double dz, double tMax) {
+        int k = 4 * i;
+        return -(i + 1) != skip && Intersect.planeBefore(planes[k], planes[k + 1], planes[k + 2], planes[k + 3],
+                ox, oy, oz, dx, dy, dz, tMax) < tMax;
     }
 
     /**
@@ -409,7 +447,7 @@ final class RayCaster {
     /** Whether any sphere whose cone holds the ray's direction lies on the ray before tMax. */
     private boolean anySphereInCone(RenderScene s, LightCones cones, double ox, double oy, double oz,
                                     double dx, double dy, double dz, double tMax) {
-        for (int i = 0, n = cones.count; i < n; i++) {
+        for (int i = 0, n = few(cones.count, LightCones.MOST_SPHERES); i < n; i++) {
             if (cones.holds(i, dx, dy, dz) && blocks(s, i, ox, oy, oz, dx, dy, dz, tMax)) {
                 return true;
             }
@@ -417,10 +455,11 @@ final class RayCaster {
         return false;
     }
 
-    private boolean anySphereIn(RenderScene s, int first, int end, double ox, double oy, double oz,
+    /** Whether any of spheres [first, first + count), count typed as few ({@link #few}), lies on the ray before tMax. */
+    private boolean anySphereIn(RenderScene s, int first, int count, double ox, double oy, double oz,
                                 double dx, double dy, double dz, double tMax) {
-        for (int i = first; i < end; i++) {
-            if (blocks(s, i, ox, oy, oz, dx, dy, dz, tMax)) {
+        for (int j = 0; j < count; j++) {
+            if (blocks(s, first + j, ox, oy, oz, dx, dy, dz, tMax)) {
                 return true;
             }
         }
@@ -463,7 +502,7 @@ final class RayCaster {
             int link = links[2 * node];
             int count = links[2 * node + 1];
             if (count > 0) {
-                if (anySphereIn(s, link, link + count, ox, oy, oz, dx, dy, dz, tMax)) {
+                if (anySphereIn(s, link, few(count, SphereBvh.LEAF_SIZE), ox, oy, oz, dx, dy, dz, tMax)) {
                     return true;
                 }
             } else {
