@@ -134,13 +134,8 @@ final class RayCaster {
             return;
         }
         int k = 4 * i;
-        double t = Intersect.planeBefore(planes[k], planes[k + 1], planes[k + 2], planes[k + 3],
-                ox, oy, oz, dx, dy, dz, hitT);
-        if (t < hitT) {
-            hitT = t;
-            hitPlane = i;
-            hitSphere = -1;
-        }
+        keepIfNearer(Intersect.planeBefore(planes[k], planes[k + 1], planes[k + 2], planes[k + 3],
+                ox, oy, oz, dx, dy, dz, hitT), -1, i);
     }
 
     /**
@@ -178,12 +173,16 @@ final class RayCaster {
     /** Tests sphere i; makes it the hit when the ray meets it nearer than the hit found so far. */
     private void keepIfNearer(double[] spheres, int i, double ox, double oy, double oz, double dx, double dy, double dz) {
         int k = 4 * i;
-        double t = Intersect.sphereBefore(spheres[k], spheres[k + 1], spheres[k + 2], spheres[k + 3],
-                ox, oy, oz, dx, dy, dz, hitT);
+        keepIfNearer(Intersect.sphereBefore(spheres[k], spheres[k + 1], spheres[k + 2], spheres[k + 3],
+                ox, oy, oz, dx, dy, dz, hitT), i, -1);
+    }
+
+    /** Makes the surface met at distance t (a sphere or a plane, the other -1) the hit when t is nearer than the hit so far. */
+    private void keepIfNearer(double t, int sphere, int plane) {
         if (t < hitT) {
             hitT = t;
-            hitSphere = i;
-            hitPlane = -1;
+            hitSphere = sphere;
+            hitPlane = plane;
         }
     }
 
@@ -292,12 +291,8 @@ final class RayCaster {
         int[] candidates = e.pixelSpheres;
         for (int j = 0, n = e.pixelCount; j < n; j++) {
             int i = candidates[j];
-            double t = Intersect.sphereFrom(toCentre[3 * i], toCentre[3 * i + 1], toCentre[3 * i + 2],
-                    c[i], spheres[4 * i + 3], dx, dy, dz, hitT);
-            if (t < hitT) {
-                hitT = t;
-                hitSphere = i;
-            }
+            keepIfNearer(Intersect.sphereFrom(toCentre[3 * i], toCentre[3 * i + 1], toCentre[3 * i + 2],
+                    c[i], spheres[4 * i + 3], dx, dy, dz, hitT), i, -1);
         }
         nearestPlaneFromEye(s, dx, dy, dz);
         return hitT < Intersect.MISS;
@@ -312,13 +307,8 @@ final class RayCaster {
         double[] planes = s.planes, numerators = eye.planeNumerator;
         for (int i = 0, n = s.planeCount; i < n; i++) {
             int k = 4 * i;
-            double t = Intersect.planeFrom(numerators[i], planes[k] * dx + planes[k + 1] * dy + planes[k + 2] * dz,
-                    hitT);
-            if (t < hitT) {
-                hitT = t;
-                hitPlane = i;
-                hitSphere = -1;
-            }
+            keepIfNearer(Intersect.planeFrom(numerators[i], planes[k] * dx + planes[k + 1] * dy + planes[k + 2] * dz,
+                    hitT), -1, i);
         }
     }
 
