@@ -2,6 +2,8 @@ package glint.render;
 
 import static org.junit.jupiter.api.Assertions.assertArrayEquals;
 import static org.junit.jupiter.api.Assertions.assertEquals;
+import static org.junit.jupiter.api.Assertions.assertFalse;
+import static org.junit.jupiter.api.Assertions.assertTrue;
 
 import glint.config.Shading;
 import java.io.IOException;
@@ -40,7 +42,7 @@ class OnlyPlaneTest {
     void withTwoPlanesEveryRayTestsOne() {
         RenderScene twoPlanes = compile(SPHERE + FLOOR + WALL);
         for (int code : CODES) {
-            assertEquals(false, RayCaster.noPlaneToTest(twoPlanes, code), "code " + code);
+            assertFalse(RayCaster.noPlaneToTest(twoPlanes, code), "code " + code);
         }
     }
 
@@ -48,7 +50,7 @@ class OnlyPlaneTest {
     void withoutPlanesNoRayTestsOne() {
         RenderScene noPlane = compile(SPHERE);
         for (int code : CODES) {
-            assertEquals(true, RayCaster.noPlaneToTest(noPlane, code), "code " + code);
+            assertTrue(RayCaster.noPlaneToTest(noPlane, code), "code " + code);
         }
     }
 
