@@ -1,7 +1,5 @@
 package glint.bench;
 
-import glint.config.Config;
-import glint.config.Shading;
 import glint.render.FrameBuffer;
 import glint.render.RenderScene;
 import glint.render.RenderSettings;
@@ -10,12 +8,9 @@ import glint.scene.Scene;
 
 /**
  * What the frame benchmarks render with: a compiled scene, an 800x600 frame and a tracer, one
- * sample per pixel in 8 x 8 tiles, depth 5, cook-torrance, and the shipped min_weight and epsilon.
+ * sample per pixel in 8 x 8 tiles, with the settings given ({@link BenchScenes#SETTINGS} or a variant).
  */
 final class BenchFrames implements AutoCloseable {
-
-    static final RenderSettings SETTINGS = new RenderSettings(Shading.COOK_TORRANCE, 5,
-            Config.defaults().minWeight(), Config.defaults().epsilon());
 
     private final RenderScene scene;
     private final FrameBuffer frame = new FrameBuffer(800, 600);

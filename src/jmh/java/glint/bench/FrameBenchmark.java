@@ -43,7 +43,7 @@ public class FrameBenchmark {
 
     @Setup(Level.Trial)
     public void setUp() throws InputException {
-        frames = new BenchFrames(SceneLoader.parse("bench", BenchScenes.row(spheres, material)), BenchFrames.SETTINGS,
+        frames = new BenchFrames(SceneLoader.parse("bench", BenchScenes.row(spheres, material)), BenchScenes.SETTINGS,
                 threads);
     }
 

@@ -44,7 +44,7 @@ public class PlainTracerBenchmark {
 
     @Setup(Level.Trial)
     public void setUp() throws InputException {
-        RenderScene scene = RenderScene.compile(SceneLoader.load(Path.of("scenes/default.yaml")), BenchFrames.SETTINGS);
+        RenderScene scene = RenderScene.compile(SceneLoader.load(Path.of("scenes/default.yaml")), BenchScenes.SETTINGS);
         plain = new PlainTracer(scene, threads);
         FrameBuffer glintFrame = new FrameBuffer(PairedFrames.WIDTH, PairedFrames.HEIGHT);
         try (Tracer glint = new Tracer(threads)) {

@@ -48,7 +48,7 @@ public class SceneBenchmark {
             default -> null;
         };
         frames = new BenchFrames(text == null ? SceneLoader.load(Path.of("scenes/default.yaml"))
-                : SceneLoader.parse(scene, text), BenchFrames.SETTINGS, threads);
+                : SceneLoader.parse(scene, text), BenchScenes.SETTINGS, threads);
     }
 
     @TearDown(Level.Trial)

@@ -45,7 +45,7 @@ public class SimdBenchmark {
     public void setUp() throws InputException {
         Scene rendered = scene.equals("default") ? SceneLoader.load(Path.of("scenes/default.yaml"))
                 : SceneLoader.parse(scene, BenchScenes.row(5, "matte"));
-        frames = new BenchFrames(rendered, BenchFrames.SETTINGS.withSimd(path.equals("simd")), 2);
+        frames = new BenchFrames(rendered, BenchScenes.SETTINGS.withSimd(path.equals("simd")), 2);
     }
 
     @TearDown(Level.Trial)

@@ -1,5 +1,8 @@
 package glint.bench;
 
+import glint.config.Config;
+import glint.config.Shading;
+import glint.render.RenderSettings;
 import java.io.IOException;
 import java.nio.charset.StandardCharsets;
 import java.nio.file.Files;
@@ -12,6 +15,13 @@ import java.util.Locale;
  * {@code main} writes them to scenes/bench/ so they can also be rendered from files.
  */
 public final class BenchScenes {
+
+    /**
+     * What every benchmark renders with: depth 5, cook-torrance, and the shipped min_weight and
+     * epsilon (one sample per pixel, at 800x600, is the benchmarks' own choice).
+     */
+    public static final RenderSettings SETTINGS = new RenderSettings(Shading.COOK_TORRANCE, 5,
+            Config.defaults().minWeight(), Config.defaults().epsilon());
 
     private BenchScenes() {
     }

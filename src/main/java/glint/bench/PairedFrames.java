@@ -1,12 +1,9 @@
 package glint.bench;
 
-import glint.config.Config;
-import glint.config.Shading;
 import glint.input.InputException;
 import glint.render.FrameBuffer;
 import glint.render.PlainTracer;
 import glint.render.RenderScene;
-import glint.render.RenderSettings;
 import glint.render.Tracer;
 import glint.scene.SceneLoader;
 import java.nio.file.Path;
@@ -60,9 +57,7 @@ public final class PairedFrames {
 
     /** Checks the two images, times the pairs and prints the summary; returns the exit status. */
     private static int run(Path scenePath, int threads, int pairs) throws InputException {
-        RenderSettings settings = new RenderSettings(Shading.COOK_TORRANCE, 5, Config.defaults().minWeight(),
-                Config.defaults().epsilon());
-        RenderScene scene = RenderScene.compile(SceneLoader.load(scenePath), settings);
+        RenderScene scene = RenderScene.compile(SceneLoader.load(scenePath), BenchScenes.SETTINGS);
         FrameBuffer glintFrame = new FrameBuffer(WIDTH, HEIGHT), plainFrame = new FrameBuffer(WIDTH, HEIGHT);
         try (Tracer glint = new Tracer(threads); PlainTracer plain = new PlainTracer(scene, threads)) {
             glint.render(scene, glintFrame, 1, 0, 8);
