@@ -22,7 +22,7 @@ final class Headless {
     private Headless() {
     }
 
-    static int renderStill(Path scenePath, Config config, boolean simd, Path output, PrintWriter out)
+    static int renderStill(Path scenePath, Config config, Path output, PrintWriter out)
             throws InputException, IOException {
         if (!ImageWriter.isSupported(output)) {
             throw new InputException("glint", 0, 0,
@@ -33,7 +33,7 @@ final class Headless {
             throw new InputException("glint", 0, 0, "--output: no such folder '" + folder + "'");
         }
         Scene scene = SceneLoader.load(scenePath, config.limits().scene());
-        RenderScene compiled = RenderScene.compile(scene, RenderSettings.of(config).withSimd(simd));
+        RenderScene compiled = RenderScene.compile(scene, RenderSettings.of(config));
         FrameBuffer frame = new FrameBuffer(config.displayWidth(), config.displayHeight());
         long start = System.nanoTime();
         try (Tracer tracer = new Tracer(config.effectiveThreads())) {
@@ -47,9 +47,9 @@ final class Headless {
         return Main.OK;
     }
 
-    static int bench(Path scenePath, Config config, boolean simd, int frames, PrintWriter out) throws InputException {
+    static int bench(Path scenePath, Config config, int frames, PrintWriter out) throws InputException {
         Scene scene = SceneLoader.load(scenePath, config.limits().scene());
-        RenderScene compiled = RenderScene.compile(scene, RenderSettings.of(config).withSimd(simd));
+        RenderScene compiled = RenderScene.compile(scene, RenderSettings.of(config));
         FrameBuffer frame = new FrameBuffer(config.displayWidth(), config.displayHeight());
         double[] millis = new double[frames];
         long raysPerFrame;

@@ -56,10 +56,6 @@ public final class Main implements Callable<Integer> {
     @Option(names = "--bench", paramLabel = "N", description = "render N frames of the still camera headless and time them")
     Integer bench;
 
-    @Option(names = "--simd", description = "with --output or --bench: trace camera rays 4 at a time through the "
-            + "Vector API (same image; needs java --add-modules jdk.incubator.vector)")
-    boolean simd;
-
     /** Where the modes write their report lines and diagnostics; set by {@link #run}. */
     private PrintWriter out = new PrintWriter(System.out, true);
     private PrintWriter err = new PrintWriter(System.err, true);
@@ -99,31 +95,16 @@ public final class Main implements Callable<Integer> {
         if (output != null && bench != null) {
             throw new InputException("glint", 0, 0, "--output and --bench cannot be used together");
         }
-        checkSimd();
         if (output != null) {
-            return Headless.renderStill(scenePath, settings, simd, output, out);
+            return Headless.renderStill(scenePath, settings, output, out);
         }
         if (bench != null) {
             if (bench < 1) {
                 throw new InputException("glint", 0, 0, "--bench: expected a number of frames >= 1, got " + bench);
             }
-            return Headless.bench(scenePath, settings, simd, bench, out);
+            return Headless.bench(scenePath, settings, bench, out);
         }
         return WindowLauncher.open(scenePath, settings, () -> overrides(loadConfig()), err);
-    }
-
-    /** --simd needs a headless mode and the Vector API module in this JVM. */
-    private void checkSimd() throws InputException {
-        if (!simd) {
-            return;
-        }
-        if (output == null && bench == null) {
-            throw new InputException("glint", 0, 0, "--simd: only with --output or --bench (the window takes the plain path)");
-        }
-        if (!RenderSettings.simdAvailable()) {
-            throw new InputException("glint", 0, 0, "--simd: the Vector API module is not loaded; start Java with it: "
-                    + "java --add-modules jdk.incubator.vector -jar target/glint.jar --simd ...");
-        }
     }
 
     private Config loadConfig() throws InputException {

@@ -1,196 +1,100 @@
 package glint.render;
 
 import glint.config.Shading;
-import glint.math.Vector3d;
+import glint.geometry.Aggregate;
+import glint.geometry.AggregatePolicy;
+import glint.geometry.Planes;
+import glint.geometry.Primitives;
+import glint.geometry.Shape;
+import glint.geometry.Spheres;
 import glint.scene.Camera;
-import glint.scene.Light;
 import glint.scene.Material;
+import glint.scene.MaterialType;
 import glint.scene.Plane;
 import glint.scene.Scene;
 import glint.scene.SceneObject;
 import glint.scene.Sphere;
+import glint.shading.Lights;
+import glint.shading.Materials;
 import java.util.ArrayList;
 import java.util.List;
+import java.util.function.Function;
 
 /**
- * A scene compiled for tracing: shapes, materials and lights in flat primitive arrays (world
- * space), the camera as a basis, and the settings. Immutable after construction; shared by all
- * workers.
+ * A scene compiled for tracing: its primitives by kind in flat arrays and the aggregate that
+ * searches them, materials and lights in flat arrays, the camera as a basis, and the settings.
+ * Immutable; shared by all render threads.
  */
 public final class RenderScene {
 
-    static final int MATTE = 0;
-    static final int METAL = 1;
-    static final int GLASS = 2;
-
-    /**
-     * Scenes with more spheres than this get a bounding volume hierarchy. Camera and shadow rays
-     * rarely search it ({@link EyeRays}, {@link LightBuffer}); for reflected and refracted rays it
-     * pays from about 20 spheres. Millions of instructions a frame of the render thread (800x600,
-     * 1 sample, depth 5, one thread), with and without a hierarchy: 10 glass spheres 632 and 584,
-     * 15 glass 721 and 668, 20 glass 768 and 848, 25 glass 813 and 912; 10 matte 278 and 262, 20
-     * matte 281 and 282.
-     */
-    static final int BVH_MIN_SPHERES = 16;
-
-    /** Smallest GGX alpha used for a highlight; keeps D(h) finite as roughness -> 0. */
-    static final double MIN_ALPHA = 1e-4;
-
     final RenderSettings settings;
-
-    // spheres: centre x, y, z and radius, 4 doubles each
-    final int sphereCount;
-    final double[] spheres;
-    final int[] sphereMaterial;
-    /** Hierarchy over the spheres (which are stored in its order), or null for few spheres. */
-    final SphereBvh bvh;
-    /** Per sphere, whether nothing else reaches into it ({@link EmptySpheres}). */
-    final boolean[] sphereIsEmpty;
+    final Primitives primitives;
+    final Aggregate aggregate;
+    /** Per primitive: its material's number. */
+    final int[] materialOf;
+    final Materials materials;
+    final Lights lights;
     /**
-     * Per sphere, the spheres a ray leaving it on its outer side can meet, by direction; null for a
-     * sphere no ray leaves (matte, shaded physically) or beyond the budget.
+     * Per primitive: the fraction of light a shadow ray passes through it. The cook-torrance model
+     * passes none; the phong model passes kt through glass.
      */
-    final NeighbourCells[] neighbours;
-
-    // planes: unit normal x, y, z and offset n.p, 4 doubles each
-    final int planeCount;
-    final double[] planes;
-    final int[] planeMaterial;
-
-    // materials, indexed by material id
-    final int[] materialType;
-    final double[] materialColor; // 3 per material, linear RGB
-    final double[] kd;
-    final double[] ks;
-    final double[] kt;
-    final double[] shininess;
-    final double[] ior;
-    final double[] alpha; // roughness^2; 0 = no highlight
-
-    // lights: for a point light its position, for a directional one the unit direction towards it
-    final int lightCount;
-    final boolean[] lightIsPoint;
-    final double[] lightVector; // 3 per light
-    final double[] lightPower;  // 3 per light: color x intensity
-    /**
-     * Per point light, the spheres that can shadow it by direction: as cones in a scene of few
-     * spheres, otherwise as a light buffer; both null for a directional light.
-     */
-    final LightCones[] lightCones;
-    final LightBuffer[] lightBuffers;
-
+    final double[] shadowPass;
     final double backgroundR, backgroundG, backgroundB;
     final double ambientR, ambientG, ambientB;
-
     /** The camera, world space. */
     final CameraBasis camera;
 
-    private RenderScene(Scene scene, RenderSettings settings) {
+    private RenderScene(Scene scene, RenderSettings settings, Function<Primitives, Aggregate> aggregateOf) {
         this.settings = settings;
-        List<Material> materials = new ArrayList<>();
-        List<SceneObject> sphereObjects = new ArrayList<>();
-        List<SceneObject> planeObjects = new ArrayList<>();
+        List<Material> materialList = new ArrayList<>();
+        List<SceneObject> spheres = new ArrayList<>(), planes = new ArrayList<>();
         for (SceneObject o : scene.objects()) {
-            (o.shape() instanceof Sphere ? sphereObjects : planeObjects).add(o);
+            (o.shape() instanceof Sphere ? spheres : o.shape() instanceof Plane ? planes : unknownKind(o)).add(o);
         }
-        sphereCount = sphereObjects.size();
-        spheres = new double[4 * sphereCount];
-        sphereMaterial = new int[sphereCount];
-        for (int i = 0; i < sphereCount; i++) {
-            Sphere s = (Sphere) sphereObjects.get(i).shape();
-            put4(spheres, i, s.center(), s.radius());
-            sphereMaterial[i] = indexOf(materials, sphereObjects.get(i).material());
+        double[] sphereData = new double[4 * spheres.size()];
+        for (int i = 0; i < spheres.size(); i++) {
+            Sphere s = (Sphere) spheres.get(i).shape();
+            put4(sphereData, i, s.center().x(), s.center().y(), s.center().z(), s.radius());
         }
-        bvh = sphereCount > BVH_MIN_SPHERES ? SphereBvh.build(spheres, sphereCount) : null;
-        if (bvh != null) {
-            reorderSpheres(bvh.order);
+        double[] planeData = new double[4 * planes.size()];
+        for (int i = 0; i < planes.size(); i++) {
+            Plane p = (Plane) planes.get(i).shape();
+            put4(planeData, i, p.normal().x(), p.normal().y(), p.normal().z(), p.normal().dot(p.point()));
         }
-        planeCount = planeObjects.size();
-        planes = new double[4 * planeCount];
-        planeMaterial = new int[planeCount];
-        for (int i = 0; i < planeCount; i++) {
-            Plane p = (Plane) planeObjects.get(i).shape();
-            put4(planes, i, p.normal(), p.normal().dot(p.point()));
-            planeMaterial[i] = indexOf(materials, planeObjects.get(i).material());
+        List<Shape> kinds = List.of(new Spheres(sphereData), new Planes(planeData));
+        primitives = new Primitives(kinds);
+        aggregate = aggregateOf.apply(primitives);
+        List<SceneObject> inOrder = new ArrayList<>(spheres);
+        inOrder.addAll(planes);
+        materialOf = new int[inOrder.size()];
+        for (int p = 0; p < materialOf.length; p++) {
+            materialOf[p] = indexOf(materialList, inOrder.get(p).material());
         }
-        sphereIsEmpty = EmptySpheres.find(spheres, sphereCount, planes, planeCount, bvh);
-
-        int m = materials.size();
-        materialType = new int[m];
-        materialColor = new double[3 * m];
-        kd = new double[m];
-        ks = new double[m];
-        kt = new double[m];
-        shininess = new double[m];
-        ior = new double[m];
-        alpha = new double[m];
-        for (int i = 0; i < m; i++) {
-            Material mat = materials.get(i);
-            materialType[i] = mat.type().ordinal();
-            put3(materialColor, i, mat.color());
-            kd[i] = mat.kd();
-            ks[i] = mat.ks();
-            kt[i] = mat.kt();
-            shininess[i] = mat.shininess();
-            ior[i] = mat.ior();
-            double a = mat.roughness() * mat.roughness();
-            alpha[i] = mat.roughness() > 0 ? Math.max(a, MIN_ALPHA) : 0;
+        materials = new Materials(materialList);
+        shadowPass = new double[materialOf.length];
+        for (int p = 0; p < materialOf.length && settings.shading() == Shading.PHONG; p++) {
+            int m = materialOf[p];
+            shadowPass[p] = materials.type(m) == MaterialType.GLASS ? materials.kt(m) : 0;
         }
-
-        lightCount = scene.lights().size();
-        lightIsPoint = new boolean[lightCount];
-        lightVector = new double[3 * lightCount];
-        lightPower = new double[3 * lightCount];
-        for (int i = 0; i < lightCount; i++) {
-            Light light = scene.lights().get(i);
-            if (light instanceof Light.Point p) {
-                lightIsPoint[i] = true;
-                put3(lightVector, i, p.position());
-            } else {
-                put3(lightVector, i, ((Light.Directional) light).direction().scale(-1));
-            }
-            put3(lightPower, i, light.color().scale(light.intensity()));
-        }
-        lightCones = buildLightCones();
-        lightBuffers = buildLightBuffers();
-        neighbours = buildNeighbourCells();
-
+        lights = new Lights(scene.lights());
         backgroundR = scene.background().x();
         backgroundG = scene.background().y();
         backgroundB = scene.background().z();
         ambientR = scene.ambient().x();
         ambientG = scene.ambient().y();
         ambientB = scene.ambient().z();
-
         camera = new CameraBasis(scene.camera());
     }
 
-    /** The same compiled scene seen from another camera: shares every array, rebuilds nothing. */
+    /** The same compiled scene seen from another camera: shares everything else. */
     private RenderScene(RenderScene base, Camera camera) {
         settings = base.settings;
-        sphereCount = base.sphereCount;
-        spheres = base.spheres;
-        sphereMaterial = base.sphereMaterial;
-        bvh = base.bvh;
-        sphereIsEmpty = base.sphereIsEmpty;
-        neighbours = base.neighbours;
-        planeCount = base.planeCount;
-        planes = base.planes;
-        planeMaterial = base.planeMaterial;
-        materialType = base.materialType;
-        materialColor = base.materialColor;
-        kd = base.kd;
-        ks = base.ks;
-        kt = base.kt;
-        shininess = base.shininess;
-        ior = base.ior;
-        alpha = base.alpha;
-        lightCount = base.lightCount;
-        lightIsPoint = base.lightIsPoint;
-        lightVector = base.lightVector;
-        lightPower = base.lightPower;
-        lightCones = base.lightCones;
-        lightBuffers = base.lightBuffers;
+        primitives = base.primitives;
+        aggregate = base.aggregate;
+        materialOf = base.materialOf;
+        materials = base.materials;
+        lights = base.lights;
+        shadowPass = base.shadowPass;
         backgroundR = base.backgroundR;
         backgroundG = base.backgroundG;
         backgroundB = base.backgroundB;
@@ -200,95 +104,14 @@ public final class RenderScene {
         this.camera = new CameraBasis(camera);
     }
 
-    /** Light buffers for at most this many point lights; shadow rays towards the others take the full test. */
-    static final int MOST_LIGHT_BUFFERS = 8;
-    /** List entries and cell indices all light buffers together may hold: 32 MB. */
-    static final long LIGHT_BUFFER_ENTRIES = 8L << 20;
-
-    /** {@link LightCones} for each point light, in a scene of at most {@link LightCones#MOST_SPHERES} spheres. */
-    private LightCones[] buildLightCones() {
-        LightCones[] cones = new LightCones[lightCount];
-        for (int i = 0; i < lightCount && sphereCount > 0 && sphereCount <= LightCones.MOST_SPHERES; i++) {
-            if (lightIsPoint[i]) {
-                cones[i] = LightCones.build(spheres, sphereCount, lightVector[3 * i], lightVector[3 * i + 1],
-                        lightVector[3 * i + 2]);
-            }
-        }
-        return cones;
+    /** Compiles an immutable scene with the given settings. */
+    public static RenderScene compile(Scene scene, RenderSettings settings) {
+        return new RenderScene(scene, settings, AggregatePolicy::choose);
     }
 
-    /**
-     * In a scene of more spheres than {@link LightCones#MOST_SPHERES}, a {@link LightBuffer} for
-     * each of the first point lights, while they fit the budget: a scene of many lights, or of many
-     * spheres crowding around one, must not cost the memory or the compile time of a buffer for
-     * each.
-     */
-    private LightBuffer[] buildLightBuffers() {
-        LightBuffer[] buffers = new LightBuffer[lightCount];
-        long left = LIGHT_BUFFER_ENTRIES;
-        int built = 0;
-        for (int i = 0; i < lightCount && built < MOST_LIGHT_BUFFERS && sphereCount > LightCones.MOST_SPHERES; i++) {
-            if (!lightIsPoint[i] || left < LightBuffer.CELL_INDEX_SIZE) {
-                continue;
-            }
-            LightBuffer buffer = LightBuffer.build(spheres, sphereCount, lightVector[3 * i], lightVector[3 * i + 1],
-                    lightVector[3 * i + 2], left - LightBuffer.CELL_INDEX_SIZE);
-            if (buffer != null) {
-                buffers[i] = buffer;
-                left -= LightBuffer.CELL_INDEX_SIZE + buffer.entries();
-                built++;
-            }
-        }
-        return buffers;
-    }
-
-    /**
-     * Scenes with fewer spheres than this search them all for reflected and refracted rays: a few
-     * sphere tests cost less than a cell lookup. Millions of instructions a frame of the render
-     * thread (800x600, 1 sample, depth 5, one thread), without and with {@link NeighbourCells}:
-     * default scene 464-474 and 488-495, 5 glass spheres 392-408 and 398-402, 10 glass 524-621 and
-     * 486-516, 25 glass 761-768 and 629-672 (docs/benchmarks.md, "Rays leaving a sphere").
-     */
-    static final int NEIGHBOUR_MIN_SPHERES = 8;
-    /**
-     * Scenes with more spheres than this search the hierarchy instead: every sphere's cells list
-     * every other sphere, so their size and build time grow as the square of the count (1,000
-     * spheres: 0.8 s and 55 MB more to load, against 0.9 s and 80 MB in all without them).
-     */
-    static final int NEIGHBOUR_MAX_SPHERES = 64;
-
-    /** List entries and cell indices all neighbour cells together may hold: 8 MB of indices, 16 MB of distances. */
-    static final long NEIGHBOUR_ENTRIES = 2L << 20;
-
-    /**
-     * {@link NeighbourCells} for each sphere that reflected or refracted rays leave, while they fit
-     * the budget. A ray leaves sphere i from at most epsilon max(1, |p|) off its surface, |p| at most
-     * |centre| + r: the reach of its cells, with a margin for rounding.
-     */
-    private NeighbourCells[] buildNeighbourCells() {
-        NeighbourCells[] cells = new NeighbourCells[sphereCount];
-        if (sphereCount < NEIGHBOUR_MIN_SPHERES || sphereCount > NEIGHBOUR_MAX_SPHERES) {
-            return cells;
-        }
-        long left = NEIGHBOUR_ENTRIES;
-        boolean phong = settings.shading() == Shading.PHONG;
-        for (int i = 0; i < sphereCount; i++) {
-            if ((!phong && materialType[sphereMaterial[i]] == MATTE) || left < NeighbourCells.CELL_INDEX_SIZE) {
-                continue;
-            }
-            int k = 4 * i;
-            double radius = spheres[k + 3];
-            double farthest = Math.sqrt(spheres[k] * spheres[k] + spheres[k + 1] * spheres[k + 1]
-                    + spheres[k + 2] * spheres[k + 2]) + radius;
-            double reach = radius + settings.epsilon() * Math.max(1, farthest) * (1 + 1e-6) + 1e-9 * farthest;
-            NeighbourCells built = NeighbourCells.build(spheres, sphereCount, i, reach,
-                    left - NeighbourCells.CELL_INDEX_SIZE);
-            if (built != null) {
-                cells[i] = built;
-                left -= NeighbourCells.CELL_INDEX_SIZE + built.entries();
-            }
-        }
-        return cells;
+    /** Compiles a scene whose rays search the aggregate {@code aggregateOf} builds, whatever the policy would choose. */
+    static RenderScene compile(Scene scene, RenderSettings settings, Function<Primitives, Aggregate> aggregateOf) {
+        return new RenderScene(scene, settings, aggregateOf);
     }
 
     /**
@@ -299,36 +122,17 @@ public final class RenderScene {
         return new RenderScene(this, camera);
     }
 
-    /** Compiles an immutable scene with the given settings. */
-    public static RenderScene compile(Scene scene, RenderSettings settings) {
-        return new RenderScene(scene, settings);
-    }
-
     public RenderSettings settings() {
         return settings;
     }
 
-    /** Whether a scene of {@code spheres} spheres is searched through a hierarchy. */
-    public static boolean usesHierarchy(int spheres) {
-        return spheres > BVH_MIN_SPHERES;
+    /** The aggregate every ray of this scene asks. */
+    public Aggregate aggregate() {
+        return aggregate;
     }
 
-    public boolean hasHierarchy() {
-        return bvh != null;
-    }
-
-    /** The fraction of light a phong shadow ray passes through an object of this material. */
-    double shadowPass(int material) {
-        return materialType[material] == GLASS ? kt[material] : 0;
-    }
-
-    private void reorderSpheres(int[] order) {
-        double[] oldSpheres = spheres.clone();
-        int[] oldMaterial = sphereMaterial.clone();
-        for (int i = 0; i < order.length; i++) {
-            System.arraycopy(oldSpheres, 4 * order[i], spheres, 4 * i, 4);
-            sphereMaterial[i] = oldMaterial[order[i]];
-        }
+    private static List<SceneObject> unknownKind(SceneObject o) {
+        throw new IllegalArgumentException("no primitive kind compiles " + o.shape().getClass().getSimpleName());
     }
 
     private static int indexOf(List<Material> materials, Material material) {
@@ -340,16 +144,10 @@ public final class RenderScene {
         return materials.size() - 1;
     }
 
-    private static void put3(double[] array, int index, Vector3d v) {
-        array[3 * index] = v.x();
-        array[3 * index + 1] = v.y();
-        array[3 * index + 2] = v.z();
-    }
-
-    private static void put4(double[] array, int index, Vector3d v, double w) {
-        array[4 * index] = v.x();
-        array[4 * index + 1] = v.y();
-        array[4 * index + 2] = v.z();
-        array[4 * index + 3] = w;
+    private static void put4(double[] array, int i, double a, double b, double c, double d) {
+        array[4 * i] = a;
+        array[4 * i + 1] = b;
+        array[4 * i + 2] = c;
+        array[4 * i + 3] = d;
     }
 }

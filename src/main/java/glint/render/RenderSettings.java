@@ -11,17 +11,15 @@ import glint.config.Shading;
  * @param minWeight    rays whose path weight falls below this are not traced
  * @param epsilon      base of the self-intersection offset, scaled by max(1, |p|)
  * @param glassFresnel how cook-torrance glass splits light between reflection and refraction
- * @param simd         trace camera rays in packets through the Vector API where it is loaded
- *                     (the same image; the plain path is the default and the reference)
  */
 public record RenderSettings(Shading shading, int recursionMax, double minWeight, double epsilon,
-                             GlassFresnel glassFresnel, boolean simd) {
+                             GlassFresnel glassFresnel) {
 
     /** Glass reflectance: the exact Fresnel equations (the default) or Schlick's approximation. */
     public enum GlassFresnel { EXACT, SCHLICK }
 
     public RenderSettings(Shading shading, int recursionMax, double minWeight, double epsilon) {
-        this(shading, recursionMax, minWeight, epsilon, GlassFresnel.EXACT, false);
+        this(shading, recursionMax, minWeight, epsilon, GlassFresnel.EXACT);
     }
 
     public static RenderSettings of(Config config) {
@@ -29,15 +27,6 @@ public record RenderSettings(Shading shading, int recursionMax, double minWeight
     }
 
     public RenderSettings withGlassFresnel(GlassFresnel fresnel) {
-        return new RenderSettings(shading, recursionMax, minWeight, epsilon, fresnel, simd);
-    }
-
-    /** Whether this JVM has the Vector API the SIMD path needs (started with add-modules jdk.incubator.vector). */
-    public static boolean simdAvailable() {
-        return CameraPackets.available();
-    }
-
-    public RenderSettings withSimd(boolean packets) {
-        return new RenderSettings(shading, recursionMax, minWeight, epsilon, glassFresnel, packets);
+        return new RenderSettings(shading, recursionMax, minWeight, epsilon, fresnel);
     }
 }

@@ -39,21 +39,13 @@ public final class Tracer implements AutoCloseable {
     private volatile int divider;
 
     public Tracer(int threads) {
-        this(threads, true);
-    }
-
-    /**
-     * A tracer whose workers trace camera rows in stages (as every public tracer does) or, for tests
-     * that compare the two, ray by ray.
-     */
-    Tracer(int threads, boolean rowsInStages) {
         if (threads < 1) {
             throw new IllegalArgumentException("threads must be >= 1, got " + threads);
         }
         this.threads = threads;
         this.workers = new TracerWorker[threads];
         for (int i = 0; i < threads; i++) {
-            workers[i] = new TracerWorker(rowsInStages);
+            workers[i] = new TracerWorker();
         }
         AtomicInteger count = new AtomicInteger();
         ThreadFactory factory = r -> {

@@ -2,7 +2,7 @@ package glint.study;
 
 /**
  * Ray-sphere tests in single precision, the study subjects beside Glint's double-precision
- * {@link glint.render.Intersect}: every operation rounds to float, as on a GPU or in a float
+ * {@link glint.geometry.Intersect}: every operation rounds to float, as on a GPU or in a float
  * tracer. Directions need not be unit length (a float direction seldom is). A miss is
  * {@link Float#POSITIVE_INFINITY}; t is in units of the given direction.
  */

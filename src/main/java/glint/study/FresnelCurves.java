@@ -1,6 +1,6 @@
 package glint.study;
 
-import glint.render.Optics;
+import glint.shading.Optics;
 
 /**
  * Reflectance of a smooth dielectric (ior 1.5 in air) against the angle of incidence, from outside

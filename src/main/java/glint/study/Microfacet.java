@@ -1,6 +1,6 @@
 package glint.study;
 
-import glint.render.Optics;
+import glint.shading.Optics;
 
 /**
  * The specular lobe of the cook-torrance model, Glint's and the textbook's, as functions of the

@@ -1,6 +1,6 @@
 package glint.study;
 
-import glint.render.Intersect;
+import glint.geometry.Intersect;
 
 /**
  * What each pixel of a {@link ShadowScene} (at the origin, in double precision, where rounding is

@@ -1,6 +1,6 @@
 package glint.study;
 
-import glint.render.Intersect;
+import glint.geometry.Intersect;
 
 /** The four ray-sphere tests the stability study compares: two formulas, two precisions. */
 public enum SphereMethod {

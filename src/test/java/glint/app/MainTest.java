@@ -177,26 +177,6 @@ class MainTest {
         assertEquals("glint: --bench: expected a number of frames >= 1, got 0", r.firstErrLine());
     }
 
-    @Test
-    void simdWithoutAHeadlessMode() throws IOException {
-        Path scene = write("tiny.yaml", TINY_SCENE);
-        Result r = run("--config", config.toString(), "--scene", scene.toString(), "--simd");
-        assertEquals(2, r.status());
-        assertEquals("glint: --simd: only with --output or --bench (the window takes the plain path)", r.firstErrLine());
-    }
-
-    @Test
-    void simdRendersTheSameFileAsThePlainPath() throws IOException {
-        // the test JVM loads the Vector API module (surefire's argLine)
-        Path scene = write("tiny.yaml", TINY_SCENE);
-        Path plain = dir.resolve("plain.pfm"), simd = dir.resolve("simd.pfm");
-        assertEquals(0, run("--config", config.toString(), "--scene", scene.toString(), "--width", "64", "--height", "48",
-                "--output", plain.toString()).status());
-        assertEquals(0, run("--config", config.toString(), "--scene", scene.toString(), "--width", "64", "--height", "48",
-                "--output", simd.toString(), "--simd").status());
-        assertEquals(-1L, Files.mismatch(plain, simd));
-    }
-
     // ---------------------------------------------------------------- bad files: status 2
 
     @Test

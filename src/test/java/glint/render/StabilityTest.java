@@ -1,5 +1,6 @@
 package glint.render;
 
+import glint.geometry.Intersect;
 import static org.junit.jupiter.api.Assertions.assertEquals;
 import static org.junit.jupiter.api.Assertions.assertTrue;
 

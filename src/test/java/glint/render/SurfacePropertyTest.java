@@ -1,5 +1,7 @@
 package glint.render;
 
+import glint.shading.Optics;
+import glint.geometry.Intersect;
 import static org.junit.jupiter.api.Assertions.assertEquals;
 import static org.junit.jupiter.api.Assertions.assertTrue;
 

@@ -3,7 +3,7 @@ package glint.study;
 import static org.junit.jupiter.api.Assertions.assertEquals;
 import static org.junit.jupiter.api.Assertions.assertTrue;
 
-import glint.render.Optics;
+import glint.shading.Optics;
 import org.junit.jupiter.api.Test;
 
 /** Schlick against the exact Fresnel equations for ior 1.5, outside and inside the glass. */

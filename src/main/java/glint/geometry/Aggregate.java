@@ -1,0 +1,34 @@
+package glint.geometry;
+
+/**
+ * What every ray asks of the scene's geometry: its nearest hit, and how much light passes along
+ * it up to a distance (a shadow ray). Rays are unit length, world space; {@code skip} is the
+ * number of a primitive the ray leaves on its outer side (it cannot meet it there again), or
+ * {@link Hit#NONE}. Implementations ({@link FlatList}, {@link Bvh}) are immutable and shared by
+ * the render threads; each thread passes its own traversal {@code stack}, made by
+ * {@link #newStack}. {@link AggregatePolicy} picks one for a scene.
+ */
+public interface Aggregate {
+
+    /**
+     * The nearest hit with t in (0, tMax) into {@code hit} (its t, primitive, kind and index; the
+     * surface is left to {@link Primitives#describe}); false, leaving {@code hit} alone, if none.
+     */
+    boolean nearest(double ox, double oy, double oz, double dx, double dy, double dz, double tMax, int skip,
+                    Hit hit, int[] stack);
+
+    /**
+     * The fraction of light that passes along the ray from o before tMax: the product of
+     * {@code pass[p]} over the primitives p it meets there (each counted once), so 1 when it meets
+     * none; stops at the first that passes nothing. With every {@code pass} 0 this is the
+     * any-hit query of a shadow ray.
+     */
+    double transmittance(double ox, double oy, double oz, double dx, double dy, double dz, double tMax, int skip,
+                         double[] pass, int[] stack);
+
+    /** The primitives it searches. */
+    Primitives primitives();
+
+    /** A traversal stack for one thread's queries, sized for this aggregate. */
+    int[] newStack();
+}

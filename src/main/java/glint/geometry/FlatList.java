@@ -1,0 +1,66 @@
+package glint.geometry;
+
+/** Every ray tests every primitive: the aggregate of small scenes, and the brute force the others are checked against. */
+public final class FlatList implements Aggregate {
+
+    private final Primitives primitives;
+
+    public FlatList(Primitives primitives) {
+        this.primitives = primitives;
+    }
+
+    @Override
+    public boolean nearest(double ox, double oy, double oz, double dx, double dy, double dz, double tMax, int skip,
+                           Hit hit, int[] stack) {
+        Primitives p = primitives;
+        double nearest = tMax;
+        int found = Hit.NONE;
+        for (int k = 0, kinds = p.kindCount(); k < kinds; k++) {
+            Shape shape = p.kind(k);
+            for (int i = 0, n = shape.count(), first = p.number(k, 0); i < n; i++) {
+                if (first + i == skip) {
+                    continue;
+                }
+                double t = shape.intersect(i, ox, oy, oz, dx, dy, dz, nearest);
+                if (t < nearest) {
+                    nearest = t;
+                    found = first + i;
+                }
+            }
+        }
+        if (found == Hit.NONE) {
+            return false;
+        }
+        p.record(hit, found, nearest);
+        return true;
+    }
+
+    @Override
+    public double transmittance(double ox, double oy, double oz, double dx, double dy, double dz, double tMax,
+                                int skip, double[] pass, int[] stack) {
+        Primitives p = primitives;
+        double passed = 1;
+        for (int k = 0, kinds = p.kindCount(); k < kinds; k++) {
+            Shape shape = p.kind(k);
+            for (int i = 0, n = shape.count(), first = p.number(k, 0); i < n; i++) {
+                if (first + i != skip && shape.intersect(i, ox, oy, oz, dx, dy, dz, tMax) < tMax) {
+                    passed *= pass[first + i];
+                    if (passed == 0) {
+                        return 0;
+                    }
+                }
+            }
+        }
+        return passed;
+    }
+
+    @Override
+    public Primitives primitives() {
+        return primitives;
+    }
+
+    @Override
+    public int[] newStack() {
+        return new int[0];
+    }
+}

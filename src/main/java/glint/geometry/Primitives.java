@@ -1,0 +1,108 @@
+package glint.geometry;
+
+import java.util.List;
+
+/**
+ * A scene's primitives: its shape kinds, and one number per primitive across them (kind 0's
+ * primitives first, then kind 1's, ...). A hit names a primitive by that number and, plainly, by
+ * its kind and its index within the kind.
+ */
+public final class Primitives {
+
+    private final Shape[] kinds;
+    /** The number of kind k's first primitive; firstOfKind[kinds.length] = count. */
+    private final int[] firstOfKind;
+    private final int[] kindOf;
+    private final int[] indexOf;
+    private final int count;
+
+    public Primitives(List<Shape> kinds) {
+        this.kinds = kinds.toArray(new Shape[0]);
+        this.firstOfKind = new int[this.kinds.length + 1];
+        int total = 0;
+        for (int k = 0; k < this.kinds.length; k++) {
+            firstOfKind[k] = total;
+            total += this.kinds[k].count();
+        }
+        firstOfKind[this.kinds.length] = total;
+        this.count = total;
+        this.kindOf = new int[total];
+        this.indexOf = new int[total];
+        for (int k = 0, p = 0; k < this.kinds.length; k++) {
+            for (int i = 0; i < this.kinds[k].count(); i++, p++) {
+                kindOf[p] = k;
+                indexOf[p] = i;
+            }
+        }
+    }
+
+    /** How many primitives, of every kind. */
+    public int count() {
+        return count;
+    }
+
+    public int kindCount() {
+        return kinds.length;
+    }
+
+    public Shape kind(int k) {
+        return kinds[k];
+    }
+
+    /** The kinds, in numbering order. */
+    public List<Shape> kinds() {
+        return List.of(kinds);
+    }
+
+    /** The number of kind k's primitive i. */
+    public int number(int k, int i) {
+        return firstOfKind[k] + i;
+    }
+
+    public int kindOf(int primitive) {
+        return kindOf[primitive];
+    }
+
+    public int indexOf(int primitive) {
+        return indexOf[primitive];
+    }
+
+    public boolean bounded(int primitive) {
+        return kinds[kindOf[primitive]].bounded(indexOf[primitive]);
+    }
+
+    public void bounds(int primitive, double[] box, int at) {
+        kinds[kindOf[primitive]].bounds(indexOf[primitive], box, at);
+    }
+
+    /** {@link Shape#intersect} of a primitive given by its number. */
+    public double intersect(int primitive, double ox, double oy, double oz, double dx, double dy, double dz,
+                            double tMax) {
+        return kinds[kindOf[primitive]].intersect(indexOf[primitive], ox, oy, oz, dx, dy, dz, tMax);
+    }
+
+    /** Whether a ray leaving the primitive into its inside can meet it again ({@link Shape#closed}). */
+    public boolean closed(int primitive) {
+        return kinds[kindOf[primitive]].closed();
+    }
+
+    /**
+     * Records a hit of primitive {@code primitive} at distance t in {@code hit}: its number, kind
+     * and index. The surface is filled in later, by {@link #describe}, for the hit that is kept.
+     */
+    public void record(Hit hit, int primitive, double t) {
+        hit.t = t;
+        hit.primitive = primitive;
+        hit.kind = kindOf[primitive];
+        hit.index = indexOf[primitive];
+    }
+
+    /**
+     * Fills the surface of the hit the unit ray from o along d found: the point moved onto the
+     * surface and the outward normal.
+     */
+    public void describe(Hit hit, double ox, double oy, double oz, double dx, double dy, double dz) {
+        double t = hit.t;
+        kinds[hit.kind].surfaceAt(hit.index, ox + t * dx, oy + t * dy, oz + t * dz, hit);
+    }
+}

@@ -1,0 +1,41 @@
+package glint.geometry;
+
+/**
+ * One kind of primitive: all of a scene's primitives of that kind, in flat arrays (world space).
+ * A kind is three things: its bounds, its intersection and its surface at a hit. The aggregates
+ * ({@link Aggregate}) and the shading see primitives only through this interface, so adding a kind
+ * means a class like {@link Spheres} and a line in the scene compiler (docs/architecture.md).
+ */
+public interface Shape {
+
+    /** How many primitives of this kind. */
+    int count();
+
+    /**
+     * Whether primitive i has finite bounds. Unbounded ones (planes) are tested by every ray; the
+     * bounded ones go into the hierarchy.
+     */
+    boolean bounded(int i);
+
+    /** Writes the box around primitive i (min x, y, z, max x, y, z) to {@code box} from {@code at}. */
+    void bounds(int i, double[] box, int at);
+
+    /**
+     * Nearest t in (0, tMax) where the unit ray from o along d meets primitive i, or
+     * {@link Intersect#MISS}.
+     */
+    double intersect(int i, double ox, double oy, double oz, double dx, double dy, double dz, double tMax);
+
+    /**
+     * Fills the hit's surface for primitive i near point p (p from the ray, carrying t's rounding):
+     * the point moved onto the surface, and the unit outward normal there.
+     */
+    void surfaceAt(int i, double px, double py, double pz, Hit hit);
+
+    /**
+     * Whether a ray leaving primitive i into its inside (against the outward normal) can meet it
+     * again: true for a closed shape (a sphere's far side), false for a flat one. A ray leaving on
+     * the outer side never meets the primitive it leaves (every kind is convex or flat).
+     */
+    boolean closed();
+}

@@ -1,0 +1,64 @@
+package glint.geometry;
+
+/** Spheres: centre x, y, z and radius, 4 doubles each. */
+public final class Spheres implements Shape {
+
+    private final double[] data;
+    private final int count;
+
+    /** @param data centre x, y, z and radius of each sphere (copied) */
+    public Spheres(double[] data) {
+        if (data.length % 4 != 0) {
+            throw new IllegalArgumentException("4 numbers a sphere, got " + data.length);
+        }
+        this.data = data.clone();
+        this.count = data.length / 4;
+    }
+
+    @Override
+    public int count() {
+        return count;
+    }
+
+    @Override
+    public boolean bounded(int i) {
+        return true;
+    }
+
+    /** The box, a rounding step wider on each side than centre -+ radius, so that it holds the whole sphere. */
+    @Override
+    public void bounds(int i, double[] box, int at) {
+        int k = 4 * i;
+        double r = data[k + 3];
+        for (int axis = 0; axis < 3; axis++) {
+            box[at + axis] = Math.nextDown(data[k + axis] - r);
+            box[at + 3 + axis] = Math.nextUp(data[k + axis] + r);
+        }
+    }
+
+    @Override
+    public double intersect(int i, double ox, double oy, double oz, double dx, double dy, double dz, double tMax) {
+        int k = 4 * i;
+        return Intersect.sphereBefore(data[k], data[k + 1], data[k + 2], data[k + 3], ox, oy, oz, dx, dy, dz, tMax);
+    }
+
+    /** The point of the sphere nearest p (removes the error t carries into p) and the outward normal. */
+    @Override
+    public void surfaceAt(int i, double px, double py, double pz, Hit hit) {
+        int k = 4 * i;
+        double cx = data[k], cy = data[k + 1], cz = data[k + 2], radius = data[k + 3];
+        double ex = px - cx, ey = py - cy, ez = pz - cz;
+        double inv = 1 / Math.sqrt(ex * ex + ey * ey + ez * ez);
+        hit.nx = ex * inv;
+        hit.ny = ey * inv;
+        hit.nz = ez * inv;
+        hit.px = cx + radius * hit.nx;
+        hit.py = cy + radius * hit.ny;
+        hit.pz = cz + radius * hit.nz;
+    }
+
+    @Override
+    public boolean closed() {
+        return true;
+    }
+}

@@ -1,0 +1,141 @@
+package glint.render;
+
+import glint.config.Shading;
+import glint.geometry.Aggregate;
+import glint.geometry.Hit;
+import glint.geometry.Intersect;
+import glint.geometry.Primitives;
+import glint.shading.LightSample;
+import glint.shading.Lights;
+import glint.shading.Materials;
+import glint.shading.Optics;
+import glint.shading.Rgb;
+import glint.shading.Surface;
+
+/**
+ * One render thread's Whitted tracer: follows a ray to its nearest hit, describes the surface
+ * there and lets the shading model send radiance back, tracing reflected and refracted rays by
+ * recursion. Every ray asks the scene's one {@link Aggregate}. Its scratch values live in one
+ * {@link PathVertex} a level, so nothing is allocated per ray. All vectors are world space,
+ * directions unit length.
+ */
+final class Integrator {
+
+    private static final ShadingModel COOK_TORRANCE = new CookTorrance();
+    private static final ShadingModel PHONG = new Phong();
+
+    private RenderScene scene;
+    private Aggregate aggregate;
+    private Primitives primitives;
+    private ShadingModel model;
+    private int[] stack = new int[0];
+    private PathVertex[] vertices = new PathVertex[0];
+
+    // the scene's settings, read once per scene rather than through the record on every ray
+    double epsilon, minWeight;
+    boolean exactFresnel;
+    Materials materials;
+    Lights lights;
+
+    /** Rays traced so far: camera, reflected, refracted and shadow rays. */
+    long rays;
+
+    /** Makes this integrator trace rays of {@code renderScene}; cheap when it already does. */
+    void prepare(RenderScene renderScene) {
+        if (renderScene == scene) {
+            return;
+        }
+        scene = renderScene;
+        aggregate = renderScene.aggregate;
+        primitives = aggregate.primitives();
+        RenderSettings settings = renderScene.settings;
+        model = settings.shading() == Shading.PHONG ? PHONG : COOK_TORRANCE;
+        epsilon = settings.epsilon();
+        minWeight = settings.minWeight();
+        exactFresnel = settings.glassFresnel() == RenderSettings.GlassFresnel.EXACT;
+        materials = renderScene.materials;
+        lights = renderScene.lights;
+        int[] fresh = aggregate.newStack();
+        if (stack.length < fresh.length) {
+            stack = fresh;
+        }
+        if (vertices.length <= settings.recursionMax()) {
+            PathVertex[] grown = new PathVertex[settings.recursionMax() + 1];
+            for (int i = 0; i < grown.length; i++) {
+                grown[i] = i < vertices.length ? vertices[i] : new PathVertex();
+            }
+            vertices = grown;
+        }
+    }
+
+    RenderScene scene() {
+        return scene;
+    }
+
+    /**
+     * The radiance arriving at o along -d: {@code hitsLeft} (>= 1) surface hits this path may
+     * still shade, {@code weight} its throughput so far, {@code skip} the primitive the ray leaves
+     * on its outer side ({@link Hit#NONE} for none). The result is the scratch value of level
+     * {@code hitsLeft}: read it before tracing another ray from the same level.
+     */
+    Rgb trace(double ox, double oy, double oz, double dx, double dy, double dz, int hitsLeft, double weight,
+              int skip) {
+        PathVertex v = vertices[hitsLeft];
+        rays++;
+        if (!aggregate.nearest(ox, oy, oz, dx, dy, dz, Intersect.MISS, skip, v.hit, stack)) {
+            v.radiance.set(scene.backgroundR, scene.backgroundG, scene.backgroundB);
+            return v.radiance;
+        }
+        Hit hit = v.hit;
+        primitives.describe(hit, ox, oy, oz, dx, dy, dz);
+        v.surface.set(hit, ox, oy, oz, dx, dy, dz, epsilon, scene.materialOf[hit.primitive],
+                primitives.closed(hit.primitive));
+        model.shade(this, v, dx, dy, dz, hitsLeft, weight);
+        return v.radiance;
+    }
+
+    /**
+     * The fraction of the sampled light that reaches surface s: a shadow ray from s towards the
+     * light, up to it, through the scene's shadow pass of each primitive it meets.
+     */
+    double transmittance(Surface s, LightSample light) {
+        rays++;
+        return aggregate.transmittance(s.nearX(), s.nearY(), s.nearZ(), light.dirX, light.dirY, light.dirZ,
+                light.distance, s.skipNear, scene.shadowPass, stack);
+    }
+
+    /**
+     * Traces the ray reflected at s (mirror direction of d about the facing normal) and returns its
+     * radiance.
+     */
+    Rgb traceReflected(Surface s, double dx, double dy, double dz, int hitsLeft, double weight) {
+        double k = 2 * s.cosIncident;
+        return trace(s.nearX(), s.nearY(), s.nearZ(), dx + k * s.nx, dy + k * s.ny, dz + k * s.nz, hitsLeft - 1,
+                weight, s.skipNear);
+    }
+
+    /**
+     * Traces the ray refracted through s (eta = n_incident / n_transmitted), its origin offset to
+     * the far side; past the critical angle, the reflected one. Returns its radiance.
+     */
+    Rgb traceRefracted(PathVertex v, double dx, double dy, double dz, double eta, int hitsLeft, double weight) {
+        Surface s = v.surface;
+        double[] t = v.refracted;
+        if (Optics.refract(dx, dy, dz, s.nx, s.ny, s.nz, s.cosIncident, eta, t)) {
+            return trace(s.farX(), s.farY(), s.farZ(), t[0], t[1], t[2], hitsLeft - 1, weight, s.skipFar);
+        }
+        return traceReflected(s, dx, dy, dz, hitsLeft, weight);
+    }
+
+    double ambientR() {
+        return scene.ambientR;
+    }
+
+    double ambientG() {
+        return scene.ambientG;
+    }
+
+    double ambientB() {
+        return scene.ambientB;
+    }
+}

@@ -1,0 +1,79 @@
+package glint.shading;
+
+import glint.scene.Material;
+import glint.scene.MaterialType;
+import java.util.List;
+
+/** A scene's materials in flat arrays, indexed by material number. */
+public final class Materials {
+
+    /** Smallest GGX alpha used for a highlight; keeps D(h) finite as roughness goes to 0. */
+    static final double MIN_ALPHA = 1e-4;
+
+    private final MaterialType[] type;
+    private final double[] color; // 3 per material, linear RGB
+    private final double[] kd, ks, kt, shininess, ior;
+    private final double[] alpha; // GGX alpha = roughness^2; 0: no highlight
+
+    public Materials(List<Material> materials) {
+        int n = materials.size();
+        type = new MaterialType[n];
+        color = new double[3 * n];
+        kd = new double[n];
+        ks = new double[n];
+        kt = new double[n];
+        shininess = new double[n];
+        ior = new double[n];
+        alpha = new double[n];
+        for (int i = 0; i < n; i++) {
+            Material m = materials.get(i);
+            type[i] = m.type();
+            color[3 * i] = m.color().x();
+            color[3 * i + 1] = m.color().y();
+            color[3 * i + 2] = m.color().z();
+            kd[i] = m.kd();
+            ks[i] = m.ks();
+            kt[i] = m.kt();
+            shininess[i] = m.shininess();
+            ior[i] = m.ior();
+            alpha[i] = m.roughness() > 0 ? Math.max(m.roughness() * m.roughness(), MIN_ALPHA) : 0;
+        }
+    }
+
+    public int count() {
+        return type.length;
+    }
+
+    public MaterialType type(int m) {
+        return type[m];
+    }
+
+    /** Albedo (matte), reflectance at normal incidence (metal) or transmission tint (glass): channel 0, 1, 2. */
+    public double color(int m, int channel) {
+        return color[3 * m + channel];
+    }
+
+    public double kd(int m) {
+        return kd[m];
+    }
+
+    public double ks(int m) {
+        return ks[m];
+    }
+
+    public double kt(int m) {
+        return kt[m];
+    }
+
+    public double shininess(int m) {
+        return shininess[m];
+    }
+
+    public double ior(int m) {
+        return ior[m];
+    }
+
+    public double alpha(int m) {
+        return alpha[m];
+    }
+}

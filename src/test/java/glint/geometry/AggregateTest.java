@@ -1,0 +1,153 @@
+package glint.geometry;
+
+import static org.junit.jupiter.api.Assertions.assertEquals;
+import static org.junit.jupiter.api.Assertions.assertTrue;
+
+import java.util.ArrayList;
+import java.util.List;
+import java.util.SplittableRandom;
+import org.junit.jupiter.api.Test;
+
+/** The hierarchy finds what testing every primitive finds: the same nearest hit, the same transmittance. */
+class AggregateTest {
+
+    private static final long SEED = 20_261_201L;
+
+    @Test
+    void theHierarchyAgreesWithBruteForceOnRandomScenes() {
+        SplittableRandom random = new SplittableRandom(SEED);
+        for (int scene = 0; scene < 40; scene++) {
+            Primitives primitives = randomScene(random, 1 + random.nextInt(300), random.nextInt(3));
+            compare(primitives, new Bvh(primitives, 1 + random.nextInt(6)), new FlatList(primitives), random, 2_000);
+        }
+    }
+
+    @Test
+    void aHitNamesItsKindAndIndex() {
+        Primitives primitives = new Primitives(List.of(new Spheres(new double[] {0, 0, 5, 1, 0, 0, 10, 1}),
+                new Planes(new double[] {0, 0, -1, -20})));
+        Hit hit = new Hit();
+        FlatList list = new FlatList(primitives);
+        assertTrue(list.nearest(0, 0, 0, 0, 0, 1, Intersect.MISS, Hit.NONE, hit, list.newStack()));
+        assertEquals(0, hit.kind);
+        assertEquals(0, hit.index);
+        assertEquals(4, hit.t, 1e-15);
+        assertTrue(list.nearest(0, 0, 0, 0, 0, 1, Intersect.MISS, 0, hit, list.newStack()), "skipping sphere 0");
+        assertEquals(1, hit.index);
+        assertEquals(9, hit.t, 1e-15);
+        assertTrue(list.nearest(0, 0, 12, 0, 0, 1, Intersect.MISS, Hit.NONE, hit, list.newStack()));
+        assertEquals(1, hit.kind, "the plane z = 20");
+        assertEquals(0, hit.index);
+        assertEquals(2, hit.primitive);
+        primitives.describe(hit, 0, 0, 12, 0, 0, 1);
+        assertEquals(20, hit.pz, 0);
+        assertEquals(-1, hit.nz, 0);
+    }
+
+    @Test
+    void spheresAtExponentiallySpreadPlacesBuildADeepTreeItsStackHolds() {
+        // 600 spheres at x = -2^i (i mod 60): a tree far deeper than a balanced one
+        double[] spheres = new double[4 * 600];
+        for (int i = 0; i < 600; i++) {
+            spheres[4 * i] = -Math.pow(2, i % 60);
+            spheres[4 * i + 3] = 0.25 + (i / 60) * 0.01;
+        }
+        Primitives primitives = new Primitives(List.of(new Spheres(spheres)));
+        Bvh bvh = new Bvh(primitives, 4);
+        assertEquals(bvh.depth() + 1, bvh.newStack().length);
+        SplittableRandom random = new SplittableRandom(SEED + 1);
+        FlatList list = new FlatList(primitives);
+        Hit a = new Hit(), b = new Hit();
+        for (int i = 0; i < 2_000; i++) {
+            int target = random.nextInt(600);
+            double ox = spheres[4 * target] + random.nextDouble(-2, 2), oy = 3, oz = random.nextDouble(-2, 2);
+            double[] d = unit(random.nextDouble(-1, 1), -1, random.nextDouble(-0.2, 0.2));
+            boolean foundA = bvh.nearest(ox, oy, oz, d[0], d[1], d[2], Intersect.MISS, Hit.NONE, a, bvh.newStack());
+            boolean foundB = list.nearest(ox, oy, oz, d[0], d[1], d[2], Intersect.MISS, Hit.NONE, b, list.newStack());
+            assertEquals(foundB, foundA);
+            if (foundB) {
+                assertEquals(b.t, a.t, 0);
+                assertEquals(b.primitive, a.primitive);
+            }
+        }
+    }
+
+    @Test
+    void aShapeKindAddedOutsideTheRendererIsSearchedLikeTheOthers() {
+        SplittableRandom random = new SplittableRandom(SEED + 2);
+        for (int scene = 0; scene < 10; scene++) {
+            List<Shape> kinds = new ArrayList<>(randomScene(random, 50, 1).kinds());
+            double[] discs = new double[7 * 40];
+            for (int i = 0; i < 40; i++) {
+                double[] n = unit(random.nextDouble(-1, 1), random.nextDouble(-1, 1), random.nextDouble(-1, 1));
+                double[] c = {random.nextDouble(-10, 10), random.nextDouble(-10, 10), random.nextDouble(-10, 10)};
+                System.arraycopy(c, 0, discs, 7 * i, 3);
+                System.arraycopy(n, 0, discs, 7 * i + 3, 3);
+                discs[7 * i + 6] = random.nextDouble(0.1, 2);
+            }
+            kinds.add(new Discs(discs));
+            Primitives primitives = new Primitives(kinds);
+            compare(primitives, new Bvh(primitives, 4), new FlatList(primitives), random, 2_000);
+        }
+    }
+
+    /** Rays from random points and from random surface points, skipping the primitive left, in both aggregates. */
+    private static void compare(Primitives primitives, Aggregate tested, Aggregate truth, SplittableRandom random,
+                                int rays) {
+        Hit a = new Hit(), b = new Hit();
+        int[] stackA = tested.newStack(), stackB = truth.newStack();
+        double[] pass = new double[primitives.count()];
+        for (int p = 0; p < pass.length; p++) {
+            pass[p] = random.nextInt(3) == 0 ? 0 : random.nextDouble(0.1, 1);
+        }
+        for (int i = 0; i < rays; i++) {
+            double ox = random.nextDouble(-15, 15), oy = random.nextDouble(-15, 15), oz = random.nextDouble(-15, 15);
+            double[] d = unit(random.nextDouble(-1, 1), random.nextDouble(-1, 1), random.nextDouble(-1, 1));
+            if (i % 7 == 0) {
+                d[random.nextInt(3)] = 0; // axis-parallel slabs
+                d = unit(d[0], d[1], d[2]);
+            }
+            double tMax = i % 3 == 0 ? random.nextDouble(0.5, 30) : Intersect.MISS;
+            int skip = i % 2 == 0 || primitives.count() == 0 ? Hit.NONE : random.nextInt(primitives.count());
+            boolean foundA = tested.nearest(ox, oy, oz, d[0], d[1], d[2], tMax, skip, a, stackA);
+            boolean foundB = truth.nearest(ox, oy, oz, d[0], d[1], d[2], tMax, skip, b, stackB);
+            assertEquals(foundB, foundA, "ray " + i);
+            if (foundB) {
+                assertEquals(b.t, a.t, 0, "ray " + i);
+                assertEquals(b.primitive, a.primitive, "ray " + i);
+                assertEquals(b.kind, a.kind);
+                assertEquals(b.index, a.index);
+            }
+            double passA = tested.transmittance(ox, oy, oz, d[0], d[1], d[2], tMax, skip, pass, stackA);
+            double passB = truth.transmittance(ox, oy, oz, d[0], d[1], d[2], tMax, skip, pass, stackB);
+            assertEquals(passB, passA, 1e-15 * passB, "ray " + i);
+            assertTrue(passA >= 0 && passA <= 1);
+        }
+    }
+
+    /** Random spheres (radius 0.05 to 3, a few of them huge) and planes. */
+    private static Primitives randomScene(SplittableRandom random, int spheres, int planes) {
+        double[] s = new double[4 * spheres];
+        for (int i = 0; i < spheres; i++) {
+            s[4 * i] = random.nextDouble(-12, 12);
+            s[4 * i + 1] = random.nextDouble(-12, 12);
+            s[4 * i + 2] = random.nextDouble(-12, 12);
+            s[4 * i + 3] = random.nextInt(50) == 0 ? random.nextDouble(5, 40) : random.nextDouble(0.05, 3);
+        }
+        double[] p = new double[4 * planes];
+        for (int i = 0; i < planes; i++) {
+            double[] n = unit(random.nextDouble(-1, 1), random.nextDouble(-1, 1), random.nextDouble(-1, 1));
+            System.arraycopy(n, 0, p, 4 * i, 3);
+            p[4 * i + 3] = random.nextDouble(-20, 20);
+        }
+        return new Primitives(List.of(new Spheres(s), new Planes(p)));
+    }
+
+    private static double[] unit(double x, double y, double z) {
+        double length = Math.sqrt(x * x + y * y + z * z);
+        if (length == 0) {
+            return new double[] {0, 0, 1};
+        }
+        return new double[] {x / length, y / length, z / length};
+    }
+}
