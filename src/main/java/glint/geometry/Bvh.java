@@ -25,7 +25,7 @@ public final class Bvh implements Aggregate {
     /** The unbounded primitives' numbers. */
     private final int[] unbounded;
 
-    Bvh(Primitives primitives, int leafSize) {
+    public Bvh(Primitives primitives, int leafSize) {
         this.primitives = primitives;
         BvhBuilder builder = new BvhBuilder(primitives, leafSize);
         this.nodeBox = builder.nodeBox();
