@@ -4,7 +4,9 @@ package glint.geometry;
  * What every ray asks of the scene's geometry: its nearest hit, and how much light passes along
  * it up to a distance (a shadow ray). Rays are unit length, world space; {@code skip} is the
  * number of a primitive the ray leaves on its outer side (it cannot meet it there again), or
- * {@link Hit#NONE}. Implementations ({@link FlatList}, {@link Bvh}) are immutable and shared by
+ * {@link Hit#NONE}; {@code inside} the closed primitive the ray has just entered or goes on
+ * inside of (refracted into it, reflected inside it), or {@link Hit#NONE}: a hint an aggregate may
+ * use ({@link EmptyInteriors}). Implementations ({@link FlatList}, {@link Bvh}, and the filter {@link EmptyInteriors}) are immutable and shared by
  * the render threads; each thread passes its own traversal {@code stack}, made by
  * {@link #newStack}. {@link AggregatePolicy} picks one for a scene.
  */
@@ -15,7 +17,7 @@ public interface Aggregate {
      * surface is left to {@link Primitives#describe}); false, leaving {@code hit} alone, if none.
      */
     boolean nearest(double ox, double oy, double oz, double dx, double dy, double dz, double tMax, int skip,
-                    Hit hit, int[] stack);
+                    int inside, Hit hit, TraversalStack stack);
 
     /**
      * The fraction of light that passes along the ray from o before tMax: the product of
@@ -24,11 +26,11 @@ public interface Aggregate {
      * any-hit query of a shadow ray.
      */
     double transmittance(double ox, double oy, double oz, double dx, double dy, double dz, double tMax, int skip,
-                         double[] pass, int[] stack);
+                         double[] pass, TraversalStack stack);
 
     /** The primitives it searches. */
     Primitives primitives();
 
     /** A traversal stack for one thread's queries, sized for this aggregate. */
-    int[] newStack();
+    TraversalStack newStack();
 }

@@ -25,6 +25,7 @@ public final class AggregatePolicy {
         for (int p = 0; p < primitives.count(); p++) {
             bounded += primitives.bounded(p) ? 1 : 0;
         }
-        return bounded > BVH_MIN_BOUNDED ? new Bvh(primitives, LEAF_SIZE) : new FlatList(primitives);
+        Aggregate searched = bounded > BVH_MIN_BOUNDED ? new Bvh(primitives, LEAF_SIZE) : new FlatList(primitives);
+        return EmptyInteriors.around(searched);
     }
 }

@@ -22,6 +22,9 @@ public final class Bvh implements Aggregate {
     private final int depth;
     /** The bounded primitives' numbers, each leaf's a contiguous run. */
     private final int[] leafPrimitives;
+    /** Per slot of {@link #leafPrimitives}: the primitive's kind and its index within the kind. */
+    private final Shape[] leafKind;
+    private final int[] leafIndex;
     /** The unbounded primitives' numbers. */
     private final int[] unbounded;
 
@@ -34,9 +37,15 @@ public final class Bvh implements Aggregate {
         this.depth = builder.depth();
         this.leafPrimitives = builder.order();
         this.unbounded = builder.unbounded();
+        this.leafKind = new Shape[leafPrimitives.length];
+        this.leafIndex = new int[leafPrimitives.length];
+        for (int slot = 0; slot < leafPrimitives.length; slot++) {
+            leafKind[slot] = primitives.kind(primitives.kindOf(leafPrimitives[slot]));
+            leafIndex[slot] = primitives.indexOf(leafPrimitives[slot]);
+        }
     }
 
-    /** Levels below the root on the longest path to a leaf. */
+    /** Levels below the root on the longest path to a leaf: a traversal keeps at most this many nodes waiting. */
     public int depth() {
         return depth;
     }
@@ -51,13 +60,13 @@ public final class Bvh implements Aggregate {
     }
 
     @Override
-    public int[] newStack() {
-        return new int[depth + 1];
+    public TraversalStack newStack() {
+        return new TraversalStack(depth + 1);
     }
 
     @Override
     public boolean nearest(double ox, double oy, double oz, double dx, double dy, double dz, double tMax, int skip,
-                           Hit hit, int[] stack) {
+                           int inside, Hit hit, TraversalStack stack) {
         Primitives p = primitives;
         double nearest = tMax;
         int found = Hit.NONE;
@@ -71,36 +80,44 @@ public final class Bvh implements Aggregate {
             }
         }
         double ix = 1 / nonZero(dx), iy = 1 / nonZero(dy), iz = 1 / nonZero(dz);
+        int[] waiting = stack.nodes;
+        double[] entries = stack.entries;
         int top = 0;
         int node = nodeCount > 0 && boxEntry(0, ox, oy, oz, ix, iy, iz) < nearest ? 0 : -1;
         while (node >= 0) {
             int count = links[2 * node + 1];
             if (count > 0) {
                 for (int slot = links[2 * node], end = slot + count; slot < end; slot++) {
-                    int q = leafPrimitives[slot];
-                    if (q != skip) {
-                        double t = p.intersect(q, ox, oy, oz, dx, dy, dz, nearest);
+                    if (leafPrimitives[slot] != skip) {
+                        double t = leafKind[slot].intersect(leafIndex[slot], ox, oy, oz, dx, dy, dz, nearest);
                         if (t < nearest) {
                             nearest = t;
-                            found = q;
+                            found = leafPrimitives[slot];
                         }
                     }
                 }
-                node = top > 0 ? stack[--top] : -1;
-                continue;
-            }
-            int left = links[2 * node];
-            double enterLeft = boxEntry(left, ox, oy, oz, ix, iy, iz);
-            double enterRight = boxEntry(left + 1, ox, oy, oz, ix, iy, iz);
-            int near = enterLeft <= enterRight ? left : left + 1;
-            double enterNear = Math.min(enterLeft, enterRight), enterFar = Math.max(enterLeft, enterRight);
-            if (enterNear >= nearest) {
-                node = top > 0 ? stack[--top] : -1;
+                node = -1;
             } else {
-                if (enterFar < nearest) {
-                    stack[top++] = 2 * left + 1 - near; // the other child
+                int left = links[2 * node];
+                double enterLeft = boxEntry(left, ox, oy, oz, ix, iy, iz);
+                double enterRight = boxEntry(left + 1, ox, oy, oz, ix, iy, iz);
+                boolean leftFirst = enterLeft <= enterRight;
+                double enterNear = leftFirst ? enterLeft : enterRight, enterFar = leftFirst ? enterRight : enterLeft;
+                node = -1;
+                if (enterNear < nearest) {
+                    if (enterFar < nearest) {
+                        waiting[top] = leftFirst ? left + 1 : left;
+                        entries[top++] = enterFar;
+                    }
+                    node = leftFirst ? left : left + 1;
                 }
-                node = near;
+            }
+            // the nearest waiting node the ray may still meet something in before the nearest hit
+            while (node < 0 && top > 0) {
+                top--;
+                if (entries[top] < nearest) {
+                    node = waiting[top];
+                }
             }
         }
         if (found == Hit.NONE) {
@@ -112,7 +129,7 @@ public final class Bvh implements Aggregate {
 
     @Override
     public double transmittance(double ox, double oy, double oz, double dx, double dy, double dz, double tMax,
-                                int skip, double[] pass, int[] stack) {
+                                int skip, double[] pass, TraversalStack stack) {
         Primitives p = primitives;
         double passed = 1;
         for (int u : unbounded) {
@@ -124,19 +141,20 @@ public final class Bvh implements Aggregate {
             }
         }
         double ix = 1 / nonZero(dx), iy = 1 / nonZero(dy), iz = 1 / nonZero(dz);
+        int[] waiting = stack.nodes;
         int top = 0;
         int node = nodeCount > 0 ? 0 : -1;
         while (node >= 0) {
             if (boxEntry(node, ox, oy, oz, ix, iy, iz) < tMax) {
                 int count = links[2 * node + 1];
                 if (count == 0) {
-                    stack[top++] = links[2 * node] + 1;
+                    waiting[top++] = links[2 * node] + 1;
                     node = links[2 * node];
                     continue;
                 }
                 for (int slot = links[2 * node], end = slot + count; slot < end; slot++) {
                     int q = leafPrimitives[slot];
-                    if (q != skip && p.intersect(q, ox, oy, oz, dx, dy, dz, tMax) < tMax) {
+                    if (q != skip && leafKind[slot].intersect(leafIndex[slot], ox, oy, oz, dx, dy, dz, tMax) < tMax) {
                         passed *= pass[q];
                         if (passed == 0) {
                             return 0;
@@ -144,7 +162,7 @@ public final class Bvh implements Aggregate {
                     }
                 }
             }
-            node = top > 0 ? stack[--top] : -1;
+            node = top > 0 ? waiting[--top] : -1;
         }
         return passed;
     }

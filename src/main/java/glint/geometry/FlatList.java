@@ -11,7 +11,7 @@ public final class FlatList implements Aggregate {
 
     @Override
     public boolean nearest(double ox, double oy, double oz, double dx, double dy, double dz, double tMax, int skip,
-                           Hit hit, int[] stack) {
+                           int inside, Hit hit, TraversalStack stack) {
         Primitives p = primitives;
         double nearest = tMax;
         int found = Hit.NONE;
@@ -37,7 +37,7 @@ public final class FlatList implements Aggregate {
 
     @Override
     public double transmittance(double ox, double oy, double oz, double dx, double dy, double dz, double tMax,
-                                int skip, double[] pass, int[] stack) {
+                                int skip, double[] pass, TraversalStack stack) {
         Primitives p = primitives;
         double passed = 1;
         for (int k = 0, kinds = p.kindCount(); k < kinds; k++) {
@@ -60,7 +60,7 @@ public final class FlatList implements Aggregate {
     }
 
     @Override
-    public int[] newStack() {
-        return new int[0];
+    public TraversalStack newStack() {
+        return new TraversalStack(0);
     }
 }

@@ -34,6 +34,19 @@ public final class Planes implements Shape {
     }
 
     @Override
+    public void boundingBall(int i, double[] ball) {
+        throw new UnsupportedOperationException("a plane has no inside");
+    }
+
+    /** Whether the plane passes nearer the centre than the radius. */
+    @Override
+    public boolean reachesInto(int i, double cx, double cy, double cz, double r) {
+        int k = 4 * i;
+        double distance = Math.abs(data[k] * cx + data[k + 1] * cy + data[k + 2] * cz - data[k + 3]);
+        return distance < r;
+    }
+
+    @Override
     public double intersect(int i, double ox, double oy, double oz, double dx, double dy, double dz, double tMax) {
         int k = 4 * i;
         return Intersect.planeBefore(data[k], data[k + 1], data[k + 2], data[k + 3], ox, oy, oz, dx, dy, dz, tMax);

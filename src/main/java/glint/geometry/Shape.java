@@ -33,6 +33,19 @@ public interface Shape {
     void surfaceAt(int i, double px, double py, double pz, Hit hit);
 
     /**
+     * Writes a ball that holds primitive i (centre x, y, z, radius) to {@code ball}; asked only of
+     * closed kinds, whose inside it must hold.
+     */
+    void boundingBall(int i, double[] ball);
+
+    /**
+     * Whether primitive i may have points strictly inside the ball of centre c and radius r: true
+     * whenever it has (a kind may answer true when unsure); touching the ball's surface, to
+     * rounding, does not count.
+     */
+    boolean reachesInto(int i, double cx, double cy, double cz, double r);
+
+    /**
      * Whether a ray leaving primitive i into its inside (against the outward normal) can meet it
      * again: true for a closed shape (a sphere's far side), false for a flat one. A ray leaving on
      * the outer side never meets the primitive it leaves (every kind is convex or flat).

@@ -37,6 +37,20 @@ public final class Spheres implements Shape {
     }
 
     @Override
+    public void boundingBall(int i, double[] ball) {
+        System.arraycopy(data, 4 * i, ball, 0, 4);
+    }
+
+    /** Whether the two balls overlap. */
+    @Override
+    public boolean reachesInto(int i, double cx, double cy, double cz, double r) {
+        int k = 4 * i;
+        double ex = data[k] - cx, ey = data[k + 1] - cy, ez = data[k + 2] - cz;
+        double distance = Math.sqrt(ex * ex + ey * ey + ez * ez);
+        return distance < data[k + 3] + r;
+    }
+
+    @Override
     public double intersect(int i, double ox, double oy, double oz, double dx, double dy, double dz, double tMax) {
         int k = 4 * i;
         return Intersect.sphereBefore(data[k], data[k + 1], data[k + 2], data[k + 3], ox, oy, oz, dx, dy, dz, tMax);

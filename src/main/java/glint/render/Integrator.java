@@ -5,6 +5,7 @@ import glint.geometry.Aggregate;
 import glint.geometry.Hit;
 import glint.geometry.Intersect;
 import glint.geometry.Primitives;
+import glint.geometry.TraversalStack;
 import glint.shading.LightSample;
 import glint.shading.Lights;
 import glint.shading.Materials;
@@ -28,7 +29,7 @@ final class Integrator {
     private Aggregate aggregate;
     private Primitives primitives;
     private ShadingModel model;
-    private int[] stack = new int[0];
+    private TraversalStack stack;
     private PathVertex[] vertices = new PathVertex[0];
 
     // the scene's settings, read once per scene rather than through the record on every ray
@@ -55,10 +56,7 @@ final class Integrator {
         exactFresnel = settings.glassFresnel() == RenderSettings.GlassFresnel.EXACT;
         materials = renderScene.materials;
         lights = renderScene.lights;
-        int[] fresh = aggregate.newStack();
-        if (stack.length < fresh.length) {
-            stack = fresh;
-        }
+        stack = aggregate.newStack();
         if (vertices.length <= settings.recursionMax()) {
             PathVertex[] grown = new PathVertex[settings.recursionMax() + 1];
             for (int i = 0; i < grown.length; i++) {
@@ -75,14 +73,15 @@ final class Integrator {
     /**
      * The radiance arriving at o along -d: {@code hitsLeft} (>= 1) surface hits this path may
      * still shade, {@code weight} its throughput so far, {@code skip} the primitive the ray leaves
-     * on its outer side ({@link Hit#NONE} for none). The result is the scratch value of level
+     * on its outer side and {@code inside} the closed primitive it travels inside of ({@link Hit#NONE}
+     * for none). The result is the scratch value of level
      * {@code hitsLeft}: read it before tracing another ray from the same level.
      */
     Rgb trace(double ox, double oy, double oz, double dx, double dy, double dz, int hitsLeft, double weight,
-              int skip) {
+              int skip, int inside) {
         PathVertex v = vertices[hitsLeft];
         rays++;
-        if (!aggregate.nearest(ox, oy, oz, dx, dy, dz, Intersect.MISS, skip, v.hit, stack)) {
+        if (!aggregate.nearest(ox, oy, oz, dx, dy, dz, Intersect.MISS, skip, inside, v.hit, stack)) {
             v.radiance.set(scene.backgroundR, scene.backgroundG, scene.backgroundB);
             return v.radiance;
         }
@@ -111,7 +110,7 @@ final class Integrator {
     Rgb traceReflected(Surface s, double dx, double dy, double dz, int hitsLeft, double weight) {
         double k = 2 * s.cosIncident;
         return trace(s.nearX(), s.nearY(), s.nearZ(), dx + k * s.nx, dy + k * s.ny, dz + k * s.nz, hitsLeft - 1,
-                weight, s.skipNear);
+                weight, s.skipNear, s.insideNear);
     }
 
     /**
@@ -122,7 +121,8 @@ final class Integrator {
         Surface s = v.surface;
         double[] t = v.refracted;
         if (Optics.refract(dx, dy, dz, s.nx, s.ny, s.nz, s.cosIncident, eta, t)) {
-            return trace(s.farX(), s.farY(), s.farZ(), t[0], t[1], t[2], hitsLeft - 1, weight, s.skipFar);
+            return trace(s.farX(), s.farY(), s.farZ(), t[0], t[1], t[2], hitsLeft - 1, weight, s.skipFar,
+                    s.insideFar);
         }
         return traceReflected(s, dx, dy, dz, hitsLeft, weight);
     }

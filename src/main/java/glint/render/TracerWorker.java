@@ -42,7 +42,7 @@ final class TracerWorker {
         CameraRows r = rows;
         for (int ray = 0; ray < rays; ray++) {
             Rgb radiance = integrator.trace(camera.eyeX, camera.eyeY, camera.eyeZ, r.dirX[ray], r.dirY[ray],
-                    r.dirZ[ray], hits, 1, Hit.NONE);
+                    r.dirZ[ray], hits, 1, Hit.NONE, Hit.NONE);
             r.radianceR[ray] = radiance.r;
             r.radianceG[ray] = radiance.g;
             r.radianceB[ray] = radiance.b;

@@ -24,6 +24,11 @@ public final class Surface {
     public int material;
     /** The primitive rays leaving on the incoming side skip, and rays leaving through it ({@link Hit#NONE}: none). */
     public int skipNear, skipFar;
+    /**
+     * The closed primitive rays leaving on the incoming side travel inside of (reflected inside a
+     * sphere), and rays leaving through it (refracted into one); {@link Hit#NONE} for none.
+     */
+    public int insideNear, insideFar;
 
     /**
      * Fills this surface from a described hit of the unit ray from o along d: {@code epsilon}
@@ -49,6 +54,8 @@ public final class Surface {
         this.material = material;
         skipNear = !closed || front ? hit.primitive : Hit.NONE;
         skipFar = !closed || !front ? hit.primitive : Hit.NONE;
+        insideNear = closed && !front ? hit.primitive : Hit.NONE;
+        insideFar = closed && front ? hit.primitive : Hit.NONE;
     }
 
     /** The origin of rays leaving on the incoming side: p + offset n. */

@@ -28,14 +28,14 @@ class AggregateTest {
                 new Planes(new double[] {0, 0, -1, -20})));
         Hit hit = new Hit();
         FlatList list = new FlatList(primitives);
-        assertTrue(list.nearest(0, 0, 0, 0, 0, 1, Intersect.MISS, Hit.NONE, hit, list.newStack()));
+        assertTrue(list.nearest(0, 0, 0, 0, 0, 1, Intersect.MISS, Hit.NONE, Hit.NONE, hit, list.newStack()));
         assertEquals(0, hit.kind);
         assertEquals(0, hit.index);
         assertEquals(4, hit.t, 1e-15);
-        assertTrue(list.nearest(0, 0, 0, 0, 0, 1, Intersect.MISS, 0, hit, list.newStack()), "skipping sphere 0");
+        assertTrue(list.nearest(0, 0, 0, 0, 0, 1, Intersect.MISS, 0, Hit.NONE, hit, list.newStack()), "skipping sphere 0");
         assertEquals(1, hit.index);
         assertEquals(9, hit.t, 1e-15);
-        assertTrue(list.nearest(0, 0, 12, 0, 0, 1, Intersect.MISS, Hit.NONE, hit, list.newStack()));
+        assertTrue(list.nearest(0, 0, 12, 0, 0, 1, Intersect.MISS, Hit.NONE, Hit.NONE, hit, list.newStack()));
         assertEquals(1, hit.kind, "the plane z = 20");
         assertEquals(0, hit.index);
         assertEquals(2, hit.primitive);
@@ -54,7 +54,7 @@ class AggregateTest {
         }
         Primitives primitives = new Primitives(List.of(new Spheres(spheres)));
         Bvh bvh = new Bvh(primitives, 4);
-        assertEquals(bvh.depth() + 1, bvh.newStack().length);
+        assertEquals(bvh.depth() + 1, bvh.newStack().nodes.length);
         SplittableRandom random = new SplittableRandom(SEED + 1);
         FlatList list = new FlatList(primitives);
         Hit a = new Hit(), b = new Hit();
@@ -62,8 +62,8 @@ class AggregateTest {
             int target = random.nextInt(600);
             double ox = spheres[4 * target] + random.nextDouble(-2, 2), oy = 3, oz = random.nextDouble(-2, 2);
             double[] d = unit(random.nextDouble(-1, 1), -1, random.nextDouble(-0.2, 0.2));
-            boolean foundA = bvh.nearest(ox, oy, oz, d[0], d[1], d[2], Intersect.MISS, Hit.NONE, a, bvh.newStack());
-            boolean foundB = list.nearest(ox, oy, oz, d[0], d[1], d[2], Intersect.MISS, Hit.NONE, b, list.newStack());
+            boolean foundA = bvh.nearest(ox, oy, oz, d[0], d[1], d[2], Intersect.MISS, Hit.NONE, Hit.NONE, a, bvh.newStack());
+            boolean foundB = list.nearest(ox, oy, oz, d[0], d[1], d[2], Intersect.MISS, Hit.NONE, Hit.NONE, b, list.newStack());
             assertEquals(foundB, foundA);
             if (foundB) {
                 assertEquals(b.t, a.t, 0);
@@ -91,11 +91,69 @@ class AggregateTest {
         }
     }
 
+    @Test
+    void aSphereIsEmptyExactlyWhenNoOtherPrimitiveReachesIntoIt() {
+        SplittableRandom random = new SplittableRandom(SEED + 3);
+        for (int scene = 0; scene < 30; scene++) {
+            Primitives primitives = randomScene(random, 2 + random.nextInt(200), random.nextInt(3));
+            boolean[] empty = EmptyInteriors.findEmpty(primitives);
+            Shape spheres = primitives.kind(0), planes = primitives.kind(1);
+            double[] ball = new double[4];
+            for (int a = 0; a < spheres.count(); a++) {
+                spheres.boundingBall(a, ball);
+                boolean reached = false;
+                for (int b = 0; b < spheres.count(); b++) {
+                    reached |= b != a && spheres.reachesInto(b, ball[0], ball[1], ball[2], ball[3]);
+                }
+                for (int b = 0; b < planes.count(); b++) {
+                    reached |= planes.reachesInto(b, ball[0], ball[1], ball[2], ball[3]);
+                }
+                assertEquals(!reached, empty[primitives.number(0, a)], "scene " + scene + ", sphere " + a);
+            }
+            for (int b = 0; b < planes.count(); b++) {
+                assertEquals(false, empty[primitives.number(1, b)], "a plane has no inside");
+            }
+        }
+    }
+
+    @Test
+    void aRayInsideAnEmptySphereMeetsWhatTheFullSearchMeets() {
+        SplittableRandom random = new SplittableRandom(SEED + 4);
+        Hit a = new Hit(), b = new Hit();
+        int checked = 0;
+        for (int scene = 0; scene < 30; scene++) {
+            Primitives primitives = randomScene(random, 2 + random.nextInt(100), 1 + random.nextInt(2));
+            Aggregate filtered = EmptyInteriors.around(new FlatList(primitives));
+            FlatList truth = new FlatList(primitives);
+            TraversalStack stack = truth.newStack();
+            Shape spheres = primitives.kind(0);
+            double[] ball = new double[4];
+            for (int i = 0; i < 200; i++) {
+                int sphere = random.nextInt(spheres.count());
+                int inside = primitives.number(0, sphere);
+                if (!(filtered instanceof EmptyInteriors e) || !e.isEmpty(inside)) {
+                    continue;
+                }
+                spheres.boundingBall(sphere, ball);
+                double[] from = unit(random.nextDouble(-1, 1), random.nextDouble(-1, 1), random.nextDouble(-1, 1));
+                double depth = ball[3] * random.nextDouble(0, 0.999);
+                double ox = ball[0] + depth * from[0], oy = ball[1] + depth * from[1], oz = ball[2] + depth * from[2];
+                double[] d = unit(random.nextDouble(-1, 1), random.nextDouble(-1, 1), random.nextDouble(-1, 1));
+                assertTrue(filtered.nearest(ox, oy, oz, d[0], d[1], d[2], Intersect.MISS, Hit.NONE, inside, a, stack));
+                assertTrue(truth.nearest(ox, oy, oz, d[0], d[1], d[2], Intersect.MISS, Hit.NONE, Hit.NONE, b, stack));
+                assertEquals(b.primitive, a.primitive);
+                assertEquals(b.t, a.t, 0);
+                checked++;
+            }
+        }
+        assertTrue(checked > 1_000, "rays inside empty spheres: " + checked);
+    }
+
     /** Rays from random points and from random surface points, skipping the primitive left, in both aggregates. */
     private static void compare(Primitives primitives, Aggregate tested, Aggregate truth, SplittableRandom random,
                                 int rays) {
         Hit a = new Hit(), b = new Hit();
-        int[] stackA = tested.newStack(), stackB = truth.newStack();
+        TraversalStack stackA = tested.newStack(), stackB = truth.newStack();
         double[] pass = new double[primitives.count()];
         for (int p = 0; p < pass.length; p++) {
             pass[p] = random.nextInt(3) == 0 ? 0 : random.nextDouble(0.1, 1);
@@ -109,8 +167,8 @@ class AggregateTest {
             }
             double tMax = i % 3 == 0 ? random.nextDouble(0.5, 30) : Intersect.MISS;
             int skip = i % 2 == 0 || primitives.count() == 0 ? Hit.NONE : random.nextInt(primitives.count());
-            boolean foundA = tested.nearest(ox, oy, oz, d[0], d[1], d[2], tMax, skip, a, stackA);
-            boolean foundB = truth.nearest(ox, oy, oz, d[0], d[1], d[2], tMax, skip, b, stackB);
+            boolean foundA = tested.nearest(ox, oy, oz, d[0], d[1], d[2], tMax, skip, Hit.NONE, a, stackA);
+            boolean foundB = truth.nearest(ox, oy, oz, d[0], d[1], d[2], tMax, skip, Hit.NONE, b, stackB);
             assertEquals(foundB, foundA, "ray " + i);
             if (foundB) {
                 assertEquals(b.t, a.t, 0, "ray " + i);

@@ -34,6 +34,19 @@ final class Discs implements Shape {
     }
 
     @Override
+    public void boundingBall(int i, double[] ball) {
+        throw new UnsupportedOperationException("a disc has no inside");
+    }
+
+    /** Whether the disc's own bounding ball overlaps the ball: true when unsure. */
+    @Override
+    public boolean reachesInto(int i, double cx, double cy, double cz, double r) {
+        int k = 7 * i;
+        double ex = data[k] - cx, ey = data[k + 1] - cy, ez = data[k + 2] - cz;
+        return Math.sqrt(ex * ex + ey * ey + ez * ez) < data[k + 6] + r;
+    }
+
+    @Override
     public double intersect(int i, double ox, double oy, double oz, double dx, double dy, double dz, double tMax) {
         int k = 7 * i;
         double nx = data[k + 3], ny = data[k + 4], nz = data[k + 5];

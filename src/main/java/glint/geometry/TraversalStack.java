@@ -1,0 +1,17 @@
+package glint.geometry;
+
+/**
+ * Scratch value of one thread's hierarchy traversals: the nodes waiting to be visited and the
+ * distances at which the ray enters their boxes. Made by {@link Aggregate#newStack}, sized for
+ * the aggregate's tree.
+ */
+public final class TraversalStack {
+
+    final int[] nodes;
+    final double[] entries;
+
+    TraversalStack(int capacity) {
+        nodes = new int[capacity];
+        entries = new double[capacity];
+    }
+}
