@@ -92,7 +92,7 @@ class MainTest {
     void optionWithAValueOfTheWrongKind() {
         Result r = run("--width", "wide");
         assertEquals(2, r.status());
-        assertEquals("glint: Invalid value for option '--width': 'wide' is not an int", r.firstErrLine());
+        assertEquals("glint: Invalid value for option '--width': 'wide' is not a whole number written with the digits 0-9", r.firstErrLine());
         r.assertNoStackTrace();
     }
 
@@ -174,7 +174,7 @@ class MainTest {
         Path scene = write("tiny.yaml", TINY_SCENE);
         Result r = run("--config", config.toString(), "--scene", scene.toString(), "--bench", "0");
         assertEquals(2, r.status());
-        assertEquals("glint: --bench: expected a number of frames >= 1, got 0", r.firstErrLine());
+        assertEquals("glint: --bench: expected a number of frames from 1 to 100000, got 0", r.firstErrLine());
     }
 
     @Test
@@ -259,7 +259,10 @@ class MainTest {
         Path cfg = write("glint.properties", "scene=scenes/none.yaml\n");
         Result r = run("--config", cfg.toString(), "--output", dir.resolve("out.png").toString());
         assertEquals(2, r.status());
-        assertEquals(dir.resolve("scenes/none.yaml") + ": no such file", r.firstErrLine());
+        // the error is at the config's scene line and says which folder the path was resolved against
+        assertEquals(cfg + ":1:1: scene: no such file '" + dir.resolve("scenes/none.yaml") + "' (scene is resolved "
+                + "against the config file's folder, " + dir.toAbsolutePath() + "); set scene in the config or use "
+                + "--scene FILE", r.firstErrLine());
     }
 
     // ---------------------------------------------------------------- success: status 0

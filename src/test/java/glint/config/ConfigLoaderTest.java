@@ -298,7 +298,8 @@ class ConfigLoaderTest {
 
     @Test
     void malformedUnicodeEscape() {
-        assertError("config.properties: not a properties file: Malformed \\uxxxx encoding.", "name=\\uZZZZ\n");
+        // the escape starts in column 6 of "name=\uZZZZ"
+        assertError("config.properties:1:6: a \\u escape needs four hex digits, as in \\u00e9", "name=\\uZZZZ\n");
     }
 
     // ---------------------------------------------------------------- files
