@@ -116,9 +116,13 @@ final class Headless {
      * and every render thread's row buffers, which grow with the tile width times the samples.
      */
     static void checkMemory(Config config, long bytesPerPixel, Runtime runtime) throws InputException {
+        checkMemory(config, bytesPerPixel, runtime.maxMemory() - (runtime.totalMemory() - runtime.freeMemory()));
+    }
+
+    /** The same check against {@code freeHeap} bytes. */
+    static void checkMemory(Config config, long bytesPerPixel, long freeHeap) throws InputException {
         long need = memoryNeeded(config, bytesPerPixel);
-        long used = runtime.totalMemory() - runtime.freeMemory();
-        long available = runtime.maxMemory() - used - HEAP_RESERVE;
+        long available = freeHeap - HEAP_RESERVE;
         if (need > available) {
             throw new InputException("glint", 0, 0, String.format(Locale.ROOT,
                     "%dx%d at %d %s with %d %s needs about %s of memory; the Java heap has %s free "

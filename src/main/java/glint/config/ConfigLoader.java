@@ -41,8 +41,8 @@ public final class ConfigLoader {
     }
 
     private static String read(Path path) throws InputException {
-        byte[] bytes = TextFiles.readBounded(path, MAX_CONFIG_BYTES, size -> "the file is " + TextFiles.size(size)
-                + "; the largest config file accepted is " + TextFiles.size(MAX_CONFIG_BYTES));
+        byte[] bytes = TextFiles.readBounded(path, MAX_CONFIG_BYTES, size -> TextFiles.fileIsLargerThan(size, MAX_CONFIG_BYTES,
+                "the largest config file accepted"));
         return TextFiles.utf8(path.toString(), bytes);
     }
 

@@ -163,6 +163,16 @@ public final class TextFiles {
         return null;
     }
 
+    /**
+     * "the file is S; the largest ... is M": both sizes as {@link #size}, or in bytes when they would
+     * read the same.
+     */
+    public static String fileIsLargerThan(long size, long max, String largest) {
+        boolean same = size(size).equals(size(max));
+        return "the file is " + (same ? String.format(Locale.ROOT, "%,d bytes", size) : size(size)) + "; " + largest
+                + " is " + (same ? String.format(Locale.ROOT, "%,d bytes", max) : size(max));
+    }
+
     /** A size for messages: "512 bytes", "12.5 KB", "8.0 MB" (1 KB = 1024 bytes). */
     public static String size(long bytes) {
         if (bytes < 1024) {

@@ -86,8 +86,8 @@ public final class SceneLoader {
     }
 
     private static String tooBigProblem(long size, SceneLimits limits) {
-        return "the file is " + TextFiles.size(size) + "; the largest scene accepted is "
-                + TextFiles.size(limits.maxFileBytes()) + " (config key max_scene_bytes)";
+        return TextFiles.fileIsLargerThan(size, limits.maxFileBytes(), "the largest scene accepted")
+                + " (config key max_scene_bytes)";
     }
 
     /** The file's text: a regular file (never a FIFO or device), within the size limit, UTF-8. */
