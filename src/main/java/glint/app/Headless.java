@@ -47,14 +47,14 @@ final class Headless {
         FrameBuffer frame = new FrameBuffer(config.displayWidth(), config.displayHeight());
         Path temp = temporary(output); // made now: an unwritable folder is reported before rendering
         long start = System.nanoTime();
-        try (Interrupts interrupts = Interrupts.install();
+        try (Interrupts interrupts = Interrupts.install(err, "glint: interrupted; no image written");
              Tracer tracer = new Tracer(config.effectiveThreads())) {
             interrupts.watch(tracer, temp);
             try (Progress progress = Progress.start(tracer, err)) {
                 tracer.render(compiled, frame, config.samples(), 0, config.screenDivider());
             } catch (CancellationException e) {
                 Files.deleteIfExists(temp);
-                err.println("glint: interrupted; no image written");
+                interrupts.report("glint: interrupted; no image written");
                 return INTERRUPTED;
             }
             long elapsed = System.nanoTime() - start;
@@ -154,7 +154,7 @@ final class Headless {
         FrameBuffer frame = new FrameBuffer(config.displayWidth(), config.displayHeight());
         double[] millis = new double[frames];
         long raysPerFrame;
-        try (Interrupts interrupts = Interrupts.install();
+        try (Interrupts interrupts = Interrupts.install(err, "glint: interrupted");
              Tracer tracer = new Tracer(config.effectiveThreads())) {
             interrupts.watch(tracer, null);
             for (int i = 0; i < frames; i++) {
@@ -163,7 +163,7 @@ final class Headless {
                 try {
                     tracer.render(compiled, frame, config.samples(), 0, config.screenDivider());
                 } catch (CancellationException e) {
-                    err.println("glint: interrupted after " + i + (i == 1 ? " frame" : " frames"));
+                    interrupts.report("glint: interrupted after " + i + (i == 1 ? " frame" : " frames"));
                     return INTERRUPTED;
                 }
                 millis[i] = (System.nanoTime() - start) / 1e6;

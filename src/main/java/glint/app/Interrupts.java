@@ -22,12 +22,23 @@ final class Interrupts implements AutoCloseable {
     private volatile Tracer tracer;
     private volatile Path temp;
     private volatile boolean stopping;
+    private final java.util.concurrent.atomic.AtomicBoolean reported = new java.util.concurrent.atomic.AtomicBoolean();
+    private final java.io.PrintWriter err;
+    private final String message;
 
-    private Interrupts() {
+    private Interrupts(java.io.PrintWriter err, String message) {
+        this.err = err;
+        this.message = message;
     }
 
-    static Interrupts install() {
-        Interrupts interrupts = new Interrupts();
+    /**
+     * Installs the hook for one run.
+     *
+     * @param message what to print when stopped, by the main thread or, if it does not stop in
+     *                time (a tile that takes long), by the hook
+     */
+    static Interrupts install(java.io.PrintWriter err, String message) {
+        Interrupts interrupts = new Interrupts(err, message);
         Runtime.getRuntime().addShutdownHook(interrupts.hook);
         return interrupts;
     }
@@ -59,6 +70,15 @@ final class Interrupts implements AutoCloseable {
             Thread.currentThread().interrupt();
         }
         deleteTemp();
+        report(message);
+    }
+
+    /** Prints the line saying the run was stopped, once, whoever comes first. */
+    void report(String line) {
+        if (reported.compareAndSet(false, true)) {
+            err.println(line);
+            err.flush();
+        }
     }
 
     private void deleteTemp() {
