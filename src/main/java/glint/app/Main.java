@@ -91,16 +91,24 @@ public final class Main implements Callable<Integer> {
                 err.println(InputException.printable("glint: " + failure.getMessage()));
                 return FAILURE;
             }
+            if (e.getCause() instanceof OutOfMemoryError) { // in a render thread
+                err.println(outOfMemory(e.getCause()));
+                return FAILURE;
+            }
             err.println(InputException.printable("glint: " + e));
             return FAILURE;
         });
         try {
             return cli.execute(args);
         } catch (OutOfMemoryError e) {
-            err.println("glint: out of memory (" + e.getMessage() + "); render fewer pixels, samples or threads, "
-                    + "or start Java with a larger -Xmx");
+            err.println(outOfMemory(e));
             return FAILURE;
         }
+    }
+
+    private static String outOfMemory(Throwable e) {
+        return "glint: out of memory (" + e.getMessage() + "); render fewer pixels, samples or threads, "
+                + "or start Java with a larger -Xmx";
     }
 
     /** An option's whole number: ASCII digits only (Java's own parser takes other scripts' digits too). */

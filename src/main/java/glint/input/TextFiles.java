@@ -106,7 +106,8 @@ public final class TextFiles {
         String text = out.toString(); // all of it, or the part before the first byte that is not UTF-8
         for (int i = 0; i < text.length(); i++) {
             char c = text.charAt(i);
-            if ((c < 0x20 && c != '\t' && c != '\n' && c != '\r') || c == 0x7f || c == 0xfffe || c == 0xffff) {
+            if ((c < 0x20 && c != '\t' && c != '\n' && c != '\r') || (c >= 0x7f && c < 0xa0 && c != 0x85)
+                    || c == 0xfffe || c == 0xffff) {
                 int[] at = position(text, i);
                 throw new InputException(name, at[0], at[1], String.format(Locale.ROOT,
                         "not a text file: control character U+%04X (only tab and line breaks are allowed)", (int) c));

@@ -55,4 +55,13 @@ class TextFilesTest {
         assertEquals("'" + "k".repeat(60) + "...'", InputException.quote("k".repeat(8 << 20)));
         assertEquals("'short'", InputException.quote("short"));
     }
+
+    @Test
+    void controlCharactersOfBothRangesAreRefusedWhereTheyStand() {
+        // U+009B is a one-character terminal escape (CSI); U+0085 (next line) is allowed by YAML
+        InputException e = assertThrows(InputException.class, () -> TextFiles.utf8("f", "a: 1\n# \u0085 \u009b\n"
+                .getBytes(java.nio.charset.StandardCharsets.UTF_8)));
+        assertEquals("f:2:5: not a text file: control character U+009B (only tab and line breaks are allowed)",
+                e.getMessage());
+    }
 }
