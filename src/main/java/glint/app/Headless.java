@@ -64,7 +64,7 @@ final class Headless {
                 throw new WriteFailure(output, e);
             }
             out.printf(Locale.ROOT, "wrote %s (%dx%d, %d spp, %d threads, %s, depth %d) in %.1f ms%n",
-                    output, frame.width(), frame.height(), config.samples(), config.effectiveThreads(),
+                    InputException.printable(output.toString()), frame.width(), frame.height(), config.samples(), config.effectiveThreads(),
                     config.shading().key(), config.recursionMax(), elapsed / 1e6);
             return Main.OK;
         } finally {
