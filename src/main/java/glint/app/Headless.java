@@ -3,6 +3,7 @@ package glint.app;
 import glint.config.Config;
 import glint.image.ImageWriter;
 import glint.input.InputException;
+import glint.input.TextFiles;
 import glint.render.FrameBuffer;
 import glint.render.RenderScene;
 import glint.render.RenderSettings;
@@ -15,49 +16,156 @@ import java.nio.file.Files;
 import java.nio.file.Path;
 import java.util.Arrays;
 import java.util.Locale;
+import java.util.concurrent.CancellationException;
 
 /** The modes without a window: render one still to a file, or time frames (--bench). */
 final class Headless {
 
+    /** Exit status of a run stopped by Ctrl-C (128 + SIGINT), as shells report it. */
+    static final int INTERRUPTED = 130;
+    /** The most frames --bench renders. */
+    static final int MAX_BENCH_FRAMES = 100_000;
+    /**
+     * Heap bytes a render thread needs per camera ray of a tile's row (its row buffers: a direction
+     * and a radiance, 7 doubles, with room to spare), and per pixel of a still: the float frame (12)
+     * and the 8-bit image written from it (4).
+     */
+    static final long ROW_BYTES_PER_RAY = 64;
+    static final long STILL_BYTES_PER_PIXEL = 16;
+    /** Heap kept free for everything else: the scene, the JVM's own needs. */
+    static final long HEAP_RESERVE = 32L << 20;
+
     private Headless() {
     }
 
-    static int renderStill(Path scenePath, Config config, Path output, PrintWriter out)
+    static int renderStill(Path scenePath, Config config, Path output, PrintWriter out, PrintWriter err)
             throws InputException, IOException {
+        checkOutput(output);
+        Scene scene = SceneLoader.load(scenePath, config.limits().scene());
+        RenderScene compiled = RenderScene.compile(scene, RenderSettings.of(config));
+        checkMemory(config, STILL_BYTES_PER_PIXEL, Runtime.getRuntime());
+        FrameBuffer frame = new FrameBuffer(config.displayWidth(), config.displayHeight());
+        Path temp = temporary(output); // made now: an unwritable folder is reported before rendering
+        long start = System.nanoTime();
+        try (Interrupts interrupts = Interrupts.install(err, "glint: interrupted; no image written");
+             Tracer tracer = new Tracer(config.effectiveThreads())) {
+            interrupts.watch(tracer, temp);
+            try (Progress progress = Progress.start(tracer, err)) {
+                tracer.render(compiled, frame, config.samples(), 0, config.screenDivider());
+            } catch (CancellationException e) {
+                Files.deleteIfExists(temp);
+                interrupts.report("glint: interrupted; no image written");
+                return INTERRUPTED;
+            }
+            long elapsed = System.nanoTime() - start;
+            try {
+                ImageWriter.write(frame, output, temp);
+            } catch (IOException e) {
+                throw new WriteFailure(output, e);
+            }
+            out.printf(Locale.ROOT, "wrote %s (%dx%d, %d spp, %d threads, %s, depth %d) in %.1f ms%n",
+                    InputException.printable(output.toString()), frame.width(), frame.height(), config.samples(), config.effectiveThreads(),
+                    config.shading().key(), config.recursionMax(), elapsed / 1e6);
+            return Main.OK;
+        } finally {
+            Files.deleteIfExists(temp);
+        }
+    }
+
+    /** Why an image could not be written, in one line: {@code cannot write out.png: No space left on device}. */
+    static final class WriteFailure extends IOException {
+        WriteFailure(Path output, IOException cause) {
+            super("cannot write " + output + ": " + reason(cause), cause);
+        }
+
+        private static String reason(IOException e) {
+            return TextFiles.unreadable("", e).problem().replaceFirst("^cannot read: ", "");
+        }
+    }
+
+    /** The output path is refused before any work if it cannot be an image file. */
+    private static void checkOutput(Path output) throws InputException {
         if (!ImageWriter.isSupported(output)) {
             throw new InputException("glint", 0, 0,
-                    "--output: expected a file ending in .png or .pfm, got '" + output + "'");
+                    "--output: expected a file ending in .png or .pfm, got " + "'" + output + "'");
+        }
+        if (Files.isDirectory(output)) {
+            throw new InputException("glint", 0, 0, "--output: " + "'" + output + "'"
+                    + " is a folder; expected an image file name such as out.png");
+        }
+        if (Files.exists(output) && !Files.isRegularFile(output)) {
+            throw new InputException("glint", 0, 0, "--output: " + "'" + output + "'"
+                    + " is not a regular file (a pipe or device); expected an image file name such as out.png");
         }
         Path folder = output.toAbsolutePath().getParent();
         if (folder != null && !Files.isDirectory(folder)) {
-            throw new InputException("glint", 0, 0, "--output: no such folder '" + folder + "'");
+            throw new InputException("glint", 0, 0, "--output: no such folder " + "'" + folder + "'");
         }
-        Scene scene = SceneLoader.load(scenePath, config.limits().scene());
-        RenderScene compiled = RenderScene.compile(scene, RenderSettings.of(config));
-        FrameBuffer frame = new FrameBuffer(config.displayWidth(), config.displayHeight());
-        long start = System.nanoTime();
-        try (Tracer tracer = new Tracer(config.effectiveThreads())) {
-            tracer.render(compiled, frame, config.samples(), 0, config.screenDivider());
-        }
-        long elapsed = System.nanoTime() - start;
-        ImageWriter.write(frame, output);
-        out.printf(Locale.ROOT, "wrote %s (%dx%d, %d spp, %d threads, %s, depth %d) in %.1f ms%n",
-                output, frame.width(), frame.height(), config.samples(), config.effectiveThreads(),
-                config.shading().key(), config.recursionMax(), elapsed / 1e6);
-        return Main.OK;
     }
 
-    static int bench(Path scenePath, Config config, int frames, PrintWriter out) throws InputException {
+    private static Path temporary(Path output) throws IOException {
+        try {
+            return ImageWriter.temporaryBeside(output);
+        } catch (IOException e) {
+            throw new WriteFailure(output, e);
+        }
+    }
+
+    /**
+     * Refuses, before any memory is taken, a render the Java heap cannot hold: the frame (and image)
+     * and every render thread's row buffers, which grow with the tile width times the samples.
+     */
+    static void checkMemory(Config config, long bytesPerPixel, Runtime runtime) throws InputException {
+        checkMemory(config, bytesPerPixel, runtime.maxMemory() - (runtime.totalMemory() - runtime.freeMemory()));
+    }
+
+    /** The same check against {@code freeHeap} bytes. */
+    static void checkMemory(Config config, long bytesPerPixel, long freeHeap) throws InputException {
+        long need = memoryNeeded(config, bytesPerPixel);
+        long available = freeHeap - HEAP_RESERVE;
+        if (need > available) {
+            throw new InputException("glint", 0, 0, String.format(Locale.ROOT,
+                    "%dx%d at %d %s with %d %s needs about %s of memory; the Java heap has %s free "
+                    + "(render fewer pixels, samples or threads, or start Java with a larger -Xmx)",
+                    config.displayWidth(), config.displayHeight(), config.samples(),
+                    config.samples() == 1 ? "sample" : "samples", config.effectiveThreads(),
+                    config.effectiveThreads() == 1 ? "thread" : "threads", megabytes(need), megabytes(Math.max(0, available))));
+        }
+    }
+
+    /** Heap bytes a headless render of this config needs, computed in long (no overflow). */
+    static long memoryNeeded(Config config, long bytesPerPixel) {
+        long w = config.displayWidth(), h = config.displayHeight();
+        long divider = Math.max(1, Math.min(config.screenDivider(), Math.min(w, h)));
+        long tileWidth = (w + divider - 1) / divider;
+        long rowRays = tileWidth * config.samples();
+        return w * h * bytesPerPixel + config.effectiveThreads() * rowRays * ROW_BYTES_PER_RAY;
+    }
+
+    private static String megabytes(long bytes) {
+        return String.format(Locale.ROOT, "%,d MB", (bytes + (1 << 20) - 1) >> 20);
+    }
+
+    static int bench(Path scenePath, Config config, int frames, PrintWriter out, PrintWriter err)
+            throws InputException {
         Scene scene = SceneLoader.load(scenePath, config.limits().scene());
         RenderScene compiled = RenderScene.compile(scene, RenderSettings.of(config));
+        checkMemory(config, 12, Runtime.getRuntime());
         FrameBuffer frame = new FrameBuffer(config.displayWidth(), config.displayHeight());
         double[] millis = new double[frames];
         long raysPerFrame;
-        try (Tracer tracer = new Tracer(config.effectiveThreads())) {
+        try (Interrupts interrupts = Interrupts.install(err, "glint: interrupted");
+             Tracer tracer = new Tracer(config.effectiveThreads())) {
+            interrupts.watch(tracer, null);
             for (int i = 0; i < frames; i++) {
                 long cpuBefore = tracer.renderCpuNanos();
                 long start = System.nanoTime();
-                tracer.render(compiled, frame, config.samples(), 0, config.screenDivider());
+                try {
+                    tracer.render(compiled, frame, config.samples(), 0, config.screenDivider());
+                } catch (CancellationException e) {
+                    interrupts.report("glint: interrupted after " + i + (i == 1 ? " frame" : " frames"));
+                    return INTERRUPTED;
+                }
                 millis[i] = (System.nanoTime() - start) / 1e6;
                 out.println(frameLine(i + 1, millis[i], tracer.renderCpuNanos(), cpuBefore));
             }

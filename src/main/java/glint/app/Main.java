@@ -72,8 +72,9 @@ public final class Main implements Callable<Integer> {
         CommandLine cli = new CommandLine(main);
         cli.setOut(out);
         cli.setErr(err);
+        cli.registerConverter(Integer.class, Main::wholeNumber);
         cli.setParameterExceptionHandler((e, a) -> {
-            err.println("glint: " + e.getMessage());
+            err.println(InputException.printable("glint: " + e.getMessage()));
             err.println("Try 'java -jar target/glint.jar --help' for the options.");
             return BAD_INPUT;
         });
@@ -82,27 +83,62 @@ public final class Main implements Callable<Integer> {
                 err.println(bad.getMessage());
                 return BAD_INPUT;
             }
-            err.println("glint: " + e);
+            if (e instanceof Headless.WriteFailure failure) {
+                err.println(InputException.printable("glint: " + failure.getMessage()));
+                return FAILURE;
+            }
+            if (e.getCause() instanceof OutOfMemoryError) { // in a render thread
+                err.println(outOfMemory(e.getCause()));
+                return FAILURE;
+            }
+            err.println(InputException.printable("glint: " + e));
             return FAILURE;
         });
-        return cli.execute(args);
+        try {
+            return cli.execute(args);
+        } catch (OutOfMemoryError e) {
+            err.println(outOfMemory(e));
+            return FAILURE;
+        }
+    }
+
+    private static String outOfMemory(Throwable e) {
+        return "glint: out of memory (" + e.getMessage() + "); render fewer pixels, samples or threads, "
+                + "or start Java with a larger -Xmx";
+    }
+
+    /** An option's whole number: ASCII digits only (Java's own parser takes other scripts' digits too). */
+    static Integer wholeNumber(String text) {
+        if (!text.matches("[-+]?[0-9]{1,10}")) {
+            throw new CommandLine.TypeConversionException(InputException.quote(text)
+                    + " is not a whole number written with the digits 0-9");
+        }
+        long n = Long.parseLong(text);
+        if (n > Integer.MAX_VALUE || n < Integer.MIN_VALUE) {
+            throw new CommandLine.TypeConversionException(InputException.quote(text) + " is too large");
+        }
+        return (int) n;
     }
 
     @Override
     public Integer call() throws Exception {
+        notEmpty("--scene", scene);
+        notEmpty("--config", config);
+        notEmpty("--output", output);
         Config settings = overrides(loadConfig());
         Path scenePath = scene != null ? scene : sceneFromConfig(settings);
         if (output != null && bench != null) {
             throw new InputException("glint", 0, 0, "--output and --bench cannot be used together");
         }
         if (output != null) {
-            return Headless.renderStill(scenePath, settings, output, out);
+            return Headless.renderStill(scenePath, settings, output, out, err);
         }
         if (bench != null) {
-            if (bench < 1) {
-                throw new InputException("glint", 0, 0, "--bench: expected a number of frames >= 1, got " + bench);
+            if (bench < 1 || bench > Headless.MAX_BENCH_FRAMES) {
+                throw new InputException("glint", 0, 0, "--bench: expected a number of frames from 1 to "
+                        + Headless.MAX_BENCH_FRAMES + ", got " + bench);
             }
-            return Headless.bench(scenePath, settings, bench, out);
+            return Headless.bench(scenePath, settings, bench, out, err);
         }
         return WindowLauncher.open(scenePath, settings, () -> overrides(loadConfig()), err);
     }
@@ -115,13 +151,35 @@ public final class Main implements Callable<Integer> {
         return Files.exists(fallback) ? ConfigLoader.load(fallback) : Config.defaults();
     }
 
-    /** The config's scene, relative to the folder of the config file. */
-    private Path sceneFromConfig(Config settings) {
-        Path configured = Path.of(settings.scene());
-        if (configured.isAbsolute() || config == null || config.getParent() == null) {
-            return configured;
+    /** A path option given as an empty string would mean the current folder. */
+    private static void notEmpty(String option, Path path) throws InputException {
+        if (path != null && path.toString().isEmpty()) {
+            throw new InputException("glint", 0, 0, option + ": expected a file name, got nothing");
         }
-        return config.getParent().resolve(configured);
+    }
+
+    /**
+     * The config's scene, relative to the folder of the config file. When that file does not exist,
+     * the error is at the config's {@code scene} line (or its first line, for the default) and says
+     * against which folder the path was resolved.
+     */
+    private Path sceneFromConfig(Config settings) throws InputException {
+        Path configured = Path.of(settings.scene());
+        Path configFile = config != null ? config : Files.exists(Path.of("config.properties"))
+                ? Path.of("config.properties") : null;
+        Path resolved = configured.isAbsolute() || config == null || config.getParent() == null
+                ? configured : config.getParent().resolve(configured);
+        if (configFile == null || Files.exists(resolved)) {
+            return resolved;
+        }
+        Path folder = configFile.toAbsolutePath().getParent();
+        InputException at = ConfigLoader.errorAt(configFile, "scene", "");
+        String problem = (at.line() > 0 ? "scene: no such file " : "no such scene file ")
+                + "'" + resolved + "'"
+                + (configured.isAbsolute() ? "" : " (scene is resolved against the config file's folder, "
+                        + folder + (at.line() > 0 ? ")" : "; the default is scenes/default.yaml)"))
+                + "; set scene in the config or use --scene FILE";
+        throw new InputException(at.file(), at.line(), at.column(), problem);
     }
 
     private Config overrides(Config c) throws InputException {
@@ -154,7 +212,7 @@ public final class Main implements Callable<Integer> {
         if (shading != null) {
             Shading model = Shading.byKey(shading);
             if (model == null) {
-                throw new InputException("glint", 0, 0, "--shading: unknown model '" + shading + "'"
+                throw new InputException("glint", 0, 0, "--shading: unknown model " + InputException.quote(shading)
                         + Suggestions.hint(shading, List.of("cook-torrance", "phong")));
             }
             c = c.withShading(model);

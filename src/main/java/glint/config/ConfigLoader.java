@@ -2,16 +2,13 @@ package glint.config;
 
 import glint.input.InputException;
 import glint.input.Suggestions;
-import java.io.IOException;
-import java.io.StringReader;
-import java.nio.charset.StandardCharsets;
-import java.nio.file.Files;
-import java.nio.file.NoSuchFileException;
+import glint.input.TextFiles;
 import java.nio.file.Path;
 import java.util.LinkedHashSet;
 import java.util.List;
-import java.util.Properties;
+import java.util.Map;
 import java.util.Set;
+import java.util.regex.Pattern;
 
 /** Reads config.properties; every key is optional, and a bad one is reported with its line. */
 public final class ConfigLoader {
@@ -22,32 +19,39 @@ public final class ConfigLoader {
             "move_speed", "turn_speed", "target_fps",
             "max_image_pixels", "max_scene_bytes", "max_objects", "max_lights", "max_recursion"));
 
+    /** The largest config file read; a real one is about 1 KB. */
+    static final long MAX_CONFIG_BYTES = 1 << 20;
+
+    /** Whole numbers: ASCII digits only (Java's parser would take other scripts' digits too). */
+    private static final Pattern WHOLE = Pattern.compile("[-+]?[0-9]{1,19}");
+    /** Decimal numbers: ASCII digits, no hex, no NaN or Infinity, no type suffix. */
+    private static final Pattern DECIMAL = Pattern.compile("[-+]?(\\.[0-9]+|[0-9]+(\\.[0-9]*)?)([eE][-+]?[0-9]{1,4})?");
+
     private final String file;
-    private final List<String> lines;
-    private final Properties properties;
+    private final Map<String, PropertiesText.Entry> entries;
 
     private ConfigLoader(String file, String text) throws InputException {
         this.file = file;
-        this.lines = text.lines().toList();
-        this.properties = new Properties();
-        try {
-            properties.load(new StringReader(text));
-        } catch (IOException | IllegalArgumentException e) {
-            throw new InputException(file, 0, 0, "not a properties file: " + e.getMessage());
-        }
+        this.entries = PropertiesText.parse(file, text);
     }
 
-    /** Loads a config file. */
+    /** Loads a config file: a regular file of at most 1 MB of UTF-8 text. */
     public static Config load(Path path) throws InputException {
-        String text;
-        try {
-            text = Files.readString(path, StandardCharsets.UTF_8);
-        } catch (NoSuchFileException e) {
-            throw new InputException(path.toString(), 0, 0, "no such file");
-        } catch (IOException e) {
-            throw new InputException(path.toString(), 0, 0, "cannot read: " + e.getMessage());
-        }
-        return parse(path.toString(), text);
+        return parse(path.toString(), read(path));
+    }
+
+    private static String read(Path path) throws InputException {
+        byte[] bytes = TextFiles.readBounded(path, MAX_CONFIG_BYTES, size -> TextFiles.fileIsLargerThan(size, MAX_CONFIG_BYTES,
+                "the largest config file accepted"));
+        return TextFiles.utf8(path.toString(), bytes);
+    }
+
+    /**
+     * Where a key is set in a config file, as an error carrying {@code problem}; the position is
+     * unknown (0) when the key is not set.
+     */
+    public static InputException errorAt(Path path, String key, String problem) throws InputException {
+        return new ConfigLoader(path.toString(), read(path)).error(key, problem);
     }
 
     /** Parses config text; {@code file} names it in messages. */
@@ -57,9 +61,9 @@ public final class ConfigLoader {
 
     private Config config() throws InputException {
         InputException unknown = null;
-        for (String key : properties.stringPropertyNames()) {
+        for (String key : entries.keySet()) {
             if (!KEYS.contains(key)) {
-                InputException e = error(key, "unknown key '" + key + "'" + Suggestions.hint(key, KEYS));
+                InputException e = error(key, "unknown key " + InputException.quote(key) + Suggestions.hint(key, KEYS));
                 if (unknown == null || e.line() < unknown.line()) { // report the first in the file
                     unknown = e;
                 }
@@ -79,11 +83,11 @@ public final class ConfigLoader {
         int width = integer("display_width", d.displayWidth(), 1, 65536);
         String sizeProblem = limits.imageSizeProblem(width, height);
         if (sizeProblem != null) {
-            throw error(properties.containsKey("display_width") ? "display_width" : "display_height",
+            throw error(entries.containsKey("display_width") ? "display_width" : "display_height",
                     "display_width x display_height: " + sizeProblem);
         }
-        String name = properties.getProperty("name", d.name()).trim();
-        String scene = properties.getProperty("scene", d.scene()).trim();
+        String name = entries.containsKey("name") ? value("name") : d.name();
+        String scene = entries.containsKey("scene") ? value("scene") : d.scene();
         if (scene.isEmpty()) {
             throw error("scene", "scene: expected a scene file path, got nothing");
         }
@@ -99,11 +103,11 @@ public final class ConfigLoader {
     }
 
     private Limits limits(Limits d) throws InputException {
-        long pixels = longInteger("max_image_pixels", d.maxImagePixels(), 1, 1L << 31);
+        long pixels = longInteger("max_image_pixels", d.maxImagePixels(), 1, Limits.MAX_IMAGE_PIXELS);
         long sceneBytes = longInteger("max_scene_bytes", d.maxSceneBytes(), 1, 1L << 30);
         int objects = integer("max_objects", d.maxObjects(), 0, 10_000_000);
         int lights = integer("max_lights", d.maxLights(), 0, 100_000);
-        int recursion = integer("max_recursion", d.maxRecursion(), 1, 1024);
+        int recursion = integer("max_recursion", d.maxRecursion(), 1, Limits.MAX_RECURSION);
         return new Limits(pixels, sceneBytes, objects, lights, recursion);
     }
 
@@ -112,20 +116,22 @@ public final class ConfigLoader {
         if (v == null) {
             return fallback;
         }
-        try {
-            long n = Long.parseLong(v);
-            if (n >= min && n <= max) {
-                return n;
+        if (WHOLE.matcher(v).matches()) {
+            try {
+                long n = Long.parseLong(v);
+                if (n >= min && n <= max) {
+                    return n;
+                }
+            } catch (NumberFormatException e) {
+                // beyond a long: reported below
             }
-        } catch (NumberFormatException e) {
-            // reported below
         }
-        throw error(key, key + ": expected a whole number from " + min + " to " + max + ", got '" + v + "'");
+        throw error(key, key + ": expected a whole number from " + min + " to " + max + ", got " + InputException.quote(v));
     }
 
     private String value(String key) {
-        String v = properties.getProperty(key);
-        return v == null ? null : v.trim();
+        PropertiesText.Entry e = entries.get(key);
+        return e == null ? null : e.value().trim();
     }
 
     private boolean bool(String key, boolean fallback) throws InputException {
@@ -136,7 +142,7 @@ public final class ConfigLoader {
         if (v.equalsIgnoreCase("true") || v.equalsIgnoreCase("false")) {
             return Boolean.parseBoolean(v);
         }
-        throw error(key, key + ": expected true or false, got '" + v + "'");
+        throw error(key, key + ": expected true or false, got " + InputException.quote(v));
     }
 
     private int integer(String key, int fallback, int min, int max) throws InputException {
@@ -144,15 +150,13 @@ public final class ConfigLoader {
         if (v == null) {
             return fallback;
         }
-        try {
-            int n = Integer.parseInt(v);
+        if (WHOLE.matcher(v).matches()) {
+            long n = Long.parseLong(v);
             if (n >= min && n <= max) {
-                return n;
+                return (int) n;
             }
-        } catch (NumberFormatException e) {
-            // reported below
         }
-        throw error(key, key + ": expected a whole number from " + min + " to " + max + ", got '" + v + "'");
+        throw error(key, key + ": expected a whole number from " + min + " to " + max + ", got " + InputException.quote(v));
     }
 
     private double positive(String key, double fallback) throws InputException {
@@ -165,16 +169,13 @@ public final class ConfigLoader {
         if (v == null) {
             return fallback;
         }
-        try {
+        if (DECIMAL.matcher(v).matches()) {
             double x = Double.parseDouble(v);
-            if (Double.isFinite(x) && x >= min && x <= max && !v.endsWith("d") && !v.endsWith("f")
-                    && !v.endsWith("D") && !v.endsWith("F")) {
+            if (Double.isFinite(x) && x >= min && x <= max) {
                 return x;
             }
-        } catch (NumberFormatException e) {
-            // reported below
         }
-        throw error(key, key + ": expected " + expected + ", got '" + v + "'");
+        throw error(key, key + ": expected " + expected + ", got " + InputException.quote(v));
     }
 
     private Shading shading(Shading fallback) throws InputException {
@@ -184,7 +185,7 @@ public final class ConfigLoader {
         }
         Shading s = Shading.byKey(v);
         if (s == null) {
-            throw error("shading", "shading: unknown model '" + v + "'"
+            throw error("shading", "shading: unknown model " + InputException.quote(v)
                     + Suggestions.hint(v, List.of("cook-torrance", "phong")));
         }
         return s;
@@ -197,26 +198,14 @@ public final class ConfigLoader {
         }
         int n = integer("samples", fallback, 1, 4096);
         if (!Config.isPerfectSquare(n)) {
-            throw error("samples", "samples: expected a perfect square (1, 4, 9, 16, ...), got '" + v + "'");
+            throw error("samples", "samples: expected a perfect square (1, 4, 9, 16, ...), got " + InputException.quote(v));
         }
         return n;
     }
 
-    /**
-     * An error at the line where {@code key} is set (line 0 when it cannot be found); when it is set
-     * more than once, the last line, whose value is the one that counts.
-     */
+    /** An error at the line and column where {@code key} is set (the last time); 0:0 when it is not set. */
     private InputException error(String key, String problem) {
-        for (int i = lines.size() - 1; i >= 0; i--) {
-            String line = lines.get(i);
-            String trimmed = line.stripLeading();
-            if (trimmed.startsWith(key)) {
-                String rest = trimmed.substring(key.length());
-                if (rest.isEmpty() || "=: \t".indexOf(rest.charAt(0)) >= 0) {
-                    return new InputException(file, i + 1, line.length() - trimmed.length() + 1, problem);
-                }
-            }
-        }
-        return new InputException(file, 0, 0, problem);
+        PropertiesText.Entry e = entries.get(key);
+        return e == null ? new InputException(file, 0, 0, problem) : new InputException(file, e.line(), e.column(), problem);
     }
 }

@@ -18,6 +18,15 @@ public record Limits(long maxImagePixels, long maxSceneBytes, int maxObjects, in
     public static final Limits DEFAULT = new Limits(7680L * 4320, SceneLimits.DEFAULT.maxFileBytes(),
             SceneLimits.DEFAULT.maxObjects(), SceneLimits.DEFAULT.maxLights(), 64);
 
+    /**
+     * The largest {@code max_image_pixels}: a frame of 3 floats a pixel must fit one Java array
+     * (2^31 - 9 elements, 715,827,879 pixels).
+     */
+    public static final long MAX_IMAGE_PIXELS = 700_000_000L;
+
+    /** The largest {@code max_recursion}: a path of 64 surface hits. */
+    public static final int MAX_RECURSION = 64;
+
     public SceneLimits scene() {
         return new SceneLimits(maxSceneBytes, maxObjects, maxLights);
     }

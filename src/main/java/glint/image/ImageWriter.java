@@ -8,13 +8,28 @@ import java.io.OutputStream;
 import java.nio.ByteBuffer;
 import java.nio.ByteOrder;
 import java.nio.charset.StandardCharsets;
+import java.nio.file.AtomicMoveNotSupportedException;
 import java.nio.file.Files;
 import java.nio.file.Path;
+import java.nio.file.StandardCopyOption;
+import java.util.Iterator;
 import java.util.Locale;
 import javax.imageio.ImageIO;
+import javax.imageio.stream.ImageOutputStream;
+import javax.imageio.stream.MemoryCacheImageOutputStream;
 
-/** Writes a frame as an sRGB PNG or a linear PFM, chosen by the file's extension. */
+/**
+ * Writes a frame as an sRGB PNG or a linear PFM, chosen by the file's extension. The file is written
+ * to a temporary file in the same folder and renamed into place when complete: a failed write (a full
+ * disk) leaves no truncated file and keeps an image of the same name as it was.
+ */
 public final class ImageWriter {
+
+    /** Writes one file's content to a stream. */
+    @FunctionalInterface
+    public interface Content {
+        void writeTo(OutputStream out) throws IOException;
+    }
 
     private ImageWriter() {
     }
@@ -26,11 +41,51 @@ public final class ImageWriter {
     }
 
     public static void write(FrameBuffer frame, Path path) throws IOException {
+        write(frame, path, temporaryBeside(path));
+    }
+
+    /**
+     * Writes the frame to {@code temp} (made by {@link #temporaryBeside}) and renames it to
+     * {@code path}; {@code temp} is gone afterwards, whether the write succeeded or not.
+     */
+    public static void write(FrameBuffer frame, Path path, Path temp) throws IOException {
         String name = path.getFileName().toString().toLowerCase(Locale.ROOT);
-        if (name.endsWith(".pfm")) {
-            writePfm(frame, path);
-        } else {
-            writePng(frame, path);
+        Content content = name.endsWith(".pfm") ? out -> writePfm(frame, out) : out -> writePng(toImage(frame), out);
+        writeAtomically(path, temp, content);
+    }
+
+    /**
+     * A new empty file in the folder of {@code path}, named after it and hidden ({@code .out.png.1a2b.part}),
+     * to be renamed to it when written; made with the folder's usual permissions.
+     */
+    public static Path temporaryBeside(Path path) throws IOException {
+        Path folder = path.toAbsolutePath().getParent();
+        // not Files.createTempFile: its file is private (0600), and the image would keep that mode
+        for (int attempt = 0; ; attempt++) {
+            Path temp = folder.resolve("." + path.getFileName() + "." + Long.toHexString(System.nanoTime()) + ".part");
+            try {
+                return Files.createFile(temp);
+            } catch (java.nio.file.FileAlreadyExistsException e) {
+                if (attempt == 100) {
+                    throw e;
+                }
+            }
+        }
+    }
+
+    /** Writes {@code content} to {@code temp}, then renames it to {@code path}; deletes temp on failure. */
+    public static void writeAtomically(Path path, Path temp, Content content) throws IOException {
+        try {
+            try (OutputStream out = new BufferedOutputStream(Files.newOutputStream(temp), 1 << 16)) {
+                content.writeTo(out);
+            }
+            try {
+                Files.move(temp, path, StandardCopyOption.ATOMIC_MOVE, StandardCopyOption.REPLACE_EXISTING);
+            } catch (AtomicMoveNotSupportedException e) {
+                Files.move(temp, path, StandardCopyOption.REPLACE_EXISTING);
+            }
+        } finally {
+            Files.deleteIfExists(temp);
         }
     }
 
@@ -49,28 +104,44 @@ public final class ImageWriter {
         return image;
     }
 
-    public static void writePng(FrameBuffer frame, Path path) throws IOException {
-        try (OutputStream out = new BufferedOutputStream(Files.newOutputStream(path))) {
-            if (!ImageIO.write(toImage(frame), "png", out)) {
-                throw new IOException("no PNG writer available");
-            }
+    /**
+     * The image as PNG to a stream. The encoder writes through a stream of our own (not ImageIO's
+     * file cache, whose clean-up thread prints a stack trace when a write fails).
+     */
+    public static void writePng(BufferedImage image, OutputStream out) throws IOException {
+        Iterator<javax.imageio.ImageWriter> writers = ImageIO.getImageWritersByFormatName("png");
+        if (!writers.hasNext()) {
+            throw new IOException("no PNG writer available");
+        }
+        javax.imageio.ImageWriter writer = writers.next();
+        try (ImageOutputStream stream = new MemoryCacheImageOutputStream(out)) {
+            writer.setOutput(stream);
+            writer.write(image);
+        } finally {
+            writer.dispose();
         }
     }
 
-    /** Portable Float Map: "PF", little-endian (scale -1), rows bottom to top, linear RGB. */
+    public static void writePng(FrameBuffer frame, Path path) throws IOException {
+        writeAtomically(path, temporaryBeside(path), out -> writePng(toImage(frame), out));
+    }
+
     public static void writePfm(FrameBuffer frame, Path path) throws IOException {
+        writeAtomically(path, temporaryBeside(path), out -> writePfm(frame, out));
+    }
+
+    /** Portable Float Map: "PF", little-endian (scale -1), rows bottom to top, linear RGB; row by row. */
+    public static void writePfm(FrameBuffer frame, OutputStream out) throws IOException {
         int w = frame.width(), h = frame.height();
-        byte[] header = ("PF\n" + w + " " + h + "\n-1.0\n").getBytes(StandardCharsets.US_ASCII);
-        ByteBuffer body = ByteBuffer.allocate(12 * w * h).order(ByteOrder.LITTLE_ENDIAN);
+        out.write(("PF\n" + w + " " + h + "\n-1.0\n").getBytes(StandardCharsets.US_ASCII));
+        ByteBuffer row = ByteBuffer.allocate(12 * w).order(ByteOrder.LITTLE_ENDIAN);
         float[] rgb = frame.rgb();
         for (int y = h - 1; y >= 0; y--) {
-            for (int i = 3 * y * w, end = 3 * (y + 1) * w; i < end; i++) {
-                body.putFloat(rgb[i]);
+            row.clear();
+            for (long i = 3L * y * w, end = 3L * (y + 1) * w; i < end; i++) {
+                row.putFloat(rgb[(int) i]);
             }
-        }
-        try (OutputStream out = new BufferedOutputStream(Files.newOutputStream(path))) {
-            out.write(header);
-            out.write(body.array());
+            out.write(row.array(), 0, row.position());
         }
     }
 }

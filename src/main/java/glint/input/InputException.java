@@ -27,7 +27,49 @@ public final class InputException extends Exception {
                 sb.append(':').append(column);
             }
         }
-        return sb.append(": ").append(problem).toString();
+        return printable(sb.append(": ").append(problem).toString());
+    }
+
+    /**
+     * The text with every character that could move the cursor or change the terminal (line breaks,
+     * escape sequences, other control and bidirectional-override characters) written as an escape
+     * such as {@code \n} or {@code \u001b}: a message is always one line and prints as it reads.
+     */
+    public static String printable(String text) {
+        StringBuilder sb = null;
+        for (int i = 0; i < text.length(); i++) {
+            char c = text.charAt(i);
+            String escape = c == '\n' ? "\\n" : c == '\r' ? "\\r" : c == '\t' ? "\\t"
+                    : isControl(c) ? String.format("\\u%04x", (int) c) : null;
+            if (escape != null && sb == null) {
+                sb = new StringBuilder(text.length() + 16).append(text, 0, i);
+            }
+            if (sb != null) {
+                if (escape != null) {
+                    sb.append(escape);
+                } else {
+                    sb.append(c);
+                }
+            }
+        }
+        return sb == null ? text : sb.toString();
+    }
+
+    private static boolean isControl(char c) {
+        return c < 0x20 || (c >= 0x7f && c < 0xa0) || (c >= 0x202a && c <= 0x202e) || (c >= 0x2066 && c <= 0x2069)
+                || c == 0x200e || c == 0x200f || c == 0x2028 || c == 0x2029;
+    }
+
+    /** What the user wrote, in quotes, cut to its first 60 characters: {@code 'text'} or {@code 'text...'}. */
+    public static String quote(String text) {
+        int cut = 60;
+        if (text.length() <= cut) {
+            return "'" + text + "'";
+        }
+        if (Character.isHighSurrogate(text.charAt(cut - 1))) {
+            cut--;
+        }
+        return "'" + text.substring(0, cut) + "...'";
     }
 
     public String file() {

@@ -16,7 +16,7 @@ public final class Suggestions {
     public static String hint(String given, Collection<String> known) {
         String best = null;
         int bestDistance = Integer.MAX_VALUE;
-        for (String candidate : known) {
+        for (String candidate : given.length() > 64 ? java.util.List.<String>of() : known) {
             int d = distance(given.toLowerCase(Locale.ROOT), candidate.toLowerCase(Locale.ROOT));
             if (d < bestDistance) {
                 bestDistance = d;

@@ -2,6 +2,7 @@ package glint.render;
 
 import java.lang.management.ManagementFactory;
 import java.lang.management.ThreadMXBean;
+import java.util.concurrent.CancellationException;
 import java.util.concurrent.ExecutorService;
 import java.util.concurrent.Executors;
 import java.util.concurrent.Phaser;
@@ -28,6 +29,12 @@ public final class Tracer implements AutoCloseable {
     private final long[] workerCpuNanos;
     /** Reads the render threads' CPU clocks; null where the JVM cannot. */
     private final ThreadMXBean cpuClock;
+
+    // progress and cancelling: counted per tile, never per pixel
+    /** Tiles finished in the frame being rendered (or the last one). */
+    private final AtomicInteger tilesDone = new AtomicInteger();
+    private volatile int frameTiles = 1;
+    private volatile boolean cancelled;
 
     // the frame being rendered; written before the workers start, read by them
     private volatile RenderScene scene;
@@ -128,10 +135,18 @@ public final class Tracer implements AutoCloseable {
         this.divider = Math.max(1, Math.min(divider, Math.min(target.width(), target.height())));
         nextTile.set(0);
         failure.set(null);
+        tilesDone.set(0);
+        frameTiles = this.divider * this.divider;
+        if (cancelled) {
+            throw new CancellationException("the render was cancelled");
+        }
         for (Runnable task : tasks) {
             pool.execute(task);
         }
         frameDone.arriveAndAwaitAdvance();
+        if (cancelled) {
+            throw new CancellationException("the render was cancelled");
+        }
         Throwable error = failure.get();
         if (error != null) {
             throw new RenderException("a render worker failed: " + error, error);
@@ -143,8 +158,9 @@ public final class Tracer implements AutoCloseable {
         long cpuStart = cpuClock == null ? 0 : cpuClock.getCurrentThreadCpuTime();
         try {
             int tiles = divider * divider;
-            for (int tile = nextTile.getAndIncrement(); tile < tiles; tile = nextTile.getAndIncrement()) {
+            for (int tile = nextTile.getAndIncrement(); tile < tiles && !cancelled; tile = nextTile.getAndIncrement()) {
                 renderTile(worker, tile);
+                tilesDone.incrementAndGet();
             }
         } catch (Throwable t) {
             failure.compareAndSet(null, t);
@@ -163,6 +179,31 @@ public final class Tracer implements AutoCloseable {
         int x0 = column * f.width() / d, x1 = (column + 1) * f.width() / d;
         int y0 = row * f.height() / d, y1 = (row + 1) * f.height() / d;
         worker.renderTile(scene, f, samples, firstSample, sampleCount, frameIndex, x0, y0, x1, y1);
+    }
+
+    // ---------------------------------------------------------------- progress and cancelling
+
+    /** Tiles finished so far in the frame being rendered (all of them once it is done). */
+    public int tilesDone() {
+        return tilesDone.get();
+    }
+
+    /** Tiles of the frame being rendered, or of the last one. */
+    public int frameTiles() {
+        return frameTiles;
+    }
+
+    /**
+     * Stops the frame being rendered from any thread: the tiles not yet started are skipped, and
+     * {@code render} / {@code renderPass} throw {@link CancellationException} once the tiles under way
+     * are done; so does every later call. The frame buffer then holds a partial image.
+     */
+    public void cancel() {
+        cancelled = true;
+    }
+
+    public boolean isCancelled() {
+        return cancelled;
     }
 
     @Override

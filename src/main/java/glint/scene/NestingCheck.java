@@ -60,7 +60,7 @@ final class NestingCheck {
                 }
                 continue;
             }
-            if (c == '\'' || c == '"') {
+            if ((c == '\'' || c == '"') && opensScalar(line, from, i)) {
                 quote = c;
             } else if (c == '#' && (i == 0 || line.charAt(i - 1) == ' ')) {
                 break;
@@ -74,6 +74,19 @@ final class NestingCheck {
             }
         }
         return depth;
+    }
+
+    /**
+     * True when a quote at {@code i} starts a quoted scalar: first on the line, or after one of
+     * {@code [ { , : - ?} and spaces. An apostrophe inside a plain word ({@code it's}) quotes nothing,
+     * so the brackets after it still count.
+     */
+    private static boolean opensScalar(String line, int from, int i) {
+        int j = i - 1;
+        while (j >= from && (line.charAt(j) == ' ' || line.charAt(j) == '\t')) {
+            j--;
+        }
+        return j < from || "[{,:-?".indexOf(line.charAt(j)) >= 0;
     }
 
     private static InputException tooDeep(String file, int line, int column, int maxDepth) {

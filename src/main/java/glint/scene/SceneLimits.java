@@ -14,4 +14,10 @@ public record SceneLimits(long maxFileBytes, int maxObjects, int maxLights) {
 
     /** Deepest nesting of lists and mappings a scene file may have; a scene needs 4. */
     public static final int MAX_NESTING = 32;
+
+    /**
+     * Longest line a scene file may have, in characters: the YAML reader's time grows with the square
+     * of a line's length (a 1 MB line takes seconds).
+     */
+    public static final int MAX_LINE_CHARS = 65_536;
 }

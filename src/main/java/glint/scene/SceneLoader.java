@@ -3,14 +3,8 @@ package glint.scene;
 import glint.input.InputException;
 import glint.input.Suggestions;
 import glint.math.Vector3d;
-import java.io.IOException;
-import java.nio.charset.CharacterCodingException;
-import java.nio.charset.CodingErrorAction;
-import java.nio.charset.StandardCharsets;
-import java.nio.file.Files;
-import java.nio.file.NoSuchFileException;
+import glint.input.TextFiles;
 import java.nio.file.Path;
-import java.nio.ByteBuffer;
 import java.util.ArrayList;
 import java.util.LinkedHashMap;
 import java.util.LinkedHashSet;
@@ -20,7 +14,10 @@ import java.util.Map;
 import java.util.Optional;
 import java.util.Set;
 import org.snakeyaml.engine.v2.api.LoadSettings;
-import org.snakeyaml.engine.v2.api.lowlevel.Compose;
+import org.snakeyaml.engine.v2.composer.Composer;
+import org.snakeyaml.engine.v2.parser.Parser;
+import org.snakeyaml.engine.v2.parser.ParserImpl;
+import org.snakeyaml.engine.v2.scanner.StreamReader;
 import org.snakeyaml.engine.v2.exceptions.Mark;
 import org.snakeyaml.engine.v2.exceptions.MarkedYamlEngineException;
 import org.snakeyaml.engine.v2.exceptions.YamlEngineException;
@@ -76,36 +73,27 @@ public final class SceneLoader {
         if (text.length() > limits.maxFileBytes()) {
             throw tooBig(file, text.length(), limits);
         }
+        InputException longLine = TextFiles.lineTooLong(file, text, SceneLimits.MAX_LINE_CHARS);
+        if (longLine != null) {
+            throw longLine;
+        }
         NestingCheck.check(file, text, SceneLimits.MAX_NESTING);
         return new SceneLoader(file, limits).scene(compose(file, text, limits));
     }
 
     private static InputException tooBig(String file, long size, SceneLimits limits) {
-        return new InputException(file, 0, 0, String.format(java.util.Locale.ROOT,
-                "the file is %.1f MB; the largest scene accepted is %.1f MB (config key max_scene_bytes)",
-                size / 1048576.0, limits.maxFileBytes() / 1048576.0));
+        return new InputException(file, 0, 0, tooBigProblem(size, limits));
     }
 
+    private static String tooBigProblem(long size, SceneLimits limits) {
+        return TextFiles.fileIsLargerThan(size, limits.maxFileBytes(), "the largest scene accepted")
+                + " (config key max_scene_bytes)";
+    }
+
+    /** The file's text: a regular file (never a FIFO or device), within the size limit, UTF-8. */
     static String read(Path path, SceneLimits limits) throws InputException {
-        try {
-            if (Files.isDirectory(path)) {
-                throw new InputException(path.toString(), 0, 0, "is a folder, not a scene file");
-            }
-            long size = Files.size(path);
-            if (size > limits.maxFileBytes()) {
-                throw tooBig(path.toString(), size, limits);
-            }
-            byte[] bytes = Files.readAllBytes(path);
-            return StandardCharsets.UTF_8.newDecoder()
-                    .onMalformedInput(CodingErrorAction.REPORT)
-                    .decode(ByteBuffer.wrap(bytes)).toString();
-        } catch (NoSuchFileException e) {
-            throw new InputException(path.toString(), 0, 0, "no such file");
-        } catch (CharacterCodingException e) {
-            throw new InputException(path.toString(), 0, 0, "not a text file (expected UTF-8 YAML)");
-        } catch (IOException e) {
-            throw new InputException(path.toString(), 0, 0, "cannot read: " + e.getMessage());
-        }
+        byte[] bytes = TextFiles.readBounded(path, limits.maxFileBytes(), size -> tooBigProblem(size, limits));
+        return TextFiles.utf8(path.toString(), bytes);
     }
 
     private static Node compose(String file, String text, SceneLimits limits) throws InputException {
@@ -119,7 +107,11 @@ public final class SceneLoader {
                 .build();
         Optional<Node> root;
         try {
-            root = new Compose(settings).composeString(text);
+            Parser parser = new TagRefusingParser(new ParserImpl(settings, new StreamReader(settings, text)));
+            root = new Composer(settings, parser).getSingleNode();
+        } catch (TagRefusingParser.TagFound e) {
+            throw new InputException(file, e.line, e.column, "YAML tags such as " + InputException.quote(e.tag)
+                    + " are not supported (write the value without it; a number is written plainly, a name too)");
         } catch (MarkedYamlEngineException e) {
             Mark mark = e.getProblemMark().or(e::getContextMark).orElse(null);
             String what = e.getProblem() != null ? e.getProblem() : "malformed YAML";
@@ -153,8 +145,8 @@ public final class SceneLoader {
         Camera camera = top.containsKey("camera") && !YamlTree.isNull(top.get("camera"))
                 ? camera(top.get("camera")) : Camera.defaults();
         Vector3d background = top.containsKey("background")
-                ? yaml.color(top.get("background"), "background") : Vector3d.ZERO;
-        Vector3d ambient = top.containsKey("ambient") ? yaml.color(top.get("ambient"), "ambient") : Vector3d.ZERO;
+                ? radiance(top.get("background"), "background") : Vector3d.ZERO;
+        Vector3d ambient = top.containsKey("ambient") ? radiance(top.get("ambient"), "ambient") : Vector3d.ZERO;
         List<Light> lights = new ArrayList<>();
         if (top.containsKey("lights")) {
             for (Node item : yaml.sequence(top.get("lights"), "lights")) {
@@ -191,14 +183,22 @@ public final class SceneLoader {
                     + YamlTree.source(m.get("fov"), fov));
         }
         Vector3d view = lookAt.sub(position);
-        if (view.length() == 0) {
+        if (lookAt.equals(position)) {
             throw yaml.error(m.getOrDefault("look_at", node), "look_at must differ from the camera position");
         }
-        if (up.length() == 0 || up.cross(view).length() <= 1e-12 * up.length() * view.length()) {
+        double distance = view.isFinite() ? view.length() : Double.POSITIVE_INFINITY;
+        if (!(distance <= 1e150 && distance >= 1e-150)) {
+            throw yaml.error(m.getOrDefault("look_at", node), String.format(Locale.ROOT,
+                    "look_at is %s from the camera position; it must be between 1e-150 and 1e150 away",
+                    distance(position, lookAt)));
+        }
+        Vector3d upChecked = lengthSafe(up);
+        if (upChecked.length() == 0
+                || upChecked.cross(view).length() <= 1e-12 * upChecked.length() * view.length()) {
             throw yaml.error(m.getOrDefault("up", node),
                     "up must not be zero or parallel to the viewing direction (look_at - position)");
         }
-        return Camera.lookAt(position, lookAt, up, fov);
+        return Camera.lookAt(position, lookAt, upChecked, fov);
     }
 
     private void namedMaterials(Node node) throws InputException {
@@ -212,11 +212,11 @@ public final class SceneLoader {
         for (var tuple : map.getValue()) {
             String name = yaml.string(tuple.getKeyNode(), "a material name");
             if (MATERIAL_TYPES.contains(name)) {
-                throw yaml.error(tuple.getKeyNode(), "material name '" + name
-                        + "' is a preset and cannot be redefined (choose another name)");
+                throw yaml.error(tuple.getKeyNode(), "material name " + InputException.quote(name)
+                        + " is a preset and cannot be redefined (choose another name)");
             }
             if (!seen.add(name)) {
-                throw yaml.error(tuple.getKeyNode(), "duplicate material name '" + name + "'");
+                throw yaml.error(tuple.getKeyNode(), "duplicate material name " + InputException.quote(name));
             }
             materials.put(name, materialMap(tuple.getValueNode(), "material '" + name + "'"));
         }
@@ -227,7 +227,7 @@ public final class SceneLoader {
             String name = yaml.string(node, "material");
             Material found = materials.get(name);
             if (found == null) {
-                throw yaml.error(node, "unknown material '" + name + "'" + Suggestions.hint(name, materials.keySet()));
+                throw yaml.error(node, "unknown material " + InputException.quote(name) + Suggestions.hint(name, materials.keySet()));
             }
             return found;
         }
@@ -243,7 +243,7 @@ public final class SceneLoader {
         }
         String typeName = yaml.string(typeNode, "material type");
         if (!MATERIAL_TYPES.contains(typeName)) {
-            throw yaml.error(typeNode, "unknown material type '" + typeName + "'"
+            throw yaml.error(typeNode, "unknown material type " + InputException.quote(typeName)
                     + Suggestions.hint(typeName, MATERIAL_TYPES));
         }
         Material p = Material.preset(MaterialType.valueOf(typeName.toUpperCase(Locale.ROOT)));
@@ -296,7 +296,7 @@ public final class SceneLoader {
         Map<String, Node> m = yaml.mapping(node, "plane", PLANE_KEYS);
         Vector3d point = yaml.vector(yaml.required(node, m, "point", "plane"), "point");
         Node normalNode = yaml.required(node, m, "normal", "plane");
-        Vector3d normal = yaml.vector(normalNode, "normal");
+        Vector3d normal = lengthSafe(yaml.vector(normalNode, "normal"));
         if (normal.length() == 0) {
             throw yaml.error(normalNode, "normal must not be the zero vector");
         }
@@ -321,12 +321,18 @@ public final class SceneLoader {
                         + YamlTree.source(m.get("intensity"), intensity));
             }
         }
+        double brightest = color.maxComponent() * intensity;
+        if (brightest > MAX_RADIANCE) {
+            throw yaml.error(m.containsKey("intensity") ? m.get("intensity") : m.get("color"), String.format(Locale.ROOT,
+                    "color x intensity must be at most 1e30, got %.3g (the image stores radiance as float, "
+                    + "up to 3.4e38)", brightest));
+        }
         if (type.equals("point")) {
             Vector3d position = yaml.vector(yaml.required(node, m, "position", what), "position");
             return new Light.Point(position, color, intensity);
         }
         Node directionNode = yaml.required(node, m, "direction", what);
-        Vector3d direction = yaml.vector(directionNode, "direction");
+        Vector3d direction = lengthSafe(yaml.vector(directionNode, "direction"));
         if (direction.length() == 0) {
             throw yaml.error(directionNode, "direction must not be the zero vector");
         }
@@ -342,13 +348,49 @@ public final class SceneLoader {
             if (tuple.getKeyNode() instanceof ScalarNode k && k.getValue().equals("type")) {
                 String type = yaml.string(tuple.getValueNode(), what + " type");
                 if (!types.contains(type)) {
-                    throw yaml.error(tuple.getValueNode(), "unknown " + what + " type '" + type + "'"
+                    throw yaml.error(tuple.getValueNode(), "unknown " + what + " type " + InputException.quote(type)
                             + Suggestions.hint(type, types));
                 }
                 return type;
             }
         }
         throw yaml.error(node, "missing required key 'type' in " + what + " (one of: " + String.join(", ", types) + ")");
+    }
+
+    /** The brightest a light (color x intensity), a background or an ambient colour may be. */
+    static final double MAX_RADIANCE = 1e30;
+
+    /** A background or ambient colour: a colour of at most {@link #MAX_RADIANCE}. */
+    private Vector3d radiance(Node node, String what) throws InputException {
+        Vector3d c = yaml.color(node, what);
+        if (c.maxComponent() > MAX_RADIANCE) {
+            throw yaml.error(node, String.format(Locale.ROOT, "%s must be at most 1e30 in each component, got %.3g "
+                    + "(the image stores radiance as float, up to 3.4e38)", what, c.maxComponent()));
+        }
+        return c;
+    }
+
+    /**
+     * The vector itself when its length is a normal double (so valid scenes keep their exact values),
+     * otherwise divided by its largest component first: a direction such as [1e200, -1e200, 0] or
+     * [1e-200, 0, 0] then normalises instead of overflowing to infinity or underflowing to zero.
+     */
+    static Vector3d lengthSafe(Vector3d v) {
+        double length = v.length();
+        if (Double.isFinite(length) && length > 1e-150) {
+            return v;
+        }
+        double largest = Math.max(Math.abs(v.x()), Math.max(Math.abs(v.y()), Math.abs(v.z())));
+        return largest == 0 ? v : new Vector3d(v.x() / largest, v.y() / largest, v.z() / largest);
+    }
+
+    /** The distance between two points for a message, without overflow: "3.0e+160". */
+    private static String distance(Vector3d a, Vector3d b) {
+        double dx = a.x() / 2 - b.x() / 2, dy = a.y() / 2 - b.y() / 2, dz = a.z() / 2 - b.z() / 2;
+        double largest = Math.max(Math.abs(dx), Math.max(Math.abs(dy), Math.abs(dz)));
+        double length = 2 * largest * Math.sqrt((dx / largest) * (dx / largest) + (dy / largest) * (dy / largest)
+                + (dz / largest) * (dz / largest));
+        return String.format(Locale.ROOT, "%.2g", length);
     }
 
     private static Set<String> ordered(String... keys) {

@@ -55,11 +55,16 @@ final class YamlTree {
                 throw error(keyNode, "expected a plain key in " + what + ", got " + describe(keyNode));
             }
             String key = keyScalar.getValue();
+            if (key.equals("<<") && keyScalar.isPlain()) {
+                throw error(keyNode, "merge keys (<<) are not supported in " + what
+                        + "; write the keys out (an alias of a whole mapping, such as *name, works)");
+            }
             if (!allowed.contains(key)) {
-                throw error(keyNode, "unknown key '" + key + "' in " + what + Suggestions.hint(key, allowed));
+                throw error(keyNode, "unknown key " + InputException.quote(key) + " in " + what
+                        + Suggestions.hint(key, allowed));
             }
             if (entries.putIfAbsent(key, tuple.getValueNode()) != null) {
-                throw error(keyNode, "duplicate key '" + key + "' in " + what);
+                throw error(keyNode, "duplicate key " + InputException.quote(key) + " in " + what);
             }
         }
         return entries;
@@ -98,17 +103,17 @@ final class YamlTree {
         }
         String text = s.getValue().trim();
         if (!s.isPlain()) {
-            throw error(node, "expected a number for " + what + ", got the quoted string '" + text + "'");
+            throw error(node, "expected a number for " + what + ", got the quoted string " + InputException.quote(text));
         }
         if (NON_FINITE.matcher(text).matches()) {
-            throw error(node, "expected a finite number for " + what + ", got '" + text + "'");
+            throw error(node, "expected a finite number for " + what + ", got " + InputException.quote(text));
         }
         if (!NUMBER.matcher(text).matches()) {
-            throw error(node, "expected a number for " + what + ", got '" + text + "'");
+            throw error(node, "expected a number for " + what + ", got " + InputException.quote(text));
         }
         double value = Double.parseDouble(text);
         if (!Double.isFinite(value)) {
-            throw error(node, "expected a finite number for " + what + ", got '" + text + "' (too large)");
+            throw error(node, "expected a finite number for " + what + ", got " + InputException.quote(text) + " (too large)");
         }
         return value;
     }
@@ -145,8 +150,7 @@ final class YamlTree {
             return "nothing";
         }
         if (node instanceof ScalarNode s) {
-            String text = s.getValue();
-            return "'" + (text.length() > 40 ? text.substring(0, 40) + "..." : text) + "'";
+            return InputException.quote(s.getValue());
         }
         return node instanceof SequenceNode ? "a list" : "a mapping";
     }

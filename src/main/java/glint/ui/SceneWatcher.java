@@ -1,8 +1,10 @@
 package glint.ui;
 
 import glint.input.InputException;
+import glint.input.TextFiles;
 import glint.scene.Scene;
 import java.io.IOException;
+import java.io.InputStream;
 import java.nio.charset.StandardCharsets;
 import java.nio.file.Files;
 import java.nio.file.NoSuchFileException;
@@ -120,15 +122,23 @@ public final class SceneWatcher implements AutoCloseable {
 
     /**
      * The file's bytes; null when it does not exist. A file larger than the scene limit is not read (the
-     * loader refuses it): its size and time stand for its content. So is an unreadable one's error.
+     * loader refuses it): its size and time stand for its content. So does an unreadable one's error,
+     * and a special file's type (a FIFO, a device): it is never opened, so the watcher never blocks.
      */
     private byte[] read() {
         try {
+            String special = TextFiles.notARegularFile(file); // a FIFO is never opened: its read would block
+            if (special != null) {
+                return marker(special);
+            }
             long size = Files.size(file);
-            if (size > source.limits().maxFileBytes()) {
+            long max = source.limits().maxFileBytes();
+            if (size > max) {
                 return marker("too large: " + size + " bytes, modified " + Files.getLastModifiedTime(file));
             }
-            return Files.readAllBytes(file);
+            try (InputStream in = Files.newInputStream(file)) {
+                return in.readNBytes((int) Math.min(Integer.MAX_VALUE - 16, max + 1)); // bounded if it grows
+            }
         } catch (NoSuchFileException e) {
             return null;
         } catch (IOException e) {

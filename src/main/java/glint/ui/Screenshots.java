@@ -13,7 +13,6 @@ import java.nio.file.StandardOpenOption;
 import java.time.LocalDateTime;
 import java.time.format.DateTimeFormatter;
 import java.util.function.Supplier;
-import javax.imageio.ImageIO;
 
 /** Saves the view as {@code glint-yyyyMMdd-HHmmss-SSS.png} in a folder (the working directory). */
 public final class Screenshots {
@@ -44,9 +43,7 @@ public final class Screenshots {
         Path part = Files.createTempFile(folder, ".glint-", ".png.part");
         try {
             try (OutputStream out = Files.newOutputStream(part, StandardOpenOption.WRITE)) {
-                if (!ImageIO.write(image, "png", out)) {
-                    throw new IOException("no PNG writer available");
-                }
+                glint.image.ImageWriter.writePng(image, out);
             }
             String stamp = "glint-" + STAMP.format(now.get());
             Path file = folder.resolve(stamp + ".png");

@@ -1,10 +1,13 @@
 package glint.app;
 
 import static org.junit.jupiter.api.Assertions.assertEquals;
+import static org.junit.jupiter.api.Assertions.assertThrows;
 
+import glint.config.Config;
+import glint.input.InputException;
 import org.junit.jupiter.api.Test;
 
-/** The per-frame line of {@code --bench}. */
+/** The per-frame line of {@code --bench}, the memory check before a render, the progress shown. */
 class HeadlessTest {
 
     @Test
@@ -16,5 +19,52 @@ class HeadlessTest {
     @Test
     void withoutThreadCpuClocksTheLineGivesTheWallClockAlone() {
         assertEquals("frame 1: 9.00 ms", Headless.frameLine(1, 9.0, -1, -1));
+    }
+
+    // ---------------------------------------------------------------- memory
+
+    @Test
+    void theMemoryARenderNeedsIsItsFrameAndItsThreadsRowBuffers() {
+        Config c = Config.defaults().withSize(1920, 1080).withSamples(4096).withThreads(2);
+        // tiles 1920 / 8 = 240 pixels wide, x 4096 samples = 983,040 rays a row, x 256 bytes x 2 threads
+        // = 503,316,480; the frame and image: 1920 x 1080 x 16 = 33,177,600
+        assertEquals(503_316_480L + 33_177_600L, Headless.memoryNeeded(c, 16));
+    }
+
+    @Test
+    void aRenderTheHeapCannotHoldIsRefusedBeforeAnyMemoryIsTaken() {
+        Config c = Config.defaults().withSize(1920, 1080).withSamples(4096).withThreads(2);
+        InputException e = assertThrows(InputException.class, () -> Headless.checkMemory(c, 16, 256L << 20));
+        // 536,494,080 bytes round up to 512 MB; 256 MB less the 32 MB kept free
+        assertEquals("glint: 1920x1080 at 4096 samples with 2 threads needs about 512 MB of memory; the Java heap "
+                + "has 224 MB free (render fewer pixels, samples or threads, or start Java with a larger -Xmx)",
+                e.getMessage());
+    }
+
+    @Test
+    void theLargestImageAllowedFitsTheSizeArithmetic() throws InputException {
+        // 26,457 x 26,457 = 699,972,849 pixels, under max_image_pixels' ceiling of 700,000,000: no int overflows
+        Config c = Config.defaults().withSize(26_457, 26_457).withSamples(1).withThreads(1);
+        assertEquals(699_972_849L * 16 + 3_308L * 256, Headless.memoryNeeded(c, 16));
+        Headless.checkMemory(c, 16, 1L << 40); // a terabyte of heap: allowed
+    }
+
+    // ---------------------------------------------------------------- progress
+
+    @Test
+    void progressLinesGivePercentDoneAndTheTimeLeftAtTheSameSpeed() {
+        // a quarter in 10 s: three quarters take 30 s more
+        assertEquals("rendering: 25% done, about 30 s left", Progress.line(0.25, 10_000_000_000L));
+        // a tenth in 25 s: 225 s = 3 min 45 s more
+        assertEquals("rendering: 10% done, about 3 min 45 s left", Progress.line(0.1, 25_000_000_000L));
+        // 1 % in 60 s: 5,940 s = 1 h 39 min more
+        assertEquals("rendering: 1% done, about 1 h 39 min left", Progress.line(0.01, 60_000_000_000L));
+        assertEquals("rendering: 0% done, time left not known yet", Progress.line(0, 3_000_000_000L));
+    }
+
+    @Test
+    void theBarFillsInProportion() {
+        // 30 cells, half of them filled
+        assertEquals("[###############               ]  50%, about 4 s left", Progress.bar(0.5, 4_000_000_000L));
     }
 }

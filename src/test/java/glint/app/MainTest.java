@@ -92,7 +92,7 @@ class MainTest {
     void optionWithAValueOfTheWrongKind() {
         Result r = run("--width", "wide");
         assertEquals(2, r.status());
-        assertEquals("glint: Invalid value for option '--width': 'wide' is not an int", r.firstErrLine());
+        assertEquals("glint: Invalid value for option '--width': 'wide' is not a whole number written with the digits 0-9", r.firstErrLine());
         r.assertNoStackTrace();
     }
 
@@ -174,7 +174,7 @@ class MainTest {
         Path scene = write("tiny.yaml", TINY_SCENE);
         Result r = run("--config", config.toString(), "--scene", scene.toString(), "--bench", "0");
         assertEquals(2, r.status());
-        assertEquals("glint: --bench: expected a number of frames >= 1, got 0", r.firstErrLine());
+        assertEquals("glint: --bench: expected a number of frames from 1 to 100000, got 0", r.firstErrLine());
     }
 
     // ---------------------------------------------------------------- bad files: status 2
@@ -239,7 +239,10 @@ class MainTest {
         Path cfg = write("glint.properties", "scene=scenes/none.yaml\n");
         Result r = run("--config", cfg.toString(), "--output", dir.resolve("out.png").toString());
         assertEquals(2, r.status());
-        assertEquals(dir.resolve("scenes/none.yaml") + ": no such file", r.firstErrLine());
+        // the error is at the config's scene line and says which folder the path was resolved against
+        assertEquals(cfg + ":1:1: scene: no such file '" + dir.resolve("scenes/none.yaml") + "' (scene is resolved "
+                + "against the config file's folder, " + dir.toAbsolutePath() + "); set scene in the config or use "
+                + "--scene FILE", r.firstErrLine());
     }
 
     // ---------------------------------------------------------------- success: status 0
@@ -337,5 +340,95 @@ class MainTest {
         String[] all = Arrays.copyOf(first, first.length + more.length);
         System.arraycopy(more, 0, all, first.length, more.length);
         return all;
+    }
+
+    // ---------------------------------------------------------------- hostile arguments and output
+
+    @Test
+    void digitsOfOtherScriptsAreNotANumber() {
+        // Arabic-Indic 64: Java's own parser would take it as 64
+        Result r = run("--config", config.toString(), "--width", "\u0666\u0664");
+        assertEquals(2, r.status());
+        assertEquals("glint: Invalid value for option '--width': '\u0666\u0664' is not a whole number written with the "
+                + "digits 0-9", r.firstErrLine());
+    }
+
+    @Test
+    void anEmptySceneNameIsNotTheCurrentFolder() {
+        Result r = run("--config", config.toString(), "--scene", "", "--output", dir.resolve("o.png").toString());
+        assertEquals(2, r.status());
+        assertEquals("glint: --scene: expected a file name, got nothing", r.firstErrLine());
+    }
+
+    @Test
+    void anOutputThatIsAFolderIsRefusedBeforeTheSceneIsRead() throws IOException {
+        Path folder = Files.createDirectory(dir.resolve("renders.png"));
+        // the scene does not exist: the output is checked first, so no render is ever started
+        Result r = run("--config", config.toString(), "--scene", dir.resolve("none.yaml").toString(),
+                "--output", folder.toString());
+        assertEquals(2, r.status());
+        assertEquals("glint: --output: '" + folder + "' is a folder; expected an image file name such as out.png",
+                r.firstErrLine());
+    }
+
+    @Test
+    void anOutputThatIsAPipeIsRefused() throws Exception {
+        Path scene = write("tiny.yaml", TINY_SCENE);
+        Path pipe = dir.resolve("pipe.png");
+        assertEquals(0, new ProcessBuilder("mkfifo", pipe.toString()).start().waitFor(), "mkfifo");
+        Result r = run("--config", config.toString(), "--scene", scene.toString(), "--output", pipe.toString());
+        assertEquals(2, r.status());
+        assertEquals("glint: --output: '" + pipe + "' is not a regular file (a pipe or device); expected an image "
+                + "file name such as out.png", r.firstErrLine());
+    }
+
+    @Test
+    void aBillionBenchFramesAreRefusedUpFront() throws IOException {
+        Path scene = write("tiny.yaml", TINY_SCENE);
+        Result r = run("--config", config.toString(), "--scene", scene.toString(), "--bench", "1000000000");
+        assertEquals(2, r.status());
+        assertEquals("glint: --bench: expected a number of frames from 1 to 100000, got 1000000000", r.firstErrLine());
+        r.assertNoStackTrace();
+    }
+
+    @Test
+    void aSceneRendersAtDepth64() throws IOException {
+        Path scene = write("tiny.yaml", TINY_SCENE);
+        Path out = dir.resolve("deep.png");
+        Result r = run("--config", config.toString(), "--scene", scene.toString(), "--output", out.toString(),
+                "--width", "16", "--height", "12", "--depth", "64");
+        assertEquals(0, r.status(), r.err());
+        assertTrue(Files.size(out) > 0);
+    }
+
+    @Test
+    void aSceneLimitOfOneByteSaysBytesNotZeroMegabytes() throws IOException {
+        Path scene = write("tiny.yaml", TINY_SCENE);
+        Path cfg = write("one.properties", "max_scene_bytes=1\n");
+        Result r = run("--config", cfg.toString(), "--scene", scene.toString(), "--output", dir.resolve("o.png").toString());
+        assertEquals(2, r.status());
+        assertEquals(scene + ": the file is " + Files.size(scene) + " bytes; the largest scene accepted is 1 byte "
+                + "(config key max_scene_bytes)", r.firstErrLine());
+    }
+
+    @Test
+    void aConfigCopiedElsewhereSaysTheDefaultSceneIsResolvedAgainstItsFolder() throws IOException {
+        Path copied = Files.createDirectory(dir.resolve("copied"));
+        Path cfg = Files.writeString(copied.resolve("config.properties"), "threads=1\n");
+        Result r = run("--config", cfg.toString(), "--output", dir.resolve("o.png").toString());
+        assertEquals(2, r.status());
+        assertEquals(cfg + ": no such scene file '" + copied.resolve("scenes/default.yaml") + "' (scene is resolved "
+                + "against the config file's folder, " + copied.toAbsolutePath() + "; the default is "
+                + "scenes/default.yaml); set scene in the config or use --scene FILE", r.firstErrLine());
+    }
+
+    @Test
+    void aWindowSizeOfADoubleMaxImageIsRefusedNotOverflowed() throws IOException {
+        Path cfg = write("huge.properties", "max_image_pixels=700000000\ndisplay_width=65536\ndisplay_height=65536\n");
+        Result r = run("--config", cfg.toString(), "--output", dir.resolve("o.png").toString());
+        assertEquals(2, r.status());
+        // 65536 x 65536 = 4,294,967,296 pixels: computed in long, not wrapped to 0 in int
+        assertEquals(cfg + ":2:1: display_width x display_height: 65536x65536 is 4295.0 megapixels; the largest "
+                + "image allowed is 700.0 megapixels (config key max_image_pixels)", r.firstErrLine());
     }
 }

@@ -26,8 +26,11 @@ import org.junit.jupiter.params.provider.MethodSource;
 class MalformedCorpusTest {
 
     private static final Path CORPUS = Path.of("src/test/resources/malformed");
-    /** A guard against hangs, not a speed requirement. */
-    private static final Duration HANG_GUARD = Duration.ofSeconds(20);
+    /**
+     * A guard against hangs, not a speed requirement: a hang never ends, while the scene of 100,001
+     * objects took 17-22 s on 2 cores shared with other builds (load average 9.7).
+     */
+    private static final Duration HANG_GUARD = Duration.ofSeconds(60);
 
     @TempDir
     Path dir;
@@ -92,6 +95,41 @@ class MalformedCorpusTest {
         Files.writeString(many, text);
         // line 1 is "objects:", object k (from 1) is on line k + 1
         assertEquals(many + ":100002:5: too many objects: more than 100000 (config key max_objects)", refused(many));
+    }
+
+    @Test
+    void aFifoAsSceneIsRefusedWithoutOpeningIt() throws Exception {
+        Path fifo = dir.resolve("scene.yaml");
+        assertEquals(0, new ProcessBuilder("mkfifo", fifo.toString()).start().waitFor(), "mkfifo");
+        // opened for reading, a FIFO would block until a writer came: the hang guard would fail
+        assertEquals(fifo + ": is not a regular file (a pipe, device or socket); expected a file on disk", refused(fifo));
+    }
+
+    @Test
+    void devicesAsSceneAreRefusedWithoutReadingThem() {
+        // /dev/zero and /dev/urandom never end: read whole, they exhaust the heap
+        for (String device : List.of("/dev/zero", "/dev/urandom")) {
+            assertEquals(device + ": is not a regular file (a pipe, device or socket); expected a file on disk",
+                    refused(Path.of(device)));
+        }
+    }
+
+    @Test
+    void aLineOfEightMegabytesIsRefusedAtOnce() throws IOException {
+        // under the 8 MiB size limit, but the YAML reader's time grows with the square of a line's length
+        Path longLine = dir.resolve("long.yaml");
+        int length = 8 * 1024 * 1024 - 100;
+        Files.writeString(longLine, "objects: []\n#" + "x".repeat(length - 1) + "\n");
+        assertEquals(longLine + ":2:65537: line 2 is 8,388,508 characters long; the longest line accepted is 65,536 "
+                + "(break it into shorter lines)", refused(longLine));
+    }
+
+    @Test
+    void aKeyOfALongLineIsRefusedToo() throws IOException {
+        Path longKey = dir.resolve("key.yaml");
+        Files.writeString(longKey, "k".repeat(65_537) + ": 1\n");
+        assertEquals(longKey + ":1:65537: line 1 is 65,540 characters long; the longest line accepted is 65,536 "
+                + "(break it into shorter lines)", refused(longKey));
     }
 
     /** Runs a headless render of the scene and returns the first line it printed to stderr. */

@@ -3,6 +3,7 @@ package glint.config;
 import static org.junit.jupiter.api.Assertions.assertEquals;
 import static org.junit.jupiter.api.Assertions.assertFalse;
 import static org.junit.jupiter.api.Assertions.assertThrows;
+import static org.junit.jupiter.api.Assertions.assertTimeoutPreemptively;
 import static org.junit.jupiter.api.Assertions.assertTrue;
 
 import glint.input.InputException;
@@ -298,7 +299,8 @@ class ConfigLoaderTest {
 
     @Test
     void malformedUnicodeEscape() {
-        assertError("config.properties: not a properties file: Malformed \\uxxxx encoding.", "name=\\uZZZZ\n");
+        // the escape (a backslash, u and four letters that are not hex) starts in column 6
+        assertError("config.properties:1:6: a \\u escape needs four hex digits, as in \\u00e9", "name=\\uZZZZ\n");
     }
 
     // ---------------------------------------------------------------- files
@@ -348,5 +350,93 @@ class ConfigLoaderTest {
     void aMillionPixelWideImageIsRefused() {
         assertError("config.properties:1:1: display_width: expected a whole number from 1 to 65536, got '1000000'",
                 "display_width=1000000\n");
+    }
+
+    // ---------------------------------------------------------------- hostile input
+
+    @Test
+    void digitsOfOtherScriptsAreNotNumbers() {
+        // Arabic-Indic three and sixteen: Java's Integer.parseInt would take them
+        assertError("config.properties:1:1: threads: expected a whole number from 0 to 1024, got '\u0663'",
+                "threads=\u0663\n");
+        assertError("config.properties:1:1: samples: expected a whole number from 1 to 4096, got '\u0661\u0666'",
+                "samples=\u0661\u0666\n");
+        assertError("config.properties:1:1: epsilon: expected a positive number, got '0x1p-30'", "epsilon=0x1p-30\n");
+    }
+
+    @Test
+    void aKeyWrittenAcrossAContinuationKeepsItsLineAndColumn() {
+        // "thre\" + "  ads=x" is the key "threads" on line 2, column 3
+        assertError("config.properties:2:3: threads: expected a whole number from 0 to 1024, got 'x'",
+                "debug=false\n  thre\\\n    ads=x\n");
+    }
+
+    @Test
+    void aKeyWrittenWithAUnicodeEscapeKeepsItsLineAndColumn() {
+        // the escape of the letter t: the key is "threads", on line 3, column 1
+        assertError("config.properties:3:1: threads: expected a whole number from 0 to 1024, got 'x'",
+                "# c\n\n\\u0074hreads=x\n");
+    }
+
+    @Test
+    void aValueContinuedOnTheNextLineIsJoined() throws InputException {
+        assertEquals("My Glint", parse("name=My \\\n    Glint\n").name());
+    }
+
+    @Test
+    void escapesAndNewlinesInAKeyAreShownEscaped() {
+        // a key holding a line break and a terminal escape: one line, nothing the terminal acts on
+        assertError("config.properties:1:1: unknown key 'a\\nb\\u001b[2J' (expected one of: debug, epsilon, "
+                + "display_scale, screen_divider, display_height, recursion_max, display_width, name, scene, threads, "
+                + "shading, samples, min_weight, move_speed, turn_speed, target_fps, max_image_pixels, "
+                + "max_scene_bytes, max_objects, max_lights, max_recursion)", "a\\nb\u001b[2J=1\n");
+    }
+
+    @Test
+    void imagePixelsAboveWhatAnArrayHoldsAreRefused() {
+        // 3 floats a pixel in one Java array: at most (2^31 - 9) / 3 = 715,827,879 pixels
+        assertError("config.properties:1:1: max_image_pixels: expected a whole number from 1 to 700000000, "
+                + "got '2147483648'", "max_image_pixels=2147483648\n");
+    }
+
+    @Test
+    void recursionLimitsStopAt64() throws InputException {
+        assertError("config.properties:1:1: max_recursion: expected a whole number from 1 to 64, got '1024'",
+                "max_recursion=1024\n");
+        assertEquals(64, parse("recursion_max=64\n").recursionMax(), "the default limit allows 64");
+        assertError("config.properties:2:1: recursion_max: expected a whole number from 1 to 8, got '9'",
+                "max_recursion=8\nrecursion_max=9\n");
+    }
+
+    @Test
+    void aBinaryConfigSaysWhereAndWhy(@TempDir Path dir) throws IOException {
+        Path binary = Files.write(dir.resolve("b.properties"), new byte[] {'a', '=', '1', '\n', (byte) 0xC3, '('});
+        InputException e = assertThrows(InputException.class, () -> ConfigLoader.load(binary));
+        // 0xC3 starts a two-byte character that '(' cannot continue: line 2, column 1
+        assertEquals(binary + ":2:1: not UTF-8 text: byte 0xC3 cannot stand here in UTF-8 (save the file as UTF-8)",
+                e.getMessage());
+        Path utf16 = Files.write(dir.resolve("u.properties"), "threads=2\n".getBytes(java.nio.charset.StandardCharsets.UTF_16LE));
+        e = assertThrows(InputException.class, () -> ConfigLoader.load(utf16));
+        assertEquals(utf16 + ":1:1: not UTF-8 text: the file looks like UTF-16 (save it as UTF-8)", e.getMessage());
+    }
+
+    @Test
+    void aFifoOrDeviceAsConfigIsRefusedWithoutOpeningIt(@TempDir Path dir) throws Exception {
+        Path fifo = dir.resolve("fifo.properties");
+        assertEquals(0, new ProcessBuilder("mkfifo", fifo.toString()).start().waitFor());
+        InputException e = assertTimeoutPreemptively(java.time.Duration.ofSeconds(20),
+                () -> assertThrows(InputException.class, () -> ConfigLoader.load(fifo)));
+        assertEquals(fifo + ": is not a regular file (a pipe, device or socket); expected a file on disk", e.getMessage());
+        e = assertThrows(InputException.class, () -> ConfigLoader.load(Path.of("/dev/zero")));
+        assertEquals("/dev/zero: is not a regular file (a pipe, device or socket); expected a file on disk", e.getMessage());
+    }
+
+    @Test
+    void aConfigLargerThanOneMegabyteIsRefusedByItsSize(@TempDir Path dir) throws IOException {
+        Path big = Files.writeString(dir.resolve("big.properties"), "#" + "x".repeat(1 << 20) + "\n");
+        InputException e = assertThrows(InputException.class, () -> ConfigLoader.load(big));
+        // "#", 2^20 x "x", "\n": 1,048,578 bytes, in bytes since both round to 1.0 MB
+        assertEquals(big + ": the file is 1,048,578 bytes; the largest config file accepted is 1,048,576 bytes",
+                e.getMessage());
     }
 }

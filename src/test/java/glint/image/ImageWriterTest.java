@@ -63,4 +63,41 @@ class ImageWriterTest {
         assertEquals(188 << 16, image.getRGB(0, 0) & 0xFFFFFF);
         assertEquals(255 << 16 | 118 << 8 | 255, image.getRGB(1, 0) & 0xFFFFFF);
     }
+
+    @Test
+    void aWriteThatFailsHalfWayKeepsTheOldImageAndLeavesNoTemporaryFile() throws Exception {
+        Path image = dir.resolve("out.png");
+        byte[] old = "the image of the last run".getBytes(StandardCharsets.US_ASCII);
+        Files.write(image, old);
+        java.io.IOException full = new java.io.IOException("No space left on device");
+        java.io.IOException thrown = org.junit.jupiter.api.Assertions.assertThrows(java.io.IOException.class,
+                () -> ImageWriter.writeAtomically(image, ImageWriter.temporaryBeside(image), out -> {
+                    out.write(new byte[100_000]); // part of an image, then the disk is full
+                    throw full;
+                }));
+        assertEquals(full, thrown);
+        assertArrayEquals(old, Files.readAllBytes(image), "the old image is untouched");
+        try (var files = Files.list(dir)) {
+            assertEquals(java.util.List.of(image), files.toList(), "no temporary file left");
+        }
+    }
+
+    @Test
+    void aWrittenImageReplacesTheOldOneWhole() throws Exception {
+        Path image = dir.resolve("out.pfm");
+        Files.writeString(image, "old");
+        ImageWriter.write(sample(), image);
+        assertEquals(3, PfmReader.read(image).width());
+        try (var files = Files.list(dir)) {
+            assertEquals(java.util.List.of(image), files.toList(), "no temporary file left");
+        }
+    }
+
+    @Test
+    void theImageHasTheFolderUsualPermissionsNotATemporaryFilesPrivateOnes() throws Exception {
+        Path image = dir.resolve("out.png");
+        ImageWriter.write(sample(), image);
+        Path plain = Files.createFile(dir.resolve("plain.txt")); // made with the process's umask
+        assertEquals(Files.getPosixFilePermissions(plain), Files.getPosixFilePermissions(image));
+    }
 }

@@ -651,7 +651,9 @@ class SceneLoaderErrorTest {
         Path path = dir.resolve("image.yaml");
         Files.write(path, new byte[] {(byte) 0x89, 'P', 'N', 'G', (byte) 0xff, (byte) 0xfe});
         InputException e = assertThrows(InputException.class, () -> SceneLoader.load(path));
-        assertEquals(path + ": not a text file (expected UTF-8 YAML)", e.getMessage());
+        // 0x89 cannot start a UTF-8 character: the first byte, line 1, column 1
+        assertEquals(path + ":1:1: not UTF-8 text: byte 0x89 cannot stand here in UTF-8 (save the file as UTF-8)",
+                e.getMessage());
     }
 
     @Test

@@ -386,4 +386,39 @@ class SceneLoaderTest {
             assertTrue(scene.camera().fovDegrees() > 0, path::toString);
         }
     }
+
+    // ---------------------------------------------------------------- numbers at the edge of double
+
+    @Test
+    void hugeDirectionsAndNormalsAreScaledBeforeTheyAreNormalised() throws InputException {
+        // |(1e200, -1e200, 0)| overflows to infinity: normalised as is, the light would vanish (a zero direction)
+        Scene scene = SceneLoader.parse("edge", """
+                lights:
+                  - {type: directional, direction: [1e200, -1e200, 0]}
+                objects:
+                  - {type: plane, point: [0, 0, 0], normal: [0, 1e200, 1e200]}
+                  - {type: plane, point: [0, 0, 0], normal: [0, 1e-200, 0]}
+                """);
+        double half = Math.sqrt(0.5);
+        Light.Directional light = assertInstanceOf(Light.Directional.class, scene.lights().get(0));
+        assertVector(v(half, -half, 0), light.direction());
+        assertVector(v(0, half, half), ((Plane) scene.objects().get(0).shape()).normal());
+        // |(0, 1e-200, 0)| squared underflows to 0: it would be taken for the zero vector
+        assertVector(v(0, 1, 0), ((Plane) scene.objects().get(1).shape()).normal());
+    }
+
+    @Test
+    void ordinaryDirectionsAreNormalisedExactlyAsBefore() throws InputException {
+        // scaling first would change the last bit of some; a direction of ordinary size is left alone
+        Vector3d d = new Vector3d(0.3, -1.7, 2.9);
+        Scene scene = SceneLoader.parse("ordinary", "lights:\n  - {type: directional, direction: [0.3, -1.7, 2.9]}\n");
+        assertEquals(d.normalize(), ((Light.Directional) scene.lights().get(0)).direction());
+    }
+
+    @Test
+    void aHugeUpVectorIsNotTakenForParallel() throws InputException {
+        Scene scene = SceneLoader.parse("up", "camera: {position: [0, 0, -5], look_at: [0, 0, 0], up: [0, 1e300, 0]}\n");
+        Scene plain = SceneLoader.parse("up", "camera: {position: [0, 0, -5], look_at: [0, 0, 0], up: [0, 1, 0]}\n");
+        assertEquals(plain.camera(), scene.camera());
+    }
 }

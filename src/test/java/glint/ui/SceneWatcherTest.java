@@ -1,6 +1,7 @@
 package glint.ui;
 
 import static org.junit.jupiter.api.Assertions.assertEquals;
+import static org.junit.jupiter.api.Assertions.assertTimeoutPreemptively;
 import static org.junit.jupiter.api.Assertions.assertTrue;
 
 import glint.input.InputException;
@@ -12,6 +13,7 @@ import java.io.OutputStream;
 import java.nio.charset.StandardCharsets;
 import java.nio.file.Files;
 import java.nio.file.Path;
+import java.time.Duration;
 import java.util.ArrayList;
 import java.util.List;
 import org.junit.jupiter.api.AfterEach;
@@ -175,5 +177,24 @@ class SceneWatcherTest {
         watcher.poll();
         watcher.poll();
         assertEquals(file + ": no such file", ((InputException) recorder.reports().get(0)).getMessage());
+    }
+
+    @Test
+    void aSceneReplacedByAFifoIsReportedWithoutBlockingAndTheNextGoodFileLoads() throws Exception {
+        watcher.listen(recorder);
+        Files.delete(file);
+        Process mkfifo = new ProcessBuilder("mkfifo", file.toString()).start();
+        assertEquals(0, mkfifo.waitFor(), "mkfifo");
+        assertTimeoutPreemptively(Duration.ofSeconds(20), () -> {
+            watcher.poll(); // opening a FIFO for reading would block until a writer comes: never opened
+            watcher.poll();
+        });
+        assertEquals(file + ": is not a regular file (a pipe, device or socket); expected a file on disk",
+                ((InputException) recorder.reports().get(0)).getMessage());
+        Files.delete(file);
+        Files.writeString(file, TestScenes.sphere(0.3, 0.6, 0.9));
+        watcher.poll();
+        watcher.poll();
+        assertEquals(0.6, ((Scene) recorder.reports().get(1)).background().y(), 1e-12, "the watcher still works");
     }
 }
