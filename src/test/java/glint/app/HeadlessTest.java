@@ -26,18 +26,18 @@ class HeadlessTest {
     @Test
     void theMemoryARenderNeedsIsItsFrameAndItsThreadsRowBuffers() {
         Config c = Config.defaults().withSize(1920, 1080).withSamples(4096).withThreads(2);
-        // tiles 1920 / 8 = 240 pixels wide, x 4096 samples = 983,040 rays a row, x 256 bytes x 2 threads
-        // = 503,316,480; the frame and image: 1920 x 1080 x 16 = 33,177,600
-        assertEquals(503_316_480L + 33_177_600L, Headless.memoryNeeded(c, 16));
+        // tiles 1920 / 8 = 240 pixels wide, x 4096 samples = 983,040 rays a row, x 64 bytes x 2 threads
+        // = 125,829,120; the frame and image: 1920 x 1080 x 16 = 33,177,600
+        assertEquals(125_829_120L + 33_177_600L, Headless.memoryNeeded(c, 16));
     }
 
     @Test
     void aRenderTheHeapCannotHoldIsRefusedBeforeAnyMemoryIsTaken() {
         Config c = Config.defaults().withSize(1920, 1080).withSamples(4096).withThreads(2);
-        InputException e = assertThrows(InputException.class, () -> Headless.checkMemory(c, 16, 256L << 20));
-        // 536,494,080 bytes round up to 512 MB; 256 MB less the 32 MB kept free
-        assertEquals("glint: 1920x1080 at 4096 samples with 2 threads needs about 512 MB of memory; the Java heap "
-                + "has 224 MB free (render fewer pixels, samples or threads, or start Java with a larger -Xmx)",
+        InputException e = assertThrows(InputException.class, () -> Headless.checkMemory(c, 16, 128L << 20));
+        // 159,006,720 bytes round up to 152 MB; 128 MB less the 32 MB kept free
+        assertEquals("glint: 1920x1080 at 4096 samples with 2 threads needs about 152 MB of memory; the Java heap "
+                + "has 96 MB free (render fewer pixels, samples or threads, or start Java with a larger -Xmx)",
                 e.getMessage());
     }
 
@@ -45,7 +45,7 @@ class HeadlessTest {
     void theLargestImageAllowedFitsTheSizeArithmetic() throws InputException {
         // 26,457 x 26,457 = 699,972,849 pixels, under max_image_pixels' ceiling of 700,000,000: no int overflows
         Config c = Config.defaults().withSize(26_457, 26_457).withSamples(1).withThreads(1);
-        assertEquals(699_972_849L * 16 + 3_308L * 256, Headless.memoryNeeded(c, 16));
+        assertEquals(699_972_849L * 16 + 3_308L * 64, Headless.memoryNeeded(c, 16));
         Headless.checkMemory(c, 16, 1L << 40); // a terabyte of heap: allowed
     }
 
