@@ -18,7 +18,7 @@ import java.util.Locale;
  * times do not. Checks first that both render the same image. 800x600, 1 sample per pixel, depth 5,
  * cook-torrance, the shipped {@code min_weight} and epsilon.
  *
- * <p>Usage, from the repository root: {@code java -cp target/glint.jar glint.bench.PairedFrames
+ * <p>Usage, from the repository root: {@code java -cp target/benchmarks.jar glint.bench.PairedFrames
  * [scene.yaml] [threads] [pairs]} (default scenes/default.yaml, 2 threads, 200 pairs).
  */
 public final class PairedFrames {
@@ -38,7 +38,7 @@ public final class PairedFrames {
             System.exit(run(scenePath, threads, pairs));
         } catch (InputException | IllegalArgumentException e) {
             System.err.println("error: " + e.getMessage());
-            System.err.println("usage: java -cp target/glint.jar glint.bench.PairedFrames [scene.yaml] [threads] [pairs]");
+            System.err.println("usage: java -cp target/benchmarks.jar glint.bench.PairedFrames [scene.yaml] [threads] [pairs]");
             System.exit(2);
         }
     }
