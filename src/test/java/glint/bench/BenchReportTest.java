@@ -56,7 +56,7 @@ class BenchReportTest {
     void theTableGivesMediansRangesMeansAndTheFrameRateOfFrameTimesOnly(@TempDir Path dir) throws Exception {
         List<Result> results = BenchReport.read(Files.writeString(dir.resolve("jmh.json"), JSON));
         assertEquals("""
-                Generated from `jmh.json` by `java -cp target/glint.jar glint.bench.BenchReport jmh.json`.
+                Generated from `jmh.json` by `java -cp target/benchmarks.jar glint.bench.BenchReport jmh.json`.
 
                 | benchmark | parameters | median | range | mean ± error (99.9%) | unit | frames per second (median) |
                 |---|---|---:|---:|---:|---|---:|
@@ -85,5 +85,12 @@ class BenchReportTest {
         assertEquals(800, glass.getWidth());
         assertEquals(500, glass.getHeight());
         assertFalse(Files.exists(docs.resolve("images/bench-matte.png")), "no matte results, no matte chart");
+    }
+
+    @Test
+    void writesUnderTargetUnlessToldToUpdateTheDocsOrGivenAFolder() {
+        assertEquals(Path.of("target/bench-report"), BenchReport.output("target/jmh.json"));
+        assertEquals(Path.of("docs"), BenchReport.output("target/jmh.json", "--docs"));
+        assertEquals(Path.of("out"), BenchReport.output("target/jmh.json", "out"));
     }
 }

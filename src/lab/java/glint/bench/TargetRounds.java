@@ -14,14 +14,14 @@ import java.util.stream.Collectors;
 import java.util.stream.Stream;
 
 /**
- * Measures the frame-time targets of docs/benchmarks.md as the issue states them: rounds of
+ * Measures the frame-time targets of docs/benchmarks.md as they are stated: rounds of
  * {@code --bench N} (800x600, 1 sample, depth 5), each run in a fresh JVM, for the default scene,
  * 25 glass spheres and 1,000 spheres with 1 and 2 threads, one run after another; then prints the
  * table: the median of the rounds' medians (and of their p95), every round's median, and the
  * speed-up of 2 threads over 1 in each round. On a shared machine the rounds spread widely; the
  * medians over rounds run in turn are what to compare.
  *
- * <p>Usage, from the repository root: {@code java -cp target/glint.jar glint.bench.TargetRounds [rounds] [frames]}
+ * <p>Usage, from the repository root: {@code java -cp target/benchmarks.jar glint.bench.TargetRounds [rounds] [frames]}
  * (default 6 rounds of 60 frames).
  */
 public final class TargetRounds {
@@ -101,7 +101,7 @@ public final class TargetRounds {
             // reported below
         }
         fail(name + " must be a whole number of at least 1, got '" + args[index]
-                + "'; usage: java -cp target/glint.jar glint.bench.TargetRounds [rounds] [frames]");
+                + "'; usage: java -cp target/benchmarks.jar glint.bench.TargetRounds [rounds] [frames]");
         return fallback;
     }
 

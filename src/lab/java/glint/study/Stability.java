@@ -13,31 +13,32 @@ import java.util.Map;
 
 /**
  * The stability study: for each known failure of a textbook method, the textbook method beside
- * Glint's, charted into docs/images/stability-*.png with the tables in docs/stability.md. Run from the
- * repository root (about half a minute on 2 cores):
+ * Glint's, charted into images/stability-*.png with the tables of stability.md in an output folder:
+ * target/study/ by default, docs/ itself with --docs, or --out DIR. Run from the repository root, with the
+ * lab jar built (docs/benchmarks.md; about half a minute on 2 cores):
  *
- * <pre>java -cp target/glint.jar glint.study.Stability [--out DIR]</pre>
+ * <pre>java -cp target/benchmarks.jar glint.study.Stability [--docs | --out DIR]</pre>
  */
 public final class Stability {
 
-    static final String COMMAND = "java -cp target/glint.jar glint.study.Stability";
+    static final String COMMAND = "java -cp target/benchmarks.jar glint.study.Stability";
 
     private Stability() {
     }
 
     public static void main(String[] args) throws Exception {
-        Path out = Path.of("docs");
-        for (int i = 0; i < args.length; i++) {
-            if (args[i].equals("--out")) {
-                out = Path.of(args[++i]);
-            } else {
-                System.err.println("usage: Stability [--out DIR]");
-                System.exit(2);
-            }
+        Path out;
+        try {
+            out = output(args);
+        } catch (IllegalArgumentException e) {
+            System.err.println("Stability: " + e.getMessage());
+            System.exit(2);
+            return;
         }
         Path images = out.resolve("images");
         Path doc = out.resolve("stability.md");
-        String stamp = "Generated " + LocalDate.now() + " by `" + COMMAND + "` (" + Runtime.getRuntime().availableProcessors()
+        String command = COMMAND + (args.length > 0 ? " " + String.join(" ", args) : "");
+        String stamp = "Generated " + LocalDate.now() + " by `" + command + "` (" + Runtime.getRuntime().availableProcessors()
                 + " cores, shared; the results do not depend on the machine: they are counts, not times).";
         GeneratedSection.write(doc, "stability-stamp", stamp);
         GeneratedSection.write(doc, "stability-sphere", spheres(images));
@@ -46,6 +47,26 @@ public final class Stability {
         GeneratedSection.write(doc, "stability-microfacet", microfacet(images));
         GeneratedSection.write(doc, "stability-quaternion", quaternion(images));
         System.out.println("wrote " + images.resolve("stability-*.png") + " and " + doc);
+    }
+
+    /** The output folder the arguments choose: target/study, docs/ with --docs, or --out DIR. */
+    static Path output(String... args) {
+        Path out = Path.of("target/study");
+        int choices = 0;
+        for (int i = 0; i < args.length; i++) {
+            if (args[i].equals("--out") && i + 1 < args.length) {
+                out = Path.of(args[++i]);
+            } else if (args[i].equals("--docs")) {
+                out = Path.of("docs");
+            } else {
+                throw new IllegalArgumentException("unexpected '" + args[i] + "'; usage: Stability [--docs | --out DIR]");
+            }
+            choices++;
+        }
+        if (choices > 1) {
+            throw new IllegalArgumentException("--docs and --out both choose the output folder; give one");
+        }
+        return out;
     }
 
     // ---- ray-sphere -----------------------------------------------------------------------------

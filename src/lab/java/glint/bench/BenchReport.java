@@ -18,10 +18,11 @@ import org.snakeyaml.engine.v2.api.Load;
 import org.snakeyaml.engine.v2.api.LoadSettings;
 
 /**
- * Turns a JMH JSON result file into the charts docs/images/bench-*.png and the results table of
- * docs/benchmarks.md (between its results markers).
+ * Turns a JMH JSON result file into the charts images/bench-*.png and the results table of
+ * benchmarks.md (between its results markers) in an output folder: target/bench-report by default,
+ * docs/ itself with {@code --docs}, or the folder given.
  *
- * <p>Usage: {@code java -cp target/glint.jar glint.bench.BenchReport target/jmh.json [docs]}
+ * <p>Usage: {@code java -cp target/benchmarks.jar glint.bench.BenchReport target/jmh.json [--docs | FOLDER]}
  */
 public final class BenchReport {
 
@@ -44,11 +45,11 @@ public final class BenchReport {
     }
 
     public static void main(String[] args) throws IOException {
-        if (args.length < 1) {
-            System.err.println("usage: java -cp target/glint.jar glint.bench.BenchReport JMH_JSON [DOCS_FOLDER]");
+        if (args.length < 1 || args.length > 2) {
+            System.err.println("usage: java -cp target/benchmarks.jar glint.bench.BenchReport JMH_JSON [--docs | FOLDER]");
             System.exit(2);
         }
-        Path docs = Path.of(args.length > 1 ? args[1] : "docs");
+        Path docs = output(args);
         List<Result> results = read(Path.of(args[0]));
         Files.createDirectories(docs.resolve("images"));
         for (String material : new String[] {"matte", "glass"}) {
@@ -71,6 +72,14 @@ public final class BenchReport {
         text = text.substring(0, a + START.length()) + "\n" + table + text.substring(b);
         Files.writeString(page, text, StandardCharsets.UTF_8);
         System.out.println("wrote " + page + " and charts in " + docs.resolve("images"));
+    }
+
+    /** The output folder: target/bench-report, docs/ with --docs, or the folder after the JSON file. */
+    static Path output(String... args) {
+        if (args.length < 2) {
+            return Path.of("target/bench-report");
+        }
+        return Path.of(args[1].equals("--docs") ? "docs" : args[1]);
     }
 
     @SuppressWarnings("unchecked")
@@ -131,7 +140,7 @@ public final class BenchReport {
      */
     static String table(List<Result> results, String source) {
         StringBuilder md = new StringBuilder();
-        md.append(String.format(Locale.ROOT, "Generated from `%s` by `java -cp target/glint.jar glint.bench.BenchReport %s`.%n%n",
+        md.append(String.format(Locale.ROOT, "Generated from `%s` by `java -cp target/benchmarks.jar glint.bench.BenchReport %s`.%n%n",
                 source, source));
         md.append("| benchmark | parameters | median | range | mean ± error (99.9%) | unit | frames per second (median) |\n"
                 + "|---|---|---:|---:|---:|---|---:|\n");

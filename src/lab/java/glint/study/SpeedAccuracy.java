@@ -18,15 +18,16 @@ import java.util.Locale;
 /**
  * The speed/accuracy study: renders each study scene under many configurations, times each (median
  * of several frames after warm-up) and measures its error against Glint's reference mode (relative
- * MSE and SSIM), then writes docs/images/accuracy.png, docs/images/accuracy-ssim.png and the tables
- * in docs/accuracy.md. Run from the repository root:
+ * MSE and SSIM), then writes images/accuracy.png, images/accuracy-ssim.png and the tables of
+ * accuracy.md into an output folder. Run from the repository root, with the lab jar built
+ * (docs/benchmarks.md):
  *
- * <pre>java -cp target/glint.jar glint.study.SpeedAccuracy [--quick] [--runs N] [--threads T] [--fresh]</pre>
+ * <pre>java -cp target/benchmarks.jar glint.study.SpeedAccuracy [--quick] [--runs N] [--threads T] [--fresh] [--docs | --out DIR]</pre>
  *
  * --quick: 200 x 150, reference at 64 samples, 3 rounds, 10 configurations (under a minute on 2 cores);
  * the default: 400 x 300, reference at 1024 samples, 9 rounds, 21 configurations (a few minutes).
- * --fresh renders the references again (cached in target/study-cache). The full run writes into docs/; --quick
- * into target/study-quick/ (a smoke run that leaves the docs alone); --out DIR chooses.
+ * --fresh renders the references again (cached in target/study-cache). The output goes to target/study/
+ * (target/study-quick/ with --quick); --docs updates docs/ itself, --out DIR chooses another folder.
  */
 public final class SpeedAccuracy {
 
@@ -38,6 +39,7 @@ public final class SpeedAccuracy {
         int runs = -1, threads = Runtime.getRuntime().availableProcessors();
         Path root = Path.of(".");
         Path out = null;
+        boolean docs = false;
         for (int i = 0; i < args.length; i++) {
             switch (args[i]) {
                 case "--quick" -> quick = true;
@@ -46,15 +48,18 @@ public final class SpeedAccuracy {
                 case "--threads" -> threads = Integer.parseInt(args[++i]);
                 case "--root" -> root = Path.of(args[++i]);
                 case "--out" -> out = Path.of(args[++i]);
+                case "--docs" -> docs = true;
                 default -> {
-                    System.err.println("usage: SpeedAccuracy [--quick] [--runs N] [--threads T] [--fresh] [--root DIR] [--out DIR]");
+                    System.err.println("usage: SpeedAccuracy [--quick] [--runs N] [--threads T] [--fresh] [--root DIR] [--docs | --out DIR]");
                     System.exit(2);
                 }
             }
         }
-        if (out == null) {
-            out = root.resolve(quick ? "target/study-quick" : "docs");
+        if (docs && out != null) {
+            System.err.println("SpeedAccuracy: --docs and --out both choose the output folder; give one");
+            System.exit(2);
         }
+        out = output(root, quick, docs, out);
         int width = quick ? 200 : 400, height = quick ? 150 : 300;
         int referenceSamples = quick ? 64 : 1024;
         if (runs < 0) {
@@ -65,12 +70,12 @@ public final class SpeedAccuracy {
         Path cache = root.resolve("target/study-cache");
 
         StringBuilder meta = new StringBuilder();
-        meta.append(String.format(Locale.ROOT, "Generated %s by `java -cp target/glint.jar glint.study.SpeedAccuracy%s` "
+        meta.append(String.format(Locale.ROOT, "Generated %s by `java -cp target/benchmarks.jar glint.study.SpeedAccuracy%s` "
                         + "on %d cores (%s, shared with other work; load average %.2f at the start), "
                         + "%d render threads, %dx%d pixels, median of %d frames per configuration (timed in turn, round by round, "
                         + "after one untimed round; CPU time is the sum over the JVM's threads, i.e. all render threads together); "
                         + "reference: cook-torrance, exact Fresnel, depth 16, min_weight 0, %d stratified samples.%n",
-                LocalDate.now(), quick ? " --quick" : "", Runtime.getRuntime().availableProcessors(),
+                LocalDate.now(), (quick ? " --quick" : "") + (docs ? " --docs" : ""), Runtime.getRuntime().availableProcessors(),
                 System.getProperty("java.vm.name") + " " + System.getProperty("java.version"),
                 ManagementFactory.getOperatingSystemMXBean().getSystemLoadAverage(), threads, width, height, runs,
                 referenceSamples));
@@ -109,6 +114,14 @@ public final class SpeedAccuracy {
         meta.append(String.format(Locale.ROOT, "Load average at the end: %.2f.%n",
                 ManagementFactory.getOperatingSystemMXBean().getSystemLoadAverage()));
         write(out, scenes, perScene, meta.toString(), validation.toString());
+    }
+
+    /** The output folder: the one given, else docs/ with --docs, else target/study (target/study-quick with --quick). */
+    static Path output(Path root, boolean quick, boolean docs, Path out) {
+        if (out != null) {
+            return out;
+        }
+        return root.resolve(docs ? "docs" : quick ? "target/study-quick" : "target/study");
     }
 
     /** The default scene and the two scenes that have an independent (Mitsuba) reference. */
