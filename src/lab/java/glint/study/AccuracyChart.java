@@ -62,9 +62,9 @@ final class AccuracyChart {
         StudyConfig.Knob[] swept = {StudyConfig.Knob.DEPTH, StudyConfig.Knob.SAMPLES, StudyConfig.Knob.MIN_WEIGHT};
         StudyConfig centre = StudyConfig.shipped();
         String weight = "w" + Numbers.sci(centre.minWeight());
-        String[] names = {"depth 1..8 (s" + centre.samples() + " " + weight + ")",
+        String[] names = {"depth 1..24 (s" + centre.samples() + " " + weight + ")",
                 "samples 1..64 (d" + centre.depth() + " " + weight + ")",
-                "min_weight 0..0.1 (d" + centre.depth() + " s" + centre.samples() + ")"};
+                "min_weight 0.001..0.1 (d" + centre.depth() + " s" + centre.samples() + ")"};
         int[] colors = {1, 3, 4};
         for (int k = 0; k < swept.length; k++) {
             List<Integer> members = new ArrayList<>();
@@ -91,7 +91,7 @@ final class AccuracyChart {
         for (int i = 0; i < ms.size(); i++) {
             StudyConfig.Knob knob = ms.get(i).config().knob();
             if (knob == StudyConfig.Knob.SEVERAL || knob == StudyConfig.Knob.SHADING
-                    || knob == StudyConfig.Knob.FRESNEL) {
+                    || knob == StudyConfig.Knob.FRESNEL || knob == StudyConfig.Knob.PRUNING) {
                 others.add(i);
             }
         }

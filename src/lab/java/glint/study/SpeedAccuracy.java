@@ -74,7 +74,7 @@ public final class SpeedAccuracy {
                         + "on %d cores (%s, shared with other work; load average %.2f at the start), "
                         + "%d render threads, %dx%d pixels, median of %d frames per configuration (timed in turn, round by round, "
                         + "after one untimed round; CPU time is the sum over the JVM's threads, i.e. all render threads together); "
-                        + "reference: cook-torrance, exact Fresnel, depth 16, min_weight 0, %d stratified samples.%n",
+                        + "reference: cook-torrance, exact Fresnel, depth 64, plain cut-off at min_weight 1e-4, %d stratified samples.%n",
                 LocalDate.now(), (quick ? " --quick" : "") + (docs ? " --docs" : ""), Runtime.getRuntime().availableProcessors(),
                 System.getProperty("java.vm.name") + " " + System.getProperty("java.version"),
                 ManagementFactory.getOperatingSystemMXBean().getSystemLoadAverage(), threads, width, height, runs,
@@ -124,14 +124,18 @@ public final class SpeedAccuracy {
         return root.resolve(docs ? "docs" : quick ? "target/study-quick" : "target/study");
     }
 
-    /** The default scene and the two scenes that have an independent (Mitsuba) reference. */
+    /**
+     * The default scene, the two scenes that have an independent (Mitsuba) reference, and clear glass
+     * on a mirror floor (src/test/resources/scenes), whose light takes the most bounces.
+     */
     static List<StudyScene> scenes(Path root) throws IOException, InputException {
         Path refs = root.resolve("src/test/resources/reference");
         return List.of(
                 StudyScene.load("default", root.resolve("scenes/default.yaml"), null),
                 StudyScene.load("three-spheres", refs.resolve("three-spheres.yaml"), refs.resolve("three-spheres.pfm")),
                 StudyScene.load("hall-of-mirrors", refs.resolve("hall-of-mirrors.yaml"),
-                        refs.resolve("hall-of-mirrors.pfm")));
+                        refs.resolve("hall-of-mirrors.pfm")),
+                StudyScene.load("glass-on-mirror", root.resolve("src/test/resources/scenes/glass-on-mirror.yaml"), null));
     }
 
     /** A few frames so that the JIT has compiled the render loop before anything is timed. */

@@ -8,7 +8,8 @@ import java.util.List;
 
 /**
  * The configurations the speed/accuracy study measures: each knob swept on its own from the shipped
- * default (depth, samples, pruning weight, shading model, glass Fresnel), plus a few combinations.
+ * default (depth, samples, pruning weight, the plain cut-off instead of roulette, shading model, glass
+ * Fresnel), plus a few combinations, among them the earlier defaults (depth 5, cut-off at 0.01).
  */
 public final class StudyConfigs {
 
@@ -19,22 +20,24 @@ public final class StudyConfigs {
         LinkedHashSet<StudyConfig> all = new LinkedHashSet<>();
         StudyConfig shipped = StudyConfig.shipped();
         all.add(shipped);
-        for (int depth : new int[] {1, 2, 3, 4, 6, 8}) {
+        for (int depth : new int[] {1, 2, 3, 5, 8, 12, 24}) {
             all.add(StudyConfig.ct(depth, shipped.samples(), shipped.minWeight()));
         }
         for (int samples : new int[] {1, 9, 16, 64}) {
             all.add(StudyConfig.ct(shipped.depth(), samples, shipped.minWeight()));
         }
-        for (double weight : new double[] {0, 1e-3, 1e-2, 1e-1}) { // the shipped one is already in
+        for (double weight : new double[] {1e-3, 1e-2, 3e-2, 1e-1}) { // the shipped one is already in
             all.add(StudyConfig.ct(shipped.depth(), shipped.samples(), weight));
         }
+        all.add(shipped.cutOff());
         all.add(shipped.withFresnel(GlassFresnel.SCHLICK));
         all.add(shipped.withShading(Shading.PHONG));
-        all.add(StudyConfig.ct(3, 1, 1e-2));
-        all.add(StudyConfig.ct(4, 1, 1e-3));
-        all.add(StudyConfig.ct(3, 16, 1e-3));
-        all.add(StudyConfig.ct(6, 16, 1e-3));
-        all.add(StudyConfig.ct(8, 16, 0));
+        all.add(StudyConfig.ct(5, 4, 1e-2).cutOff()); // the earlier default
+        all.add(StudyConfig.ct(5, 1, 1e-2).cutOff());
+        all.add(StudyConfig.ct(5, 16, 1e-2).cutOff());
+        all.add(StudyConfig.ct(8, 1, 1e-2));
+        all.add(StudyConfig.ct(12, 16, 1e-2));
+        all.add(StudyConfig.ct(16, 16, 3e-2));
         return new ArrayList<>(all);
     }
 
@@ -50,11 +53,12 @@ public final class StudyConfigs {
         list.add(shipped);
         list.add(StudyConfig.ct(1, samples, weight));
         list.add(StudyConfig.ct(3, samples, weight));
-        list.add(StudyConfig.ct(8, samples, weight));
+        list.add(StudyConfig.ct(5, samples, weight));
         list.add(StudyConfig.ct(depth, 1, weight));
         list.add(StudyConfig.ct(depth, 16, weight));
-        list.add(StudyConfig.ct(depth, samples, 0));
         list.add(StudyConfig.ct(depth, samples, 1e-3));
+        list.add(StudyConfig.ct(depth, samples, 1e-1));
+        list.add(shipped.cutOff());
         list.add(shipped.withFresnel(GlassFresnel.SCHLICK));
         list.add(shipped.withShading(Shading.PHONG));
         return list;

@@ -29,7 +29,7 @@ public record Config(boolean debug, double epsilon, double displayScale, int scr
                      double moveSpeed, double turnSpeed, double targetFps, Limits limits) {
 
     public static Config defaults() {
-        return new Config(false, 1e-9, 2, 8, 800, 600, 5, "Glint", "scenes/default.yaml",
+        return new Config(false, 1e-9, 2, 8, 800, 600, 16, "Glint", "scenes/default.yaml",
                 0, Shading.COOK_TORRANCE, 4, 1e-2, 2.0, 60, 30, Limits.DEFAULT);
     }
 

@@ -68,11 +68,12 @@ final class CookTorrance implements ShadingModel {
             double fG = Bsdf.conductorFresnel(m.color(material, 1), s.cosIncident);
             double fB = Bsdf.conductorFresnel(m.color(material, 2), s.cosIncident);
             double childWeight = weight * Math.max(fR, Math.max(fG, fB));
-            if (childWeight >= it.minWeight) {
-                Rgb mirrored = it.traceReflected(s, dx, dy, dz, hitsLeft, childWeight);
-                sum.r += fR * mirrored.r;
-                sum.g += fG * mirrored.g;
-                sum.b += fB * mirrored.b;
+            double keep = it.keep(childWeight);
+            if (keep > 0) {
+                Rgb mirrored = it.traceReflected(s, dx, dy, dz, hitsLeft, childWeight * keep);
+                sum.r += keep * fR * mirrored.r;
+                sum.g += keep * fG * mirrored.g;
+                sum.b += keep * fB * mirrored.b;
             }
         }
         v.radiance.set(sum.r, sum.g, sum.b);
@@ -89,21 +90,24 @@ final class CookTorrance implements ShadingModel {
             int material = s.material;
             double eta = Bsdf.eta(m.ior(material), s.front);
             double reflectance = Bsdf.dielectricReflectance(s.cosIncident, eta, it.exactFresnel);
-            if (weight * reflectance >= it.minWeight) {
-                Rgb reflected = it.traceReflected(s, dx, dy, dz, hitsLeft, weight * reflectance);
-                sum.r += reflectance * reflected.r;
-                sum.g += reflectance * reflected.g;
-                sum.b += reflectance * reflected.b;
+            double keepReflected = it.keep(weight * reflectance);
+            if (keepReflected > 0) {
+                Rgb reflected = it.traceReflected(s, dx, dy, dz, hitsLeft, weight * reflectance * keepReflected);
+                double k = keepReflected * reflectance;
+                sum.r += k * reflected.r;
+                sum.g += k * reflected.g;
+                sum.b += k * reflected.b;
             }
             double tR = (1 - reflectance) * m.color(material, 0);
             double tG = (1 - reflectance) * m.color(material, 1);
             double tB = (1 - reflectance) * m.color(material, 2);
             double childWeight = weight * Math.max(tR, Math.max(tG, tB));
-            if (reflectance < 1 && childWeight >= it.minWeight) {
-                Rgb refracted = it.traceRefracted(v, dx, dy, dz, eta, hitsLeft, childWeight);
-                sum.r += tR * refracted.r;
-                sum.g += tG * refracted.g;
-                sum.b += tB * refracted.b;
+            double keepRefracted = reflectance < 1 ? it.keep(childWeight) : 0;
+            if (keepRefracted > 0) {
+                Rgb refracted = it.traceRefracted(v, dx, dy, dz, eta, hitsLeft, childWeight * keepRefracted);
+                sum.r += keepRefracted * tR * refracted.r;
+                sum.g += keepRefracted * tG * refracted.g;
+                sum.b += keepRefracted * tB * refracted.b;
             }
         }
         v.radiance.set(sum.r, sum.g, sum.b);

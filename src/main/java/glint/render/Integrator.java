@@ -34,12 +34,15 @@ final class Integrator {
 
     // the scene's settings, read once per scene rather than through the record on every ray
     double epsilon, minWeight;
-    boolean exactFresnel;
+    boolean exactFresnel, roulette;
     Materials materials;
     Lights lights;
 
     /** Rays traced so far: camera, reflected, refracted and shadow rays. */
     long rays;
+
+    // the camera ray whose path is being traced, which seeds its random decisions, and how many it made
+    private int pathPixel, pathFrame, pathSample, pathDraws;
 
     /** Makes this integrator trace rays of {@code renderScene}; cheap when it already does. */
     void prepare(RenderScene renderScene) {
@@ -54,6 +57,7 @@ final class Integrator {
         epsilon = settings.epsilon();
         minWeight = settings.minWeight();
         exactFresnel = settings.glassFresnel() == RenderSettings.GlassFresnel.EXACT;
+        roulette = settings.pruning() == RenderSettings.Pruning.ROULETTE;
         materials = renderScene.materials;
         lights = renderScene.lights;
         stack = aggregate.newStack();
@@ -68,6 +72,36 @@ final class Integrator {
 
     RenderScene scene() {
         return scene;
+    }
+
+    /**
+     * Starts the path of camera ray (pixel, frame, sample): the roulette's random numbers that
+     * follow are a pure function of these and of their order along the path, so the image does not
+     * depend on threads or tiles.
+     */
+    void beginPath(int pixelIndex, int frameIndex, int sample) {
+        pathPixel = pixelIndex;
+        pathFrame = frameIndex;
+        pathSample = sample;
+        pathDraws = 0;
+    }
+
+    /**
+     * What a child ray of path weight {@code childWeight} counts for: 1 when it is at least
+     * min_weight (traced as it is, no number drawn); below, with roulette, 1 / q with probability
+     * q = childWeight / min_weight (its weight becomes min_weight) and 0 otherwise, which keeps the
+     * expected value; with the plain cut-off, 0. The caller traces the child with weight
+     * {@code childWeight x keep} and scales its radiance by {@code keep} when that is above 0.
+     */
+    double keep(double childWeight) {
+        if (childWeight >= minWeight) {
+            return 1;
+        }
+        if (!roulette || !(childWeight > 0)) {
+            return 0;
+        }
+        double q = childWeight / minWeight;
+        return SamplePattern.pathUniform(pathPixel, pathFrame, pathSample, pathDraws++) < q ? 1 / q : 0;
     }
 
     /**

@@ -49,19 +49,23 @@ final class Phong implements ShadingModel {
         sum.set(kd * colorR * diffuseR + ks * specR, kd * colorG * diffuseG + ks * specG,
                 kd * colorB * diffuseB + ks * specB);
         if (hitsLeft > 1) {
-            if (weight * ks >= it.minWeight) {
-                Rgb reflected = it.traceReflected(s, dx, dy, dz, hitsLeft, weight * ks);
-                sum.r += ks * reflected.r;
-                sum.g += ks * reflected.g;
-                sum.b += ks * reflected.b;
+            double keepReflected = it.keep(weight * ks);
+            if (keepReflected > 0) {
+                Rgb reflected = it.traceReflected(s, dx, dy, dz, hitsLeft, weight * ks * keepReflected);
+                double k = keepReflected * ks;
+                sum.r += k * reflected.r;
+                sum.g += k * reflected.g;
+                sum.b += k * reflected.b;
             }
             double childWeight = weight * kt * Math.max(colorR, Math.max(colorG, colorB));
-            if (childWeight >= it.minWeight && childWeight > 0) {
+            double keepRefracted = childWeight > 0 ? it.keep(childWeight) : 0;
+            if (keepRefracted > 0) {
                 Rgb refracted = it.traceRefracted(v, dx, dy, dz, Bsdf.eta(m.ior(material), s.front), hitsLeft,
-                        childWeight);
-                sum.r += kt * colorR * refracted.r;
-                sum.g += kt * colorG * refracted.g;
-                sum.b += kt * colorB * refracted.b;
+                        childWeight * keepRefracted);
+                double k = keepRefracted * kt;
+                sum.r += k * colorR * refracted.r;
+                sum.g += k * colorG * refracted.g;
+                sum.b += k * colorB * refracted.b;
             }
         }
         v.radiance.set(sum.r, sum.g, sum.b);

@@ -8,18 +8,27 @@ import glint.config.Shading;
  *
  * @param shading      shading model
  * @param recursionMax surface hits along a path (1 = direct light only)
- * @param minWeight    rays whose path weight falls below this are not traced
+ * @param minWeight    the path weight below which a ray is pruned (0: none is)
  * @param epsilon      base of the self-intersection offset, scaled by max(1, |p|)
  * @param glassFresnel how cook-torrance glass splits light between reflection and refraction
+ * @param pruning      what happens to a ray whose path weight falls below {@code minWeight}
  */
 public record RenderSettings(Shading shading, int recursionMax, double minWeight, double epsilon,
-                             GlassFresnel glassFresnel) {
+                             GlassFresnel glassFresnel, Pruning pruning) {
 
     /** Glass reflectance: the exact Fresnel equations (the default) or Schlick's approximation. */
     public enum GlassFresnel { EXACT, SCHLICK }
 
+    /**
+     * What becomes of a ray whose path weight w falls below min_weight. {@link #ROULETTE} (the
+     * default): it is traced with probability w / min_weight and its light divided by that
+     * probability, so the expected image is the unpruned one. {@link #CUTOFF}: it is not traced
+     * and brings black, a loss that grows with min_weight.
+     */
+    public enum Pruning { ROULETTE, CUTOFF }
+
     public RenderSettings(Shading shading, int recursionMax, double minWeight, double epsilon) {
-        this(shading, recursionMax, minWeight, epsilon, GlassFresnel.EXACT);
+        this(shading, recursionMax, minWeight, epsilon, GlassFresnel.EXACT, Pruning.ROULETTE);
     }
 
     public static RenderSettings of(Config config) {
@@ -27,6 +36,10 @@ public record RenderSettings(Shading shading, int recursionMax, double minWeight
     }
 
     public RenderSettings withGlassFresnel(GlassFresnel fresnel) {
-        return new RenderSettings(shading, recursionMax, minWeight, epsilon, fresnel);
+        return new RenderSettings(shading, recursionMax, minWeight, epsilon, fresnel, pruning);
+    }
+
+    public RenderSettings withPruning(Pruning mode) {
+        return new RenderSettings(shading, recursionMax, minWeight, epsilon, glassFresnel, mode);
     }
 }

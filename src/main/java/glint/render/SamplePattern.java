@@ -20,6 +20,18 @@ public final class SamplePattern {
         return z ^ (z >>> 31);
     }
 
+    /**
+     * A uniform number in [0, 1) for the {@code draw}-th random decision of the path of camera ray
+     * (pixel, frame, sample): a pure function of the four, independent of the jitter's numbers.
+     */
+    static double pathUniform(int pixelIndex, int frame, int sample, int draw) {
+        long z = hash(pixelIndex, frame, sample) + (draw + 1L) * 0xD1B54A32D192ED03L;
+        z = (z ^ (z >>> 32)) * 0xD6E8FEB86659FD93L;
+        z = (z ^ (z >>> 32)) * 0xD6E8FEB86659FD93L;
+        z ^= z >>> 32;
+        return (z >>> 11) * 0x1.0p-53;
+    }
+
     /** The first jitter coordinate in [0, 1) from a hash. */
     static double jitterU(long hash) {
         return (hash >>> 40) * INV_2_24;

@@ -27,25 +27,34 @@ final class TracerWorker {
         integrator.prepare(scene);
         rows.prepare(scene.camera, frame.width(), frame.height(), x0, x1, samples, firstSample, sampleCount,
                 frameIndex);
-        int rays = (x1 - x0) * sampleCount;
         for (int y = y0; y < y1; y++) {
             rows.aim(y);
-            traceRow(scene, rays);
+            traceRow(scene, y * frame.width(), x0, x1, firstSample, sampleCount, frameIndex);
             rows.writeRow(frame, y);
         }
     }
 
-    /** Traces the row's camera rays [0, rays) from the eye, into the row's radiance. */
-    private void traceRow(RenderScene scene, int rays) {
+    /**
+     * Traces the row's camera rays from the eye, into the row's radiance: pixels [x0, x1) of the
+     * row whose first pixel has index {@code rowStart}, samples [firstSample, firstSample + sampleCount)
+     * of each. Each path starts from its (pixel, frame, sample), which seeds its random decisions.
+     */
+    private void traceRow(RenderScene scene, int rowStart, int x0, int x1, int firstSample, int sampleCount,
+                          int frameIndex) {
         CameraBasis camera = scene.camera;
         int hits = scene.settings.recursionMax();
         CameraRows r = rows;
-        for (int ray = 0; ray < rays; ray++) {
-            Rgb radiance = integrator.trace(camera.eyeX, camera.eyeY, camera.eyeZ, r.dirX[ray], r.dirY[ray],
-                    r.dirZ[ray], hits, 1, Hit.NONE, Hit.NONE);
-            r.radianceR[ray] = radiance.r;
-            r.radianceG[ray] = radiance.g;
-            r.radianceB[ray] = radiance.b;
+        Integrator tracer = integrator;
+        int ray = 0;
+        for (int x = x0; x < x1; x++) {
+            for (int sample = firstSample, end = firstSample + sampleCount; sample < end; sample++, ray++) {
+                tracer.beginPath(rowStart + x, frameIndex, sample);
+                Rgb radiance = tracer.trace(camera.eyeX, camera.eyeY, camera.eyeZ, r.dirX[ray], r.dirY[ray],
+                        r.dirZ[ray], hits, 1, Hit.NONE, Hit.NONE);
+                r.radianceR[ray] = radiance.r;
+                r.radianceG[ray] = radiance.g;
+                r.radianceB[ray] = radiance.b;
+            }
         }
     }
 }

@@ -266,7 +266,7 @@ class MainTest {
         Result r = run(concat(common, "--output", png.toString()));
         assertEquals(0, r.status(), r.err());
         assertEquals("", r.err());
-        assertTrue(r.out().startsWith("wrote " + png + " (8x6, 1 spp, 2 threads, cook-torrance, depth 5) in "),
+        assertTrue(r.out().startsWith("wrote " + png + " (8x6, 1 spp, 2 threads, cook-torrance, depth 16) in "),
                 r.out());
         BufferedImage image = ImageIO.read(png.toFile());
         assertNotNull(image, "not a readable PNG");
@@ -315,7 +315,7 @@ class MainTest {
         Result r = run("--config", cfg.toString(), "--output", png.toString());
         assertEquals(0, r.status(), r.err());
         assertTrue(r.out().startsWith("wrote " + png + " (5x4, 1 spp, "), r.out());
-        assertTrue(r.out().contains(", phong, depth 5)"), r.out());
+        assertTrue(r.out().contains(", phong, depth 16)"), r.out());
         BufferedImage image = ImageIO.read(png.toFile());
         assertEquals(5, image.getWidth());
         assertEquals(4, image.getHeight());

@@ -43,7 +43,7 @@ class ConfigLoaderTest {
         assertEquals(2, d.displayScale());
         assertEquals(8, d.screenDivider());
         assertEquals(600, d.displayHeight());
-        assertEquals(5, d.recursionMax());
+        assertEquals(16, d.recursionMax());
         assertEquals(800, d.displayWidth());
         assertEquals("Glint", d.name());
         assertEquals("scenes/default.yaml", d.scene());

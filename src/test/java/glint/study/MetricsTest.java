@@ -51,11 +51,14 @@ class MetricsTest {
         assertEquals(StudyConfig.Knob.NONE, shipped.knob());
         assertEquals(StudyConfig.Knob.DEPTH, StudyConfig.ct(2, shipped.samples(), shipped.minWeight()).knob());
         assertEquals(StudyConfig.Knob.SEVERAL, StudyConfig.ct(2, 16, shipped.minWeight()).knob());
-        assertEquals("d5 s4 w1e-2", shipped.label());
-        assertEquals("w1e-3", StudyConfig.ct(5, 4, 1e-3).knobLabel());
+        assertEquals("d16 s4 w1e-2", shipped.label());
+        assertEquals("d16 s4 w1e-2 cut", shipped.cutOff().label());
+        assertEquals(StudyConfig.Knob.PRUNING, shipped.cutOff().knob());
+        assertEquals("cut", shipped.cutOff().knobLabel());
+        assertEquals("w1e-3", StudyConfig.ct(16, 4, 1e-3).knobLabel());
         assertEquals("shipped", shipped.knobLabel());
         assertEquals(StudyConfigs.full().size(), new java.util.HashSet<>(StudyConfigs.full()).size());
-        assertEquals(21, StudyConfigs.full().size());
+        assertEquals(24, StudyConfigs.full().size());
     }
 
     /** The short run's configurations are points of the full one: each knob swept from the shipped default. */
