@@ -1,5 +1,8 @@
 package glint.render;
 
+import glint.geometry.AggregatePolicy;
+import glint.geometry.Candidates;
+import glint.geometry.Frustum;
 import glint.geometry.Hit;
 import glint.shading.Rgb;
 
@@ -12,6 +15,9 @@ final class TracerWorker {
 
     private final Integrator integrator = new Integrator();
     private final CameraRows rows = new CameraRows();
+    /** The current row's frustum and the primitives its camera rays may meet. */
+    private final Frustum rowFrustum = new Frustum();
+    private final Candidates rowCandidates = new Candidates();
 
     /** Rays this worker has traced (camera, reflected, refracted and shadow rays). */
     long raysCast() {
@@ -30,8 +36,28 @@ final class TracerWorker {
         int rays = (x1 - x0) * sampleCount;
         for (int y = y0; y < y1; y++) {
             rows.aim(y);
-            traceRow(scene, rays);
+            rows.frustum(y, rowFrustum);
+            integrator.gather(rowFrustum, rowCandidates);
+            if (rowCandidates.count() <= AggregatePolicy.MOST_ROW_CANDIDATES) {
+                traceRowAmongCandidates(scene, rays);
+            } else {
+                traceRow(scene, rays);
+            }
             rows.writeRow(frame, y);
+        }
+    }
+
+    /** Traces the row's camera rays [0, rays) from the eye, searching only the row's candidates. */
+    private void traceRowAmongCandidates(RenderScene scene, int rays) {
+        CameraBasis camera = scene.camera;
+        int hits = scene.settings.recursionMax();
+        CameraRows r = rows;
+        for (int ray = 0; ray < rays; ray++) {
+            Rgb radiance = integrator.traceCamera(rowCandidates, camera.eyeX, camera.eyeY, camera.eyeZ, r.dirX[ray],
+                    r.dirY[ray], r.dirZ[ray], hits);
+            r.radianceR[ray] = radiance.r;
+            r.radianceG[ray] = radiance.g;
+            r.radianceB[ray] = radiance.b;
         }
     }
 
