@@ -28,6 +28,12 @@ public interface Aggregate {
     double transmittance(double ox, double oy, double oz, double dx, double dy, double dz, double tMax, int skip,
                          double[] pass, TraversalStack stack);
 
+    /**
+     * Gathers into {@code out} the primitives a ray inside the frustum may meet: every unbounded
+     * one, and every bounded one whose box may reach into the frustum.
+     */
+    void gather(Frustum frustum, Candidates out, TraversalStack stack);
+
     /** The primitives it searches. */
     Primitives primitives();
 

@@ -13,6 +13,12 @@ public final class AggregatePolicy {
      */
     public static final int BVH_MIN_BOUNDED = 8;
 
+    /**
+     * A row of camera rays searches only the primitives its frustum may hold when they are at
+     * most this many; otherwise it asks the aggregate.
+     */
+    public static final int MOST_ROW_CANDIDATES = 16;
+
     /** Primitives a {@link Bvh} leaf holds at most. */
     public static final int LEAF_SIZE = 4;
 

@@ -167,6 +167,34 @@ public final class Bvh implements Aggregate {
         return passed;
     }
 
+    @Override
+    public void gather(Frustum frustum, Candidates out, TraversalStack stack) {
+        out.clear();
+        for (int u : unbounded) {
+            out.add(u);
+        }
+        int[] waiting = stack.nodes;
+        int top = 0;
+        int node = nodeCount > 0 ? 0 : -1;
+        while (node >= 0) {
+            if (frustum.mayHold(nodeBox, 6 * node)) {
+                int count = links[2 * node + 1];
+                if (count == 0) {
+                    waiting[top++] = links[2 * node] + 1;
+                    node = links[2 * node];
+                    continue;
+                }
+                for (int slot = links[2 * node], end = slot + count; slot < end; slot++) {
+                    leafKind[slot].bounds(leafIndex[slot], out.box, 0);
+                    if (frustum.mayHold(out.box, 0)) {
+                        out.add(leafPrimitives[slot]);
+                    }
+                }
+            }
+            node = top > 0 ? waiting[--top] : -1;
+        }
+    }
+
     /**
      * Distance along the ray to where it enters the node's box (0 when it starts inside), or
      * {@link Intersect#MISS}. Slab test with reciprocal directions; zero direction components are

@@ -58,6 +58,11 @@ public final class EmptyInteriors implements Aggregate {
     }
 
     @Override
+    public void gather(Frustum frustum, Candidates out, TraversalStack stack) {
+        searched.gather(frustum, out, stack);
+    }
+
+    @Override
     public Primitives primitives() {
         return primitives;
     }

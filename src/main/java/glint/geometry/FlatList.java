@@ -55,6 +55,22 @@ public final class FlatList implements Aggregate {
     }
 
     @Override
+    public void gather(Frustum frustum, Candidates out, TraversalStack stack) {
+        out.clear();
+        double[] box = out.box;
+        for (int q = 0; q < primitives.count(); q++) {
+            if (!primitives.bounded(q)) {
+                out.add(q);
+                continue;
+            }
+            primitives.bounds(q, box, 0);
+            if (frustum.mayHold(box, 0)) {
+                out.add(q);
+            }
+        }
+    }
+
+    @Override
     public Primitives primitives() {
         return primitives;
     }

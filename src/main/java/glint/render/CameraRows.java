@@ -1,5 +1,7 @@
 package glint.render;
 
+import glint.geometry.Frustum;
+
 /**
  * The camera rays of one tile row, per worker: their unit directions (world space), aimed for the
  * whole row before any is traced so that the square roots and divisions of many rays overlap, and
@@ -57,6 +59,33 @@ final class CameraRows {
         for (int ray = 0, n = x1 - x0; ray < n; ray++) {
             centreX[ray] = screenX(x0 + ray + 0.5);
         }
+    }
+
+    /** How far past its pixels' edges a row's frustum reaches, in pixels: far more than any rounding of a ray's direction. */
+    private static final double FRUSTUM_MARGIN = 0.01;
+
+    private final double[] edges = new double[12];
+
+    /**
+     * Sets {@code out} to the frustum that holds every camera ray of the tile's row y: from the
+     * eye through the row's pixels, widened by {@link #FRUSTUM_MARGIN} all round.
+     */
+    void frustum(int y, Frustum out) {
+        double left = screenX(x0 - FRUSTUM_MARGIN), right = screenX(x1 + FRUSTUM_MARGIN);
+        double top = screenY(y - FRUSTUM_MARGIN), bottom = screenY(y + 1 + FRUSTUM_MARGIN);
+        edge(0, left, top);
+        edge(1, right, top);
+        edge(2, right, bottom);
+        edge(3, left, bottom);
+        out.set(camera.eyeX, camera.eyeY, camera.eyeZ, edges);
+    }
+
+    /** Edge e of a row's frustum: the direction through screen point (sx, sy). */
+    private void edge(int e, double sx, double sy) {
+        CameraBasis c = camera;
+        edges[3 * e] = c.forwardX + sx * c.rightX + sy * c.upX;
+        edges[3 * e + 1] = c.forwardY + sx * c.rightY + sy * c.upY;
+        edges[3 * e + 2] = c.forwardZ + sx * c.rightZ + sy * c.upZ;
     }
 
     /** Screen x of image x (pixels from the left). */

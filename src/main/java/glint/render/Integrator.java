@@ -2,6 +2,8 @@ package glint.render;
 
 import glint.config.Shading;
 import glint.geometry.Aggregate;
+import glint.geometry.Candidates;
+import glint.geometry.Frustum;
 import glint.geometry.Hit;
 import glint.geometry.Intersect;
 import glint.geometry.Primitives;
@@ -119,6 +121,32 @@ final class Integrator {
             v.radiance.set(scene.backgroundR, scene.backgroundG, scene.backgroundB);
             return v.radiance;
         }
+        return shadeHit(v, ox, oy, oz, dx, dy, dz, hitsLeft, weight);
+    }
+
+    /**
+     * {@link #trace} for a camera ray, whose nearest hit is among {@code candidates}, gathered
+     * for the frustum of camera rays it belongs to.
+     */
+    Rgb traceCamera(Candidates candidates, double ox, double oy, double oz, double dx, double dy, double dz,
+                    int hitsLeft) {
+        PathVertex v = vertices[hitsLeft];
+        rays++;
+        if (!candidates.nearest(primitives, ox, oy, oz, dx, dy, dz, Intersect.MISS, v.hit)) {
+            v.radiance.set(scene.backgroundR, scene.backgroundG, scene.backgroundB);
+            return v.radiance;
+        }
+        return shadeHit(v, ox, oy, oz, dx, dy, dz, hitsLeft, 1);
+    }
+
+    /** Gathers into {@code out} the primitives the camera rays inside the frustum may meet. */
+    void gather(Frustum frustum, Candidates out) {
+        aggregate.gather(frustum, out, stack);
+    }
+
+    /** The radiance vertex v's hit (found by the unit ray from o along d) sends back along the ray. */
+    private Rgb shadeHit(PathVertex v, double ox, double oy, double oz, double dx, double dy, double dz,
+                         int hitsLeft, double weight) {
         Hit hit = v.hit;
         primitives.describe(hit, ox, oy, oz, dx, dy, dz);
         v.surface.set(hit, ox, oy, oz, dx, dy, dz, epsilon, scene.materialOf[hit.primitive],

@@ -1,5 +1,8 @@
 package glint.render;
 
+import glint.geometry.AggregatePolicy;
+import glint.geometry.Candidates;
+import glint.geometry.Frustum;
 import glint.geometry.Hit;
 import glint.shading.Rgb;
 
@@ -12,6 +15,11 @@ final class TracerWorker {
 
     private final Integrator integrator = new Integrator();
     private final CameraRows rows = new CameraRows();
+    /** The current row's frustum and the primitives its camera rays may meet. */
+    private final Frustum rowFrustum = new Frustum();
+    private final Candidates rowCandidates = new Candidates();
+    // the tile and row being traced, which name each camera ray's (pixel, frame, sample)
+    private int tileX0, tileFirstSample, tileSampleCount, tileFrameIndex, rowStart;
 
     /** Rays this worker has traced (camera, reflected, refracted and shadow rays). */
     long raysCast() {
@@ -27,34 +35,61 @@ final class TracerWorker {
         integrator.prepare(scene);
         rows.prepare(scene.camera, frame.width(), frame.height(), x0, x1, samples, firstSample, sampleCount,
                 frameIndex);
+        int rays = (x1 - x0) * sampleCount;
+        tileX0 = x0;
+        tileFirstSample = firstSample;
+        tileSampleCount = sampleCount;
+        tileFrameIndex = frameIndex;
         for (int y = y0; y < y1; y++) {
             rows.aim(y);
-            traceRow(scene, y * frame.width(), x0, x1, firstSample, sampleCount, frameIndex);
+            rowStart = y * frame.width();
+            rows.frustum(y, rowFrustum);
+            integrator.gather(rowFrustum, rowCandidates);
+            if (rowCandidates.count() <= AggregatePolicy.MOST_ROW_CANDIDATES) {
+                traceRowAmongCandidates(scene, rays);
+            } else {
+                traceRow(scene, rays);
+            }
             rows.writeRow(frame, y);
         }
     }
 
     /**
-     * Traces the row's camera rays from the eye, into the row's radiance: pixels [x0, x1) of the
-     * row whose first pixel has index {@code rowStart}, samples [firstSample, firstSample + sampleCount)
-     * of each. Each path starts from its (pixel, frame, sample), which seeds its random decisions.
+     * Starts the path of the row's camera ray i, sample {@code firstSample + i % sampleCount} of pixel
+     * {@code x0 + i / sampleCount}: its (pixel, frame, sample) seeds the path's random decisions.
      */
-    private void traceRow(RenderScene scene, int rowStart, int x0, int x1, int firstSample, int sampleCount,
-                          int frameIndex) {
+    private void beginPath(int ray) {
+        integrator.beginPath(rowStart + tileX0 + ray / tileSampleCount, tileFrameIndex,
+                tileFirstSample + ray % tileSampleCount);
+    }
+
+    /** Traces the row's camera rays [0, rays) from the eye, searching only the row's candidates. */
+    private void traceRowAmongCandidates(RenderScene scene, int rays) {
         CameraBasis camera = scene.camera;
         int hits = scene.settings.recursionMax();
         CameraRows r = rows;
-        Integrator tracer = integrator;
-        int ray = 0;
-        for (int x = x0; x < x1; x++) {
-            for (int sample = firstSample, end = firstSample + sampleCount; sample < end; sample++, ray++) {
-                tracer.beginPath(rowStart + x, frameIndex, sample);
-                Rgb radiance = tracer.trace(camera.eyeX, camera.eyeY, camera.eyeZ, r.dirX[ray], r.dirY[ray],
-                        r.dirZ[ray], hits, 1, Hit.NONE, Hit.NONE);
-                r.radianceR[ray] = radiance.r;
-                r.radianceG[ray] = radiance.g;
-                r.radianceB[ray] = radiance.b;
-            }
+        for (int ray = 0; ray < rays; ray++) {
+            beginPath(ray);
+            Rgb radiance = integrator.traceCamera(rowCandidates, camera.eyeX, camera.eyeY, camera.eyeZ, r.dirX[ray],
+                    r.dirY[ray], r.dirZ[ray], hits);
+            r.radianceR[ray] = radiance.r;
+            r.radianceG[ray] = radiance.g;
+            r.radianceB[ray] = radiance.b;
+        }
+    }
+
+    /** Traces the row's camera rays [0, rays) from the eye, into the row's radiance. */
+    private void traceRow(RenderScene scene, int rays) {
+        CameraBasis camera = scene.camera;
+        int hits = scene.settings.recursionMax();
+        CameraRows r = rows;
+        for (int ray = 0; ray < rays; ray++) {
+            beginPath(ray);
+            Rgb radiance = integrator.trace(camera.eyeX, camera.eyeY, camera.eyeZ, r.dirX[ray], r.dirY[ray],
+                    r.dirZ[ray], hits, 1, Hit.NONE, Hit.NONE);
+            r.radianceR[ray] = radiance.r;
+            r.radianceG[ray] = radiance.g;
+            r.radianceB[ray] = radiance.b;
         }
     }
 }

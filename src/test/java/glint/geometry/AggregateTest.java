@@ -149,6 +149,49 @@ class AggregateTest {
         assertTrue(checked > 1_000, "rays inside empty spheres: " + checked);
     }
 
+    @Test
+    void raysInsideAFrustumFindAmongItsGatheredPrimitivesWhatTheSearchFinds() {
+        SplittableRandom random = new SplittableRandom(SEED + 5);
+        Hit a = new Hit(), b = new Hit();
+        Candidates candidates = new Candidates();
+        Frustum frustum = new Frustum();
+        for (int scene = 0; scene < 30; scene++) {
+            Primitives primitives = randomScene(random, 1 + random.nextInt(300), random.nextInt(3));
+            FlatList truth = new FlatList(primitives);
+            Aggregate gathering = scene % 2 == 0 ? truth : new Bvh(primitives, 4);
+            TraversalStack stack = gathering.newStack();
+            for (int f = 0; f < 20; f++) {
+                double ax = random.nextDouble(-15, 15), ay = random.nextDouble(-15, 15), az = random.nextDouble(-15, 15);
+                double[] axis = unit(random.nextDouble(-1, 1), random.nextDouble(-1, 1), random.nextDouble(-1, 1));
+                double[] u = unit(-axis[1], axis[0] + axis[2], -axis[1]);
+                double[] v = {axis[1] * u[2] - axis[2] * u[1], axis[2] * u[0] - axis[0] * u[2], axis[0] * u[1] - axis[1] * u[0]};
+                double width = random.nextDouble(1e-4, 0.5), height = random.nextDouble(1e-4, 0.5);
+                double[] edges = new double[12];
+                double[][] corners = {{-width, -height}, {width, -height}, {width, height}, {-width, height}};
+                for (int e = 0; e < 4; e++) {
+                    for (int k = 0; k < 3; k++) {
+                        edges[3 * e + k] = axis[k] + corners[e][0] * u[k] + corners[e][1] * v[k];
+                    }
+                }
+                frustum.set(ax, ay, az, edges);
+                gathering.gather(frustum, candidates, stack);
+                for (int i = 0; i < 50; i++) {
+                    double s = random.nextDouble(-1, 1) * width, t = random.nextDouble(-1, 1) * height;
+                    double[] d = unit(axis[0] + s * u[0] + t * v[0], axis[1] + s * u[1] + t * v[1],
+                            axis[2] + s * u[2] + t * v[2]);
+                    boolean foundA = candidates.nearest(primitives, ax, ay, az, d[0], d[1], d[2], Intersect.MISS, a);
+                    boolean foundB = truth.nearest(ax, ay, az, d[0], d[1], d[2], Intersect.MISS, Hit.NONE, Hit.NONE, b,
+                            stack);
+                    assertEquals(foundB, foundA);
+                    if (foundB) {
+                        assertEquals(b.primitive, a.primitive);
+                        assertEquals(b.t, a.t, 0);
+                    }
+                }
+            }
+        }
+    }
+
     /** Rays from random points and from random surface points, skipping the primitive left, in both aggregates. */
     private static void compare(Primitives primitives, Aggregate tested, Aggregate truth, SplittableRandom random,
                                 int rays) {
