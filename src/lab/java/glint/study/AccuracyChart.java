@@ -33,7 +33,7 @@ final class AccuracyChart {
         for (int p = 0; p < panels.size(); p++) {
             charts.add(panel(titles.get(p), panels.get(p), errorName, error));
         }
-        int columns = 2;
+        int columns = charts.size() % 2 == 0 ? 2 : 1; // the grid must be full
         int rows = (charts.size() + columns - 1) / columns;
         Charts.save(charts, rows, columns, file);
     }

@@ -188,7 +188,7 @@ public final class SpeedAccuracy {
             tables.append("#### ").append(scenes.get(i).name()).append("\n\n").append(AccuracyReport.table(perScene.get(i)))
                     .append('\n');
         }
-        tables.append("#### Geometric mean over the three scenes (SSIM: arithmetic mean)\n\n")
+        tables.append("#### Geometric mean over the scenes (SSIM: arithmetic mean)\n\n")
                 .append(AccuracyReport.table(mean));
         Path doc = out.resolve("accuracy.md");
         GeneratedSection.write(doc, "accuracy-tables", tables.toString());

@@ -17,8 +17,9 @@ import java.util.stream.Stream;
  * the plain cut-off at {@link #CONVERGED_MIN_WEIGHT}, whose loss no 8-bit image shows; the same
  * samples and jitter, so only pruning and depth differ.
  *
- * <p>Run the table at any size: {@code java -cp target/classes:target/test-classes
- * glint.render.StillAccuracy 400 300}.
+ * <p>The table at any size, for a config, the scenes under a folder and more scene files:
+ * {@code java -cp target/classes:target/test-classes:SNAKEYAML_JAR glint.render.StillAccuracy 800 600
+ * config.properties scenes src/test/resources/scenes/glass-on-mirror.yaml}.
  */
 final class StillAccuracy {
 
@@ -74,7 +75,12 @@ final class StillAccuracy {
         String folder = args.length > 3 ? args[3] : "scenes";
         System.out.printf(Locale.ROOT, "%d x %d, %d spp, depth %d, min_weight %s%n", width, height,
                 config.samples(), config.recursionMax(), config.minWeight());
-        for (Path file : scenes(Path.of(folder))) {
+        List<Path> files = new java.util.ArrayList<>(scenes(Path.of(folder)));
+        for (int i = 4; i < args.length; i++) {
+            files.add(Path.of(args[i]));
+        }
+        measure(SceneLoader.load(files.get(0)), config, width, height, 2); // untimed: the JIT compiles the render loop
+        for (Path file : files) {
             Result r = measure(SceneLoader.load(file), config, width, height, 2);
             System.out.printf(Locale.ROOT, "| %s | %.3f | %.0f | %.2f | %.2f |%n", file, r.mean(), r.p999(),
                     r.shippedSeconds(), r.convergedSeconds());
