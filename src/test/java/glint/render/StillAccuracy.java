@@ -19,7 +19,8 @@ import java.util.stream.Stream;
  *
  * <p>The table at any size, for a config, the scenes under a folder and more scene files:
  * {@code java -cp target/classes:target/test-classes:SNAKEYAML_JAR glint.render.StillAccuracy 800 600
- * config.properties scenes src/test/resources/scenes/glass-on-mirror.yaml}.
+ * config.properties scenes src/test/resources/scenes/glass-on-mirror.yaml}; {@code -Dpruning=CUTOFF}
+ * measures the plain cut-off instead of the roulette.
  */
 final class StillAccuracy {
 
@@ -41,7 +42,12 @@ final class StillAccuracy {
     }
 
     static Result measure(Scene scene, Config config, int width, int height, int threads) {
-        RenderSettings shipped = RenderSettings.of(config);
+        return measure(scene, config, RenderSettings.Pruning.ROULETTE, width, height, threads);
+    }
+
+    static Result measure(Scene scene, Config config, RenderSettings.Pruning pruning, int width, int height,
+                          int threads) {
+        RenderSettings shipped = RenderSettings.of(config).withPruning(pruning);
         RenderSettings converged = new RenderSettings(config.shading(), CONVERGED_DEPTH, CONVERGED_MIN_WEIGHT,
                 config.epsilon()).withPruning(RenderSettings.Pruning.CUTOFF);
         FrameBuffer a = new FrameBuffer(width, height);
@@ -79,9 +85,10 @@ final class StillAccuracy {
         for (int i = 4; i < args.length; i++) {
             files.add(Path.of(args[i]));
         }
-        measure(SceneLoader.load(files.get(0)), config, width, height, 2); // untimed: the JIT compiles the render loop
+        RenderSettings.Pruning pruning = RenderSettings.Pruning.valueOf(System.getProperty("pruning", "ROULETTE"));
+        measure(SceneLoader.load(files.get(0)), config, pruning, width, height, 2); // untimed: the JIT compiles
         for (Path file : files) {
-            Result r = measure(SceneLoader.load(file), config, width, height, 2);
+            Result r = measure(SceneLoader.load(file), config, pruning, width, height, 2);
             System.out.printf(Locale.ROOT, "| %s | %.3f | %.0f | %.2f | %.2f |%n", file, r.mean(), r.p999(),
                     r.shippedSeconds(), r.convergedSeconds());
         }
