@@ -58,8 +58,7 @@ public final class KeyBindings {
                     KeyEvent.VK_7, KeyEvent.VK_8, KeyEvent.VK_9, KeyEvent.VK_NUMPAD1, KeyEvent.VK_NUMPAD2,
                     KeyEvent.VK_NUMPAD3, KeyEvent.VK_NUMPAD4, KeyEvent.VK_NUMPAD5, KeyEvent.VK_NUMPAD6,
                     KeyEvent.VK_NUMPAD7, KeyEvent.VK_NUMPAD8, KeyEvent.VK_NUMPAD9),
-            key(Action.PRINT_CAMERA, "C", "print the camera as a scene's camera: block (standard output "
-                    + "and overlay)", KeyEvent.VK_C),
+            key(Action.PRINT_CAMERA, "C", "print the camera as a scene's camera: block", KeyEvent.VK_C),
             key(Action.NEXT_SCENE, "Page Down", "open the next scene of the scene's folder", KeyEvent.VK_PAGE_DOWN),
             key(Action.PREVIOUS_SCENE, "Page Up", "open the previous scene of the scene's folder",
                     KeyEvent.VK_PAGE_UP),
