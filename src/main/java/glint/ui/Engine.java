@@ -217,7 +217,9 @@ public final class Engine implements Runnable, SceneWatcher.Listener {
         long start = clock.nanoTime();
         InputFrame in = input.drain();
         for (Action command : in.commands()) {
-            command(command, in);
+            if (!isCameraJump(command)) {
+                command(command, in);
+            }
         }
         if (!running) {
             return 0;
@@ -237,6 +239,11 @@ public final class Engine implements Runnable, SceneWatcher.Listener {
             lastMotion = start;
             cameraNow = controller.camera();
             invalidate();
+        }
+        for (Action command : in.commands()) {
+            if (isCameraJump(command)) { // after the interval's motion: the key came after it
+                command(command, in);
+            }
         }
         boolean moving = moved || in.motionHeld() || start - lastMotion < MOTION_HOLD_NANOS;
         boolean frameDue = moving ? needFrame : passesDone < config.samples();
@@ -441,6 +448,11 @@ public final class Engine implements Runnable, SceneWatcher.Listener {
                 // overlay and help are the display's
             }
         }
+    }
+
+    /** L, Home and the views put the camera somewhere: they act after the motion of the same interval. */
+    private static boolean isCameraJump(Action action) {
+        return action == Action.LEVEL || action == Action.HOME || action == Action.VIEW;
     }
 
     /** The camera jumped (Home, a view, L): the view is drawn anew. */
