@@ -389,7 +389,7 @@ class ConfigLoaderTest {
         // a key holding a line break and a terminal escape: one line, nothing the terminal acts on
         assertError("config.properties:1:1: unknown key 'a\\nb\\u001b[2J' (expected one of: debug, epsilon, "
                 + "display_scale, screen_divider, display_height, recursion_max, display_width, name, scene, threads, "
-                + "shading, samples, min_weight, move_speed, turn_speed, target_fps, max_image_pixels, "
+                + "shading, samples, min_weight, move_speed, turn_speed, target_fps, free_flight, max_image_pixels, "
                 + "max_scene_bytes, max_objects, max_lights, max_recursion)", "a\\nb\u001b[2J=1\n");
     }
 
