@@ -43,12 +43,34 @@ public enum SphereMethod {
                     (float) ox, (float) oy, (float) oz, (float) dx, (float) dy, (float) dz));
             case STABLE_FLOAT -> widen(FloatSphere.stable((float) cx, (float) cy, (float) cz, (float) r,
                     (float) ox, (float) oy, (float) oz, (float) dx, (float) dy, (float) dz));
-            case NAIVE_DOUBLE -> Intersect.sphereNaive(cx, cy, cz, r, ox, oy, oz, dx, dy, dz);
+            case NAIVE_DOUBLE -> sphereNaive(cx, cy, cz, r, ox, oy, oz, dx, dy, dz);
             case STABLE_DOUBLE -> Intersect.sphere(cx, cy, cz, r, ox, oy, oz, dx, dy, dz);
         };
     }
 
     private static double widen(float t) {
         return t == FloatSphere.MISS ? Double.POSITIVE_INFINITY : t;
+    }
+
+    /**
+     * The textbook sphere test: the quadratic in t with the usual root formula, as in the 2020
+     * report, to measure how it fails; the renderer never uses it.
+     */
+    static double sphereNaive(double cx, double cy, double cz, double radius,
+                              double ox, double oy, double oz, double dx, double dy, double dz) {
+        double sx = cx - ox, sy = cy - oy, sz = cz - oz;
+        double ds = dx * sx + dy * sy + dz * sz;
+        double dd = dx * dx + dy * dy + dz * dz;
+        double discriminant = ds * ds - dd * (sx * sx + sy * sy + sz * sz - radius * radius);
+        if (discriminant < 0) {
+            return Intersect.MISS;
+        }
+        double root = Math.sqrt(discriminant);
+        double t0 = (ds - root) / dd;
+        double t1 = (ds + root) / dd;
+        if (t0 > 0) {
+            return t0;
+        }
+        return t1 > 0 ? t1 : Intersect.MISS;
     }
 }

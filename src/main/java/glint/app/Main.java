@@ -70,6 +70,7 @@ public final class Main implements Callable<Integer> {
         main.out = out;
         main.err = err;
         CommandLine cli = new CommandLine(main);
+        cli.getCommandSpec().usageMessage().footer(HelpFooter.text());
         cli.setOut(out);
         cli.setErr(err);
         cli.registerConverter(Integer.class, Main::wholeNumber);

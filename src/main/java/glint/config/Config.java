@@ -22,11 +22,23 @@ package glint.config;
  * @param turnSpeed      camera turn rate in degrees per second
  * @param targetFps      the frame rate the window holds while the camera moves
  * @param limits         safety limits on image size, scene size and recursion
+ * @param freeFlight     window: the camera turns about its own axes, pitch unbounded, instead of
+ *                       keeping the horizon level
  */
 public record Config(boolean debug, double epsilon, double displayScale, int screenDivider,
                      int displayWidth, int displayHeight, int recursionMax, String name,
                      String scene, int threads, Shading shading, int samples, double minWeight,
-                     double moveSpeed, double turnSpeed, double targetFps, Limits limits) {
+                     double moveSpeed, double turnSpeed, double targetFps, Limits limits,
+                     boolean freeFlight) {
+
+    /** A config with a level camera (free_flight=false). */
+    public Config(boolean debug, double epsilon, double displayScale, int screenDivider,
+                  int displayWidth, int displayHeight, int recursionMax, String name,
+                  String scene, int threads, Shading shading, int samples, double minWeight,
+                  double moveSpeed, double turnSpeed, double targetFps, Limits limits) {
+        this(debug, epsilon, displayScale, screenDivider, displayWidth, displayHeight, recursionMax, name, scene,
+                threads, shading, samples, minWeight, moveSpeed, turnSpeed, targetFps, limits, false);
+    }
 
     public static Config defaults() {
         return new Config(false, 1e-9, 2, 8, 800, 600, 16, "Glint", "scenes/default.yaml",
@@ -40,54 +52,61 @@ public record Config(boolean debug, double epsilon, double displayScale, int scr
 
     public Config withSize(int width, int height) {
         return new Config(debug, epsilon, displayScale, screenDivider, width, height, recursionMax, name,
-                scene, threads, shading, samples, minWeight, moveSpeed, turnSpeed, targetFps, limits);
+                scene, threads, shading, samples, minWeight, moveSpeed, turnSpeed, targetFps, limits, freeFlight);
     }
 
     public Config withSamples(int newSamples) {
         return new Config(debug, epsilon, displayScale, screenDivider, displayWidth, displayHeight,
                 recursionMax, name, scene, threads, shading, newSamples, minWeight, moveSpeed, turnSpeed,
-                targetFps, limits);
+                targetFps, limits, freeFlight);
     }
 
     public Config withThreads(int newThreads) {
         return new Config(debug, epsilon, displayScale, screenDivider, displayWidth, displayHeight,
                 recursionMax, name, scene, newThreads, shading, samples, minWeight, moveSpeed, turnSpeed,
-                targetFps, limits);
+                targetFps, limits, freeFlight);
     }
 
     public Config withRecursionMax(int depth) {
         return new Config(debug, epsilon, displayScale, screenDivider, displayWidth, displayHeight,
-                depth, name, scene, threads, shading, samples, minWeight, moveSpeed, turnSpeed, targetFps, limits);
+                depth, name, scene, threads, shading, samples, minWeight, moveSpeed, turnSpeed, targetFps, limits,
+                freeFlight);
     }
 
     public Config withShading(Shading model) {
         return new Config(debug, epsilon, displayScale, screenDivider, displayWidth, displayHeight,
                 recursionMax, name, scene, threads, model, samples, minWeight, moveSpeed, turnSpeed,
-                targetFps, limits);
+                targetFps, limits, freeFlight);
     }
 
     public Config withScreenDivider(int divider) {
         return new Config(debug, epsilon, displayScale, divider, displayWidth, displayHeight,
                 recursionMax, name, scene, threads, shading, samples, minWeight, moveSpeed, turnSpeed,
-                targetFps, limits);
+                targetFps, limits, freeFlight);
     }
 
     public Config withMinWeight(double weight) {
         return new Config(debug, epsilon, displayScale, screenDivider, displayWidth, displayHeight,
                 recursionMax, name, scene, threads, shading, samples, weight, moveSpeed, turnSpeed,
-                targetFps, limits);
+                targetFps, limits, freeFlight);
     }
 
     public Config withScene(String sceneFile) {
         return new Config(debug, epsilon, displayScale, screenDivider, displayWidth, displayHeight,
                 recursionMax, name, sceneFile, threads, shading, samples, minWeight, moveSpeed, turnSpeed,
-                targetFps, limits);
+                targetFps, limits, freeFlight);
     }
 
     public Config withLimits(Limits newLimits) {
         return new Config(debug, epsilon, displayScale, screenDivider, displayWidth, displayHeight,
                 recursionMax, name, scene, threads, shading, samples, minWeight, moveSpeed, turnSpeed,
-                targetFps, newLimits);
+                targetFps, newLimits, freeFlight);
+    }
+
+    public Config withFreeFlight(boolean free) {
+        return new Config(debug, epsilon, displayScale, screenDivider, displayWidth, displayHeight,
+                recursionMax, name, scene, threads, shading, samples, minWeight, moveSpeed, turnSpeed,
+                targetFps, limits, free);
     }
 
     /** True when n is 1, 4, 9, 16, ... */

@@ -16,7 +16,7 @@ public final class ConfigLoader {
     static final Set<String> KEYS = new LinkedHashSet<>(List.of(
             "debug", "epsilon", "display_scale", "screen_divider", "display_height", "recursion_max",
             "display_width", "name", "scene", "threads", "shading", "samples", "min_weight",
-            "move_speed", "turn_speed", "target_fps",
+            "move_speed", "turn_speed", "target_fps", "free_flight",
             "max_image_pixels", "max_scene_bytes", "max_objects", "max_lights", "max_recursion"));
 
     /** The largest config file read; a real one is about 1 KB. */
@@ -98,8 +98,9 @@ public final class ConfigLoader {
         double moveSpeed = positive("move_speed", d.moveSpeed());
         double turnSpeed = positive("turn_speed", d.turnSpeed());
         double targetFps = number("target_fps", d.targetFps(), 1, 1000, "a number from 1 to 1000");
+        boolean freeFlight = bool("free_flight", d.freeFlight());
         return new Config(debug, epsilon, displayScale, divider, width, height, depth, name, scene, threads,
-                shading, samples, minWeight, moveSpeed, turnSpeed, targetFps, limits);
+                shading, samples, minWeight, moveSpeed, turnSpeed, targetFps, limits, freeFlight);
     }
 
     private Limits limits(Limits d) throws InputException {

@@ -6,7 +6,7 @@ package glint.geometry;
  * number of a primitive the ray leaves on its outer side (it cannot meet it there again), or
  * {@link Hit#NONE}; {@code inside} the closed primitive the ray has just entered or goes on
  * inside of (refracted into it, reflected inside it), or {@link Hit#NONE}: a hint an aggregate may
- * use ({@link EmptyInteriors}). Implementations ({@link FlatList}, {@link Bvh}, and the filter {@link EmptyInteriors}) are immutable and shared by
+ * use ({@link EmptyInteriors}). Implementations ({@link Bvh}, the filter {@link EmptyInteriors}, and in the tests a flat list) are immutable and shared by
  * the render threads; each thread passes its own traversal {@code stack}, made by
  * {@link #newStack}. {@link AggregatePolicy} picks one for a scene.
  */

@@ -60,28 +60,6 @@ public final class Intersect {
     }
 
     /**
-     * The textbook sphere test: the quadratic in t with the usual root formula, as in the 2020
-     * report. Kept only to measure how it fails; the renderer never uses it.
-     */
-    public static double sphereNaive(double cx, double cy, double cz, double radius,
-                                     double ox, double oy, double oz, double dx, double dy, double dz) {
-        double sx = cx - ox, sy = cy - oy, sz = cz - oz;
-        double ds = dx * sx + dy * sy + dz * sz;
-        double dd = dx * dx + dy * dy + dz * dz;
-        double discriminant = ds * ds - dd * (sx * sx + sy * sy + sz * sz - radius * radius);
-        if (discriminant < 0) {
-            return MISS;
-        }
-        double root = Math.sqrt(discriminant);
-        double t0 = (ds - root) / dd;
-        double t1 = (ds + root) / dd;
-        if (t0 > 0) {
-            return t0;
-        }
-        return t1 > 0 ? t1 : MISS;
-    }
-
-    /**
      * Nearest t > 0 where the ray meets the plane n.p = offset. A ray parallel to the plane (or
      * lying in it) misses; a nearly parallel one hits far away, never at NaN.
      */

@@ -19,7 +19,7 @@ final class CameraRows {
     private CameraBasis camera;
     private int width, x0, x1, side, firstSample, sampleCount, frameIndex;
 
-    // one coordinate an array, so that a packet of neighbouring rays loads with one instruction
+    // one coordinate an array
     double[] dirX = new double[0], dirY = new double[0], dirZ = new double[0];
     double[] radianceR = new double[0], radianceG = new double[0], radianceB = new double[0];
     /** Screen x of the centres of the tile's pixels, shared by its rows (with one sample a pixel). */
@@ -93,11 +93,6 @@ final class CameraRows {
         return px * scaleX + offsetX;
     }
 
-    /** Image x (pixels from the left, fractional) of screen x: the inverse of {@link #screenX}. */
-    double pixelOf(double sx) {
-        return (sx - offsetX) / scaleX;
-    }
-
     /** Screen y of image y (pixels from the top; screen y grows upwards). */
     double screenY(double py) {
         return py * scaleY + offsetY;
@@ -106,12 +101,7 @@ final class CameraRows {
     /**
      * Aims the camera rays of the tile's row y: each pixel's samples of its stratified pattern, or,
      * when the pattern has one sample, its centre. The centres are aimed with the arithmetic of
-     * {@link #aimThrough} in a loop without branches or calls, which the JIT turns into SIMD
-     * instructions (four rays an instruction where the processor has AVX2), but only where it
-     * compiles the loop in a small method of its own: inlined into a large caller, the same loop
-     * stayed scalar (docs/benchmarks.md). So both loops are kept in this one method, whose
-     * bytecode is longer than the 325 bytes up to which HotSpot's C2 inlines a hot method
-     * ({@code -XX:FreqInlineSize}'s default): it is always compiled on its own.
+     * {@link #aimThrough}, from the tile's screen x of each pixel centre worked out once.
      */
     void aim(int y) {
         if (side == 1) {

@@ -29,8 +29,11 @@ import org.snakeyaml.engine.v2.nodes.ScalarNode;
 public final class SceneLoader {
 
     private static final Set<String> TOP_KEYS =
-            ordered("camera", "background", "ambient", "lights", "materials", "objects");
+            ordered("camera", "background", "ambient", "lights", "materials", "objects", "views");
     private static final Set<String> CAMERA_KEYS = ordered("position", "look_at", "up", "fov");
+    private static final Set<String> VIEW_KEYS = ordered("name", "position", "look_at", "up", "fov");
+    /** Keys 1 to 9 of the window go to the views. */
+    public static final int MAX_VIEWS = 9;
     private static final Set<String> MATERIAL_KEYS =
             ordered("type", "color", "kd", "ks", "kt", "shininess", "ior", "roughness");
     private static final Set<String> SPHERE_KEYS = ordered("type", "center", "radius", "material");
@@ -167,11 +170,38 @@ public final class SceneLoader {
                 objects.add(object(item));
             }
         }
-        return new Scene(camera, background, ambient, lights, objects);
+        List<View> views = top.containsKey("views") ? views(top.get("views")) : List.of();
+        return new Scene(camera, background, ambient, lights, objects, views);
+    }
+
+    /** {@code views:} a list of camera mappings, each with an optional name; at most {@link #MAX_VIEWS}. */
+    private List<View> views(Node node) throws InputException {
+        List<View> views = new ArrayList<>();
+        Set<String> names = new LinkedHashSet<>();
+        for (Node item : yaml.sequence(node, "views")) {
+            if (views.size() == MAX_VIEWS) {
+                throw yaml.error(item, "too many views: at most " + MAX_VIEWS + " (keys 1 to 9 go to them)");
+            }
+            String what = "view " + (views.size() + 1);
+            Map<String, Node> m = yaml.mapping(item, what, VIEW_KEYS);
+            String name = what;
+            if (m.containsKey("name")) {
+                name = yaml.string(m.get("name"), what);
+                if (!names.add(name)) {
+                    throw yaml.error(m.get("name"), "duplicate view name '" + name + "'");
+                }
+            }
+            views.add(new View(name, camera(item, m)));
+        }
+        return views;
     }
 
     private Camera camera(Node node) throws InputException {
-        Map<String, Node> m = yaml.mapping(node, "camera", CAMERA_KEYS);
+        return camera(node, yaml.mapping(node, "camera", CAMERA_KEYS));
+    }
+
+    /** A camera from the entries {@code m} of the mapping {@code node} (a scene's camera or a view). */
+    private Camera camera(Node node, Map<String, Node> m) throws InputException {
         Vector3d position = m.containsKey("position") ? yaml.vector(m.get("position"), "position")
                 : new Vector3d(0, 1, -5);
         Vector3d lookAt = m.containsKey("look_at") ? yaml.vector(m.get("look_at"), "look_at")

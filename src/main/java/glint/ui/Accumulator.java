@@ -4,19 +4,24 @@ import glint.render.FrameBuffer;
 
 /**
  * Progressive refinement while the camera is still: adds the sample passes of one view and keeps
- * their plain average, which after all passes is the still image (SPEC section 3).
+ * their plain average, which after all passes is the still image (SPEC section 3). Adding a pass and
+ * encoding the average to 8-bit sRGB are one loop over a range of pixels, so that the window can split
+ * a pass among threads ({@link FrameRenderer}).
  */
 final class Accumulator {
 
-    private FrameBuffer mean;
+    private int width;
+    private int height;
     private double[] sum;
     private int passes;
 
     /** Starts over for a width x height view. */
-    void reset(int width, int height) {
-        if (mean == null || mean.width() != width || mean.height() != height) {
-            mean = new FrameBuffer(width, height);
-            sum = new double[3 * width * height];
+    void reset(int newWidth, int newHeight) {
+        if (sum == null || newWidth != width || newHeight != height) {
+            sum = null; // the old one can go before the new one is taken
+            sum = new double[3 * newWidth * newHeight];
+            width = newWidth;
+            height = newHeight;
         } else {
             java.util.Arrays.fill(sum, 0);
         }
@@ -28,16 +33,29 @@ final class Accumulator {
         return passes;
     }
 
-    /** Adds one pass (of the size given to {@link #reset}) and returns the average so far. */
-    FrameBuffer add(FrameBuffer pass) {
-        float[] in = pass.rgb();
-        float[] out = mean.rgb();
+    /** Counts one more pass; its pixels are then added by {@link #addAndEncode}, range by range. */
+    void beginPass() {
         passes++;
+    }
+
+    /**
+     * Adds pixels {@code from} (inclusive) to {@code to} (exclusive) of a pass to the sums and writes the
+     * average so far, as 8-bit sRGB, to {@code rgb} (0xRRGGBB a pixel). Ranges that do not overlap may be
+     * done on different threads at once.
+     */
+    void addAndEncode(FrameBuffer pass, int[] rgb, int from, int to) {
+        float[] in = pass.rgb();
+        double[] s = sum;
         double inverse = 1.0 / passes;
-        for (int i = 0; i < in.length; i++) {
-            sum[i] += in[i];
-            out[i] = (float) (sum[i] * inverse);
+        for (int p = from, i = 3 * from; p < to; p++, i += 3) {
+            double r = s[i] + in[i];
+            double g = s[i + 1] + in[i + 1];
+            double b = s[i + 2] + in[i + 2];
+            s[i] = r;
+            s[i + 1] = g;
+            s[i + 2] = b;
+            rgb[p] = SrgbEncoder.code((float) (r * inverse)) << 16 | SrgbEncoder.code((float) (g * inverse)) << 8
+                    | SrgbEncoder.code((float) (b * inverse));
         }
-        return mean;
     }
 }

@@ -17,7 +17,16 @@ public enum Action {
     SPEED(Kind.POINTER),
     TOGGLE_SHADING(Kind.COMMAND), DEPTH_UP(Kind.COMMAND), DEPTH_DOWN(Kind.COMMAND),
     SCREENSHOT(Kind.COMMAND), RELOAD(Kind.COMMAND), QUIT(Kind.COMMAND),
-    TOGGLE_OVERLAY(Kind.COMMAND), TOGGLE_HELP(Kind.COMMAND);
+    TOGGLE_OVERLAY(Kind.COMMAND), TOGGLE_HELP(Kind.COMMAND),
+    /** Takes the roll out of the camera. */
+    LEVEL(Kind.COMMAND),
+    /** Back to the scene file's camera. */
+    HOME(Kind.COMMAND),
+    /** To one of the scene's views (which one: {@link InputFrame#view}). */
+    VIEW(Kind.COMMAND),
+    /** Prints the camera as a scene's camera block. */
+    PRINT_CAMERA(Kind.COMMAND),
+    NEXT_SCENE(Kind.COMMAND), PREVIOUS_SCENE(Kind.COMMAND);
 
     /** How an action is triggered. */
     public enum Kind { MOTION, MODIFIER, POINTER, COMMAND }

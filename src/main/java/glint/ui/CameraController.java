@@ -5,11 +5,17 @@ import glint.math.Vector3d;
 import glint.scene.Camera;
 
 /**
- * Flies the camera: a position and a unit quaternion, moved by how long each key was held. All
- * motion is in the camera's own frame (right +x, up +y, forward +z): W flies where the camera looks,
- * the arrows turn about its own up and right axes, Q and E roll about its forward axis. Turns compose
- * as quaternions, so there is no gimbal lock, and the quaternion is re-normalised on every update so
- * that it stays unit however long one flies.
+ * Flies the camera: a position and a unit quaternion, moved by how long each key was held. Flying is
+ * in the camera's own frame (right +x, up +y, forward +z): W flies where the camera looks, Q and E
+ * roll about its forward axis.
+ *
+ * <p>Turning keeps the horizon level: yaw turns about the world's up axis (+y) and pitch about the
+ * camera's right axis, and pitch stops {@link #PITCH_LIMIT_DEGREES} short of straight up and down.
+ * Neither changes the height of the camera's right axis above the horizon, so the horizon tilts only
+ * when the user rolls; {@link #level} takes the roll out. In free flight (config key
+ * {@code free_flight}) both turns are about the camera's own axes and pitch has no bound, as in a
+ * plane. Turns compose as quaternions, re-normalised on every update so that the quaternion stays unit
+ * however long one flies.
  */
 public final class CameraController {
 
@@ -21,6 +27,10 @@ public final class CameraController {
     public static final double DRAG_DEGREES_PER_PIXEL = 0.2;
     /** The wheel changes the speed by at most this factor either way. */
     static final double SPEED_FACTOR_LIMIT = 1024;
+    /** A level camera's view stays this many degrees below straight up and above straight down. */
+    public static final double PITCH_LIMIT_DEGREES = 1;
+
+    private static final double MAX_ELEVATION_SIN = Math.cos(Math.toRadians(PITCH_LIMIT_DEGREES));
 
     private Vector3d position;
     private Quaternion orientation;
@@ -28,6 +38,7 @@ public final class CameraController {
     private double moveSpeed;
     private double turnSpeedDegrees;
     private double speedFactor = 1;
+    private boolean freeFlight;
 
     /**
      * @param start            the initial pose and field of view
@@ -49,6 +60,54 @@ public final class CameraController {
     public void setSpeeds(double newMoveSpeed, double newTurnSpeedDegrees) {
         this.moveSpeed = newMoveSpeed;
         this.turnSpeedDegrees = newTurnSpeedDegrees;
+    }
+
+    /** Turns about the camera's own axes without a pitch bound (true), or keeps the horizon level. */
+    public void setFreeFlight(boolean free) {
+        this.freeFlight = free;
+    }
+
+    public boolean freeFlight() {
+        return freeFlight;
+    }
+
+    /**
+     * The camera's roll in radians: how far it is turned about its forward axis from level (right axis
+     * horizontal, top up), positive when the right side is up (rolling left). 0 for a level camera.
+     */
+    public double roll() {
+        return roll(orientation);
+    }
+
+    static double roll(Quaternion q) {
+        return Math.atan2(q.right().y(), q.up().y());
+    }
+
+    /**
+     * Takes the roll out at once: the camera keeps its position and the direction it looks in (as
+     * far as the pitch bound allows), with its right axis horizontal. Returns whether it changed.
+     */
+    public boolean level() {
+        Vector3d f = orientation.forward();
+        if (Math.abs(roll()) < 1e-12 && Math.abs(f.y()) <= MAX_ELEVATION_SIN) {
+            return false;
+        }
+        if (f.y() > MAX_ELEVATION_SIN || f.y() < -MAX_ELEVATION_SIN) {
+            // straight up or down: the heading is where the camera's top (looking down) or bottom points
+            Vector3d heading = orientation.up().scale(f.y() > 0 ? -1 : 1);
+            Vector3d flat = new Vector3d(heading.x(), 0, heading.z());
+            if (flat.length() < 1e-9) {
+                flat = Vector3d.UNIT_Z;
+            }
+            double elevation = Math.copySign(Math.toRadians(90 - PITCH_LIMIT_DEGREES), f.y());
+            f = flat.normalize().scale(Math.cos(elevation)).add(new Vector3d(0, Math.sin(elevation), 0));
+        }
+        Quaternion levelled = Quaternion.lookRotation(f, Vector3d.UNIT_Y);
+        if (levelled.equals(orientation)) {
+            return false;
+        }
+        orientation = levelled;
+        return true;
     }
 
     /** The camera now. */
@@ -78,15 +137,66 @@ public final class CameraController {
         double yaw = rate * (in.seconds(Action.YAW_RIGHT) - in.seconds(Action.YAW_LEFT)) + drag * in.dragX();
         double pitchUp = rate * (in.seconds(Action.PITCH_UP) - in.seconds(Action.PITCH_DOWN)) - drag * in.dragY();
         double rollLeft = rate * (in.seconds(Action.ROLL_LEFT) - in.seconds(Action.ROLL_RIGHT));
-        // In the camera frame: +yaw about +y turns forward towards right; looking up is a negative
-        // turn about +x; rolling left (right side up) is a positive turn about +z.
-        Vector3d rotation = new Vector3d(-pitchUp, yaw, rollLeft);
-        double angle = rotation.length();
-        if (angle == 0) {
+        if (yaw == 0 && pitchUp == 0 && rollLeft == 0) {
             return false;
         }
-        orientation = orientation.multiply(Quaternion.fromAxisAngle(rotation, angle)).normalize();
+        if (freeFlight) {
+            // In the camera frame: +yaw about +y turns forward towards right; looking up is a negative
+            // turn about +x; rolling left (right side up) is a positive turn about +z.
+            Vector3d rotation = new Vector3d(-pitchUp, yaw, rollLeft);
+            orientation = orientation.multiply(Quaternion.fromAxisAngle(rotation, rotation.length())).normalize();
+            return true;
+        }
+        Quaternion q = orientation;
+        double pitch = boundedPitch(q, pitchUp); // yaw about the world's up does not change the height
+        if (rollLeft == 0 && yaw == 0 && pitch == 0) {
+            return false; // at the bound
+        }
+        if (pitch != 0) { // about the camera's right axis, which stays where it is
+            q = q.multiply(Quaternion.fromAxisAngle(Vector3d.UNIT_X, -pitch));
+        }
+        if (rollLeft != 0) { // about the forward axis: the view's height stays
+            q = q.multiply(Quaternion.fromAxisAngle(Vector3d.UNIT_Z, rollLeft));
+        }
+        if (yaw != 0) { // about the world's up: a turn on the spot, whatever the pitch
+            q = Quaternion.fromAxisAngle(Vector3d.UNIT_Y, yaw).multiply(q);
+        }
+        orientation = q.normalize();
         return true;
+    }
+
+    /**
+     * The part of a pitch of {@code pitchUp} radians that keeps the view within the bound. Pitching by t
+     * turns forward to f cos t + u sin t, whose height is A cos(t - phase): highest at t = phase, lowest
+     * half a turn on. Measured from the top (s = t - phase), an upright camera is allowed on the arc
+     * between the bottom bound and the top bound, and the pitch is clamped to its ends. (A camera rolled
+     * so far that its view cannot reach the bound stops at the top or the bottom itself.) A camera off
+     * the arc (a scene's camera looking straight down) may turn only as far as the arc's far end.
+     */
+    private static double boundedPitch(Quaternion q, double pitchUp) {
+        if (pitchUp == 0) {
+            return 0;
+        }
+        double fy = q.forward().y();
+        double uy = q.up().y();
+        double amplitude = Math.hypot(fy, uy);
+        // the top's forbidden half-width; a rolled camera that cannot reach the bound stops where it
+        // looks highest (or lowest) rather than turning over
+        double reach = amplitude > MAX_ELEVATION_SIN ? Math.acos(MAX_ELEVATION_SIN / amplitude) : 0;
+        double s = -Math.atan2(uy, fy); // where the camera is, measured from the top
+        // an upright camera (its top above the horizon) is on the arc from the bottom bound to the top one
+        double low = -Math.PI + reach;
+        double high = -reach;
+        if (s >= low - 1e-9 && s <= high + 1e-9) { // on it, or a rounding error past a bound: no further
+            low = Math.min(low, s);
+            high = Math.max(high, s);
+        } else if (s > high) { // beyond the top or upside down: either way round, to the arc's far end
+            high += 2 * Math.PI;
+        } else { // beyond the bottom
+            low -= 2 * Math.PI;
+        }
+        double pitch = Math.max(low, Math.min(high, s + pitchUp)) - s;
+        return Math.abs(pitch) < 1e-12 ? 0 : pitch; // at the bound: no turn, not a rounding error's worth
     }
 
     private boolean move(InputFrame in) {

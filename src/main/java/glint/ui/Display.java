@@ -88,12 +88,18 @@ public final class Display extends JPanel implements Presenter {
         g.setFont(font);
         g.setRenderingHint(RenderingHints.KEY_TEXT_ANTIALIASING, RenderingHints.VALUE_TEXT_ANTIALIAS_ON);
         int y = PAD;
+        List<OverlayText.Line> keys = help ? KeyBindings.helpLines().stream()
+                .map(t -> new OverlayText.Line(t, OverlayText.Tone.NORMAL)).toList() : List.of();
         if (overlay && frame != null) {
-            y = box(g, OverlayText.lines(frame.stats()), y) + PAD;
+            List<OverlayText.Line> stats = OverlayText.lines(frame.stats());
+            int rows = stats.size() + keys.size();
+            // the help goes below the overlay; where both do not fit, the help alone is shown
+            if (!help || rows * g.getFontMetrics().getHeight() + 5 * PAD <= getHeight()) {
+                y = box(g, stats, y) + PAD;
+            }
         }
         if (help) {
-            box(g, KeyBindings.helpLines().stream().map(t -> new OverlayText.Line(t, OverlayText.Tone.NORMAL))
-                    .toList(), y);
+            box(g, keys, y);
         }
         // X11 buffers drawing requests; without a flush a frame can sit unseen until other traffic comes
         Toolkit.getDefaultToolkit().sync();
@@ -101,16 +107,21 @@ public final class Display extends JPanel implements Presenter {
 
     /** Draws lines in a dark box at the top left, wrapped to the window; returns the box's bottom. */
     private int box(Graphics2D g, List<OverlayText.Line> unwrapped, int top) {
+        return box(g, unwrapped, PAD, top, getWidth() - 4 * PAD);
+    }
+
+    /** Draws lines in a dark box from ({@code left}, {@code top}), wrapped to {@code wrapWidth}; returns its bottom. */
+    private int box(Graphics2D g, List<OverlayText.Line> unwrapped, int left, int top, int wrapWidth) {
         FontMetrics m = g.getFontMetrics();
         List<OverlayText.Line> lines = OverlayText.wrap(unwrapped, m::stringWidth,
-                Math.max(m.charWidth('m') * 20, getWidth() - 4 * PAD));
+                Math.max(m.charWidth('m') * 20, wrapWidth));
         int width = 0;
         for (OverlayText.Line line : lines) {
             width = Math.max(width, m.stringWidth(line.text()));
         }
         int height = lines.size() * m.getHeight();
         g.setColor(BOX);
-        g.fillRoundRect(PAD, top, width + 2 * PAD, height + 2 * PAD, 8, 8);
+        g.fillRoundRect(left, top, width + 2 * PAD, height + 2 * PAD, 8, 8);
         int y = top + PAD + m.getAscent();
         for (OverlayText.Line line : lines) {
             g.setColor(switch (line.tone()) {
@@ -118,7 +129,7 @@ public final class Display extends JPanel implements Presenter {
                 case NOTE -> NOTE;
                 case ERROR -> ERROR;
             });
-            g.drawString(line.text(), 2 * PAD, y);
+            g.drawString(line.text(), left + PAD, y);
             y += m.getHeight();
         }
         return top + height + 2 * PAD;

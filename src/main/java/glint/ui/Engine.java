@@ -7,11 +7,15 @@ import glint.render.RenderScene;
 import glint.render.RenderSettings;
 import glint.scene.Camera;
 import glint.scene.Scene;
+import glint.scene.View;
 import java.awt.image.BufferedImage;
 import java.io.IOException;
 import java.io.PrintWriter;
 import java.nio.file.Path;
+import java.nio.file.Files;
+import java.util.List;
 import java.util.Locale;
+import java.util.stream.Stream;
 import java.util.concurrent.CountDownLatch;
 import java.util.concurrent.TimeUnit;
 import java.util.concurrent.atomic.AtomicReference;
@@ -45,6 +49,7 @@ public final class Engine implements Runnable, SceneWatcher.Listener {
     private final Screenshots screenshots;
     private final Clock clock;
     private final PrintWriter err;
+    private PrintWriter out = new PrintWriter(System.out, true); // key C's camera block
     private final CameraController controller;
     private final ResolutionGovernor governor;
     private final FrameRenderer renderer;
@@ -100,6 +105,7 @@ public final class Engine implements Runnable, SceneWatcher.Listener {
         this.shading = config.shading();
         this.depth = config.recursionMax();
         this.controller = new CameraController(scene.camera(), config.moveSpeed(), config.turnSpeed());
+        controller.setFreeFlight(config.freeFlight());
         this.governor = new ResolutionGovernor(config.targetFps(), config.displayScale());
         this.renderer = new FrameRenderer(config.effectiveThreads(), config.screenDivider(), trace);
         this.viewWidth = input.viewWidth();
@@ -145,6 +151,11 @@ public final class Engine implements Runnable, SceneWatcher.Listener {
     public void stop() {
         running = false;
         input.signal();
+    }
+
+    /** Where key C prints the camera block (standard output unless a test says otherwise). */
+    void printTo(PrintWriter printer) {
+        this.out = printer;
     }
 
     /** Waits until {@link #run} has returned. */
@@ -206,7 +217,9 @@ public final class Engine implements Runnable, SceneWatcher.Listener {
         long start = clock.nanoTime();
         InputFrame in = input.drain();
         for (Action command : in.commands()) {
-            command(command);
+            if (!isCameraJump(command)) {
+                command(command, in);
+            }
         }
         if (!running) {
             return 0;
@@ -226,6 +239,11 @@ public final class Engine implements Runnable, SceneWatcher.Listener {
             lastMotion = start;
             cameraNow = controller.camera();
             invalidate();
+        }
+        for (Action command : in.commands()) {
+            if (isCameraJump(command)) { // after the interval's motion: the key came after it
+                command(command, in);
+            }
         }
         boolean moving = moved || in.motionHeld() || start - lastMotion < MOTION_HOLD_NANOS;
         boolean frameDue = moving ? needFrame : passesDone < config.samples();
@@ -386,7 +404,7 @@ public final class Engine implements Runnable, SceneWatcher.Listener {
         statusChanged = true;
     }
 
-    private void command(Action action) {
+    private void command(Action action, InputFrame in) {
         switch (action) {
             case TOGGLE_SHADING -> {
                 shading = shading.other();
@@ -405,10 +423,92 @@ public final class Engine implements Runnable, SceneWatcher.Listener {
             }
             case SCREENSHOT -> screenshot();
             case RELOAD -> reload();
+            case LEVEL -> {
+                if (controller.level()) {
+                    cameraMoved();
+                }
+                note("level");
+            }
+            case HOME -> {
+                controller.reset(fileCamera);
+                cameraMoved();
+                note("the scene's camera");
+            }
+            case VIEW -> view(in.view());
+            case PRINT_CAMERA -> {
+                String block = CameraBlock.yaml(controller.camera());
+                out.print(block);
+                out.flush();
+                note(block.strip());
+            }
+            case NEXT_SCENE -> openNeighbour(1);
+            case PREVIOUS_SCENE -> openNeighbour(-1);
             case QUIT -> running = false;
             default -> {
                 // overlay and help are the display's
             }
+        }
+    }
+
+    /** L, Home and the views put the camera somewhere: they act after the motion of the same interval. */
+    private static boolean isCameraJump(Action action) {
+        return action == Action.LEVEL || action == Action.HOME || action == Action.VIEW;
+    }
+
+    /** The camera jumped (Home, a view, L): the view is drawn anew. */
+    private void cameraMoved() {
+        cameraNow = controller.camera();
+        invalidate();
+    }
+
+    /** Keys 1 to 9: the scene's views. */
+    private void view(int index) {
+        List<View> views = scene.views();
+        if (index < 0 || index >= views.size()) {
+            note(views.isEmpty() ? "the scene has no views (views: in the scene file)"
+                    : "the scene has " + views.size() + (views.size() == 1 ? " view (key 1)"
+                    : " views (keys 1 to " + views.size() + ")"));
+            return;
+        }
+        controller.reset(views.get(index).camera());
+        cameraMoved();
+        note("view " + (index + 1) + ": " + views.get(index).name());
+    }
+
+    /**
+     * Page Down (+1) and Page Up (-1): the next or previous scene file (.yaml, .yml) of the current scene's
+     * folder, by name, round to the first or last. The window watches that file from now on; one that does
+     * not load says why and leaves the view as it was.
+     */
+    private void openNeighbour(int step) {
+        Path current = source.scenePath().toAbsolutePath().normalize();
+        Path folder = current.getParent();
+        List<Path> scenes;
+        try (Stream<Path> files = Files.list(folder)) {
+            scenes = files.filter(f -> {
+                String name = f.getFileName().toString().toLowerCase(Locale.ROOT);
+                return (name.endsWith(".yaml") || name.endsWith(".yml")) && Files.isRegularFile(f);
+            }).map(f -> f.toAbsolutePath().normalize()).sorted().toList();
+        } catch (IOException | RuntimeException e) {
+            note("cannot list " + folder + ": " + e.getMessage());
+            return;
+        }
+        int at = scenes.indexOf(current);
+        if (scenes.isEmpty() || at >= 0 && scenes.size() == 1) {
+            note("no other scene in " + folder);
+            return;
+        }
+        int next = at < 0 ? (step > 0 ? 0 : scenes.size() - 1) : Math.floorMod(at + step, scenes.size());
+        Path target = source.scenePath().resolveSibling(scenes.get(next).getFileName());
+        source.scenePath(target);
+        pendingScene.set(null); // a change the watcher saw in the old file is no longer wanted
+        try {
+            setScene(source.loadScene(), true);
+            setError("");
+            note("opened " + target + " (" + (next + 1) + " of " + scenes.size() + ")");
+        } catch (InputException e) {
+            setError(e.getMessage());
+            note("opened " + target + ": it does not load");
         }
     }
 
@@ -452,6 +552,7 @@ public final class Engine implements Runnable, SceneWatcher.Listener {
         shading = c.shading();
         depth = c.recursionMax(); // at most max_recursion: the config loader refuses more
         controller.setSpeeds(c.moveSpeed(), c.turnSpeed());
+        controller.setFreeFlight(c.freeFlight());
         governor.setLimits(c.targetFps(), c.displayScale());
         renderer.configure(c.effectiveThreads(), c.screenDivider());
         source.limits(c.limits().scene());

@@ -8,6 +8,10 @@ import java.awt.image.BufferedImage;
 /**
  * The engine's use of the tracer: a quick one-sample frame while the camera moves, or the next
  * sample pass of the progressive still image. Each call returns a new image of a complete frame.
+ *
+ * <p>After the render threads have traced a pass, adding it to the average and encoding the average
+ * to sRGB is split among as many threads as render ({@link PixelRanges}), so that a still pass in the
+ * window costs little more than the same pass headless.
  */
 final class FrameRenderer implements AutoCloseable {
 
@@ -42,6 +46,7 @@ final class FrameRenderer implements AutoCloseable {
     private int divider;
     private FrameBuffer buffer;
     private final Accumulator accumulator = new Accumulator();
+    private PixelRanges ranges;
 
     FrameRenderer(int threads, int divider) {
         this(threads, divider, TraceCall.TRACER);
@@ -50,6 +55,7 @@ final class FrameRenderer implements AutoCloseable {
     FrameRenderer(int threads, int divider, TraceCall call) {
         this.call = call;
         this.tracer = new Tracer(threads);
+        this.ranges = new PixelRanges(threads);
         this.divider = divider;
     }
 
@@ -62,6 +68,8 @@ final class FrameRenderer implements AutoCloseable {
         if (threads != tracer.threads()) {
             tracer.close();
             tracer = new Tracer(threads);
+            ranges.close();
+            ranges = new PixelRanges(threads);
         }
         divider = newDivider;
     }
@@ -70,7 +78,10 @@ final class FrameRenderer implements AutoCloseable {
     BufferedImage renderMoving(RenderScene scene, int width, int height) {
         FrameBuffer frame = buffer(width, height);
         call.trace(tracer, scene, frame, 1, TraceCall.WHOLE_FRAME, divider);
-        return SrgbEncoder.toImage(frame);
+        BufferedImage image = SrgbEncoder.newImage(width, height);
+        int[] pixels = SrgbEncoder.pixels(image);
+        ranges.run(width * height, (from, to) -> SrgbEncoder.encode(frame, pixels, from, to));
+        return image;
     }
 
     /**
@@ -83,7 +94,11 @@ final class FrameRenderer implements AutoCloseable {
         }
         FrameBuffer frame = buffer(width, height);
         call.trace(tracer, scene, frame, samples, pass, divider);
-        return SrgbEncoder.toImage(accumulator.add(frame));
+        BufferedImage image = SrgbEncoder.newImage(width, height);
+        int[] pixels = SrgbEncoder.pixels(image);
+        accumulator.beginPass();
+        ranges.run(width * height, (from, to) -> accumulator.addAndEncode(frame, pixels, from, to));
+        return image;
     }
 
     private FrameBuffer buffer(int width, int height) {
@@ -97,5 +112,6 @@ final class FrameRenderer implements AutoCloseable {
     @Override
     public void close() {
         tracer.close();
+        ranges.close();
     }
 }

@@ -13,9 +13,10 @@ import java.util.List;
  * @param dragY         mouse drag downwards since the last update, in pixels
  * @param wheelNotches  wheel rotation since the last update (negative: away from the user)
  * @param commands      commands in the order they were given
+ * @param view          the view (0 to 8) the last {@link Action#VIEW} command asked for, or -1
  */
 public record InputFrame(double[] heldSeconds, boolean fast, boolean motionHeld, double dragX, double dragY,
-                         int wheelNotches, List<Action> commands) {
+                         int wheelNotches, List<Action> commands, int view) {
 
     public InputFrame {
         heldSeconds = heldSeconds.clone();
@@ -24,7 +25,7 @@ public record InputFrame(double[] heldSeconds, boolean fast, boolean motionHeld,
 
     /** Nothing happened. */
     public static InputFrame none() {
-        return new InputFrame(new double[Action.values().length], false, false, 0, 0, 0, List.of());
+        return new InputFrame(new double[Action.values().length], false, false, 0, 0, 0, List.of(), -1);
     }
 
     /** Seconds {@code action} was held in the interval. */
@@ -41,6 +42,7 @@ public record InputFrame(double[] heldSeconds, boolean fast, boolean motionHeld,
         private double dragY;
         private int wheel;
         private final List<Action> commands = new ArrayList<>();
+        private int view = -1;
 
         public Builder hold(Action action, double seconds) {
             held[action.ordinal()] += seconds;
@@ -76,8 +78,15 @@ public record InputFrame(double[] heldSeconds, boolean fast, boolean motionHeld,
             return this;
         }
 
+        /** Key {@code index + 1}: go to view {@code index}. */
+        public Builder view(int index) {
+            commands.add(Action.VIEW);
+            view = index;
+            return this;
+        }
+
         public InputFrame build() {
-            return new InputFrame(held, fast, motionHeld, dragX, dragY, wheel, commands);
+            return new InputFrame(held, fast, motionHeld, dragX, dragY, wheel, commands, view);
         }
     }
 }

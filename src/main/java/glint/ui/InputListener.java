@@ -65,7 +65,11 @@ final class InputListener {
                 if (action.isHeld()) {
                     input.press(action);
                 } else if (commandKeysDown.add(e.getKeyCode())) { // not again while auto-repeating
-                    command(action);
+                    if (action == Action.VIEW) {
+                        input.view(KeyBindings.viewOf(e.getKeyCode()));
+                    } else {
+                        command(action);
+                    }
                 }
             }
 

@@ -26,6 +26,7 @@ public final class InputState {
     private double dragX;
     private double dragY;
     private int wheel;
+    private int view = -1;
     private int viewWidth;
     private int viewHeight;
     private boolean signalled;
@@ -82,6 +83,18 @@ public final class InputState {
         lock.lock();
         try {
             commands.add(action);
+            signalLocked();
+        } finally {
+            lock.unlock();
+        }
+    }
+
+    /** Key {@code index + 1}: go to the scene's view {@code index} (0 to 8). */
+    public void view(int index) {
+        lock.lock();
+        try {
+            commands.add(Action.VIEW);
+            view = index;
             signalLocked();
         } finally {
             lock.unlock();
@@ -165,12 +178,13 @@ public final class InputState {
             }
             lastDrain = now;
             InputFrame frame = new InputFrame(heldSeconds, down[Action.FAST.ordinal()], motionHeld,
-                    dragX, dragY, wheel, commands);
+                    dragX, dragY, wheel, commands, view);
             Arrays.fill(heldSeconds, 0);
             commands.clear();
             dragX = 0;
             dragY = 0;
             wheel = 0;
+            view = -1;
             return frame;
         } finally {
             lock.unlock();

@@ -1,5 +1,6 @@
 package glint.ui;
 
+import glint.scene.SceneLoader;
 import java.awt.event.KeyEvent;
 import java.util.ArrayList;
 import java.util.List;
@@ -50,6 +51,17 @@ public final class KeyBindings {
             typed(Action.DEPTH_DOWN, "-", "recursion depth - 1", "-_"),
             key(Action.SCREENSHOT, "F12 or P", "save the view as a PNG: glint-YYYYMMDD-HHMMSS-mmm.png",
                     KeyEvent.VK_F12, KeyEvent.VK_P),
+            key(Action.LEVEL, "L", "level the camera: take the roll out", KeyEvent.VK_L),
+            key(Action.HOME, "Home", "back to the scene's camera", KeyEvent.VK_HOME),
+            key(Action.VIEW, "1 to 9", "go to the scene's views (views: in the scene file)",
+                    KeyEvent.VK_1, KeyEvent.VK_2, KeyEvent.VK_3, KeyEvent.VK_4, KeyEvent.VK_5, KeyEvent.VK_6,
+                    KeyEvent.VK_7, KeyEvent.VK_8, KeyEvent.VK_9, KeyEvent.VK_NUMPAD1, KeyEvent.VK_NUMPAD2,
+                    KeyEvent.VK_NUMPAD3, KeyEvent.VK_NUMPAD4, KeyEvent.VK_NUMPAD5, KeyEvent.VK_NUMPAD6,
+                    KeyEvent.VK_NUMPAD7, KeyEvent.VK_NUMPAD8, KeyEvent.VK_NUMPAD9),
+            key(Action.PRINT_CAMERA, "C", "print the camera as a scene's camera: block", KeyEvent.VK_C),
+            key(Action.NEXT_SCENE, "Page Down", "open the next scene of the scene's folder", KeyEvent.VK_PAGE_DOWN),
+            key(Action.PREVIOUS_SCENE, "Page Up", "open the previous scene of the scene's folder",
+                    KeyEvent.VK_PAGE_UP),
             key(Action.RELOAD, "F5", "reload the scene and the config", KeyEvent.VK_F5),
             key(Action.TOGGLE_OVERLAY, "H", "show / hide the overlay", KeyEvent.VK_H),
             typed(Action.TOGGLE_HELP, "?", "show / hide this help", "?"),
@@ -66,6 +78,15 @@ public final class KeyBindings {
             }
         }
         return null;
+    }
+
+    /**
+     * Which view (0 to 8) a key code of the {@link Action#VIEW} row goes to: keys 1 to 9, on the main
+     * keyboard or the keypad; -1 for any other key.
+     */
+    public static int viewOf(int keyCode) {
+        int i = of(Action.VIEW).keyCodes().indexOf(keyCode);
+        return i < 0 ? -1 : i % SceneLoader.MAX_VIEWS;
     }
 
     /** The action a typed character triggers, or null. */

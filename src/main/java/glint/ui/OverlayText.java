@@ -38,7 +38,9 @@ final class OverlayText {
                 s.depth(), number(s.speed()))));
         lines.add(normal(s.scene()));
         if (!s.message().isEmpty()) {
-            lines.add(new Line(s.message(), Tone.NOTE));
+            for (String line : s.message().split("\n")) { // a camera block (key C) is several lines
+                lines.add(new Line(line, Tone.NOTE));
+            }
         }
         if (!s.error().isEmpty()) {
             lines.add(new Line(s.error(), Tone.ERROR));

@@ -8,13 +8,14 @@ import glint.scene.SceneLoader;
 import java.nio.file.Path;
 
 /**
- * Where the window's scene and config come from, to read them again on F5 or when the file changes. The
+ * Where the window's scene and config come from, to read them again on F5 or when the file changes, or to
+ * read the next scene of the folder (Page Down). The
  * scene is read within the config's scene limits ({@code max_scene_bytes}, {@code max_objects},
  * {@code max_lights}); the window sets them from its config at start and again after F5.
  */
 public final class SceneSource {
 
-    private final Path scenePath;
+    private volatile Path scenePath;
     private final ConfigSource configSource;
     private volatile SceneLimits limits = SceneLimits.DEFAULT;
 
@@ -25,6 +26,11 @@ public final class SceneSource {
 
     public Path scenePath() {
         return scenePath;
+    }
+
+    /** Reads and watches another scene file from now on (Page Down, Page Up; any thread). */
+    public void scenePath(Path newScene) {
+        this.scenePath = newScene;
     }
 
     /** The limits the scene is read within. */

@@ -40,7 +40,7 @@ public final class SceneWatcher implements AutoCloseable {
     }
 
     private final SceneSource source;
-    private final Path file;
+    private Path file; // the source's scene when last read
     private final ScheduledExecutorService timer;
     private volatile Listener listener;
     private byte[] last;     // the content last reported (at start: the content loaded before watching)
@@ -80,6 +80,12 @@ public final class SceneWatcher implements AutoCloseable {
      * gone is reported the same way (gone for two reads: an editor saving by rename is not).
      */
     void poll() {
+        if (!file.equals(source.scenePath())) { // the window opened another scene: watch that one from now
+            file = source.scenePath();
+            last = read();
+            hasPending = false;
+            return;
+        }
         byte[] now = read();
         if (Arrays.equals(now, last)) {
             hasPending = false; // unchanged, or back to what is on screen
@@ -116,7 +122,7 @@ public final class SceneWatcher implements AutoCloseable {
         try {
             poll();
         } catch (RuntimeException e) {
-            listener.failed(new InputException(file.toString(), 0, 0, "cannot watch: " + e));
+            listener.failed(new InputException(source.scenePath().toString(), 0, 0, "cannot watch: " + e));
         }
     }
 

@@ -45,13 +45,27 @@ final class SrgbEncoder {
 
     /** A new image of the frame. */
     static BufferedImage toImage(FrameBuffer frame) {
-        BufferedImage image = new BufferedImage(frame.width(), frame.height(), BufferedImage.TYPE_INT_RGB);
-        int[] pixels = ((DataBufferInt) image.getRaster().getDataBuffer()).getData();
+        BufferedImage image = newImage(frame.width(), frame.height());
+        encode(frame, pixels(image), 0, frame.width() * frame.height());
+        return image;
+    }
+
+    /** A new 8-bit RGB image, black. */
+    static BufferedImage newImage(int width, int height) {
+        return new BufferedImage(width, height, BufferedImage.TYPE_INT_RGB);
+    }
+
+    /** The pixels of an image made by {@link #newImage}, 0xRRGGBB each, row by row. */
+    static int[] pixels(BufferedImage image) {
+        return ((DataBufferInt) image.getRaster().getDataBuffer()).getData();
+    }
+
+    /** Encodes pixels {@code from} (inclusive) to {@code to} (exclusive) of the frame into {@code pixels}. */
+    static void encode(FrameBuffer frame, int[] pixels, int from, int to) {
         float[] rgb = frame.rgb();
-        for (int p = 0, i = 0; p < pixels.length; p++, i += 3) {
+        for (int p = from, i = 3 * from; p < to; p++, i += 3) {
             pixels[p] = code(rgb[i]) << 16 | code(rgb[i + 1]) << 8 | code(rgb[i + 2]);
         }
-        return image;
     }
 
     private static double smallestWithCode(int k) {

@@ -83,6 +83,7 @@ class ConfigLoaderTest {
                 move_speed=3.5
                 turn_speed=90
                 target_fps=24
+                free_flight=true
                 max_image_pixels=1000000
                 max_scene_bytes=4096
                 max_objects=10
@@ -90,14 +91,14 @@ class ConfigLoaderTest {
                 max_recursion=8
                 """);
         assertEquals(new Config(true, 1e-6, 1.5, 4, 640, 480, 7, "My Glint", "scenes/other.yaml", 3,
-                Shading.PHONG, 16, 0.01, 3.5, 90, 24, new Limits(1_000_000, 4096, 10, 2, 8)), c);
+                Shading.PHONG, 16, 0.01, 3.5, 90, 24, new Limits(1_000_000, 4096, 10, 2, 8), true), c);
     }
 
     @Test
     void everyKeyOfKeysIsTestedAbove() {
         assertEquals(List.of("debug", "epsilon", "display_scale", "screen_divider", "display_height",
                 "recursion_max", "display_width", "name", "scene", "threads", "shading", "samples",
-                "min_weight", "move_speed", "turn_speed", "target_fps", "max_image_pixels", "max_scene_bytes",
+                "min_weight", "move_speed", "turn_speed", "target_fps", "free_flight", "max_image_pixels", "max_scene_bytes",
                 "max_objects", "max_lights", "max_recursion"), List.copyOf(ConfigLoader.KEYS));
     }
 
@@ -160,7 +161,7 @@ class ConfigLoaderTest {
     void unknownKeyFarFromAnyListsTheKeys() {
         assertError("config.properties:1:1: unknown key 'colour' (expected one of: debug, epsilon, display_scale, "
                 + "screen_divider, display_height, recursion_max, display_width, name, scene, threads, shading, "
-                + "samples, min_weight, move_speed, turn_speed, target_fps, max_image_pixels, max_scene_bytes, max_objects, "
+                + "samples, min_weight, move_speed, turn_speed, target_fps, free_flight, max_image_pixels, max_scene_bytes, max_objects, "
                 + "max_lights, max_recursion)", "colour=red\n");
     }
 
@@ -388,7 +389,7 @@ class ConfigLoaderTest {
         // a key holding a line break and a terminal escape: one line, nothing the terminal acts on
         assertError("config.properties:1:1: unknown key 'a\\nb\\u001b[2J' (expected one of: debug, epsilon, "
                 + "display_scale, screen_divider, display_height, recursion_max, display_width, name, scene, threads, "
-                + "shading, samples, min_weight, move_speed, turn_speed, target_fps, max_image_pixels, "
+                + "shading, samples, min_weight, move_speed, turn_speed, target_fps, free_flight, max_image_pixels, "
                 + "max_scene_bytes, max_objects, max_lights, max_recursion)", "a\\nb\u001b[2J=1\n");
     }
 

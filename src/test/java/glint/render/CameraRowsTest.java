@@ -8,7 +8,7 @@ import java.util.SplittableRandom;
 import org.junit.jupiter.api.Test;
 
 /**
- * The rays through pixel centres, which a row aims in one loop of its own (for SIMD), are the rays
+ * The rays through pixel centres, which a row aims in one loop of its own, are the rays
  * aimed one point at a time, bit for bit.
  */
 class CameraRowsTest {

@@ -11,7 +11,10 @@ import org.junit.jupiter.api.Test;
 import org.junit.jupiter.params.ParameterizedTest;
 import org.junit.jupiter.params.provider.CsvSource;
 
-/** The camera flies in its own frame, by elapsed time, and its quaternion stays unit. */
+/**
+ * The camera flies in its own frame, by elapsed time, and its quaternion stays unit. A level camera turns
+ * about the world's up axis and keeps its horizon; in free flight it turns about its own axes.
+ */
 class CameraControllerTest {
 
     private static final double SPEED = 2;       // units per second
@@ -20,6 +23,13 @@ class CameraControllerTest {
 
     private final CameraController camera =
             new CameraController(new Camera(Vector3d.ZERO, Quaternion.IDENTITY, 60), SPEED, TURN);
+
+    /** The seed's free flight: every turn about the camera's own axes, pitch unbounded. */
+    private static CameraController free() {
+        CameraController c = new CameraController(new Camera(Vector3d.ZERO, Quaternion.IDENTITY, 60), SPEED, TURN);
+        c.setFreeFlight(true);
+        return c;
+    }
 
     private static InputFrame hold(Action action, double seconds) {
         return new InputFrame.Builder().hold(action, seconds).build();
@@ -33,7 +43,11 @@ class CameraControllerTest {
 
     /** Turns by {@code degrees} with a held key at the configured rate. */
     private void turn(Action action, double degrees) {
-        assertTrue(camera.apply(hold(action, degrees / TURN)));
+        turn(camera, action, degrees);
+    }
+
+    private static void turn(CameraController c, Action action, double degrees) {
+        assertTrue(c.apply(hold(action, degrees / TURN)));
     }
 
     @ParameterizedTest(name = "{0} moves along camera ({1}, {2}, {3})")
@@ -56,10 +70,11 @@ class CameraControllerTest {
     }
 
     @Test
-    void afterLookingUpForwardIsWorldUp() {
-        turn(Action.PITCH_UP, 90);
-        camera.apply(hold(Action.FORWARD, 1));
-        assertVector(new Vector3d(0, SPEED, 0), camera.camera().position(), 1e-12);
+    void inFreeFlightAfterLookingUpForwardIsWorldUp() {
+        CameraController c = free();
+        turn(c, Action.PITCH_UP, 90);
+        c.apply(hold(Action.FORWARD, 1));
+        assertVector(new Vector3d(0, SPEED, 0), c.camera().position(), 1e-12);
     }
 
     @Test
@@ -73,8 +88,18 @@ class CameraControllerTest {
     @ParameterizedTest(name = "{0} turns forward to ({1}, {2}, {3})")
     @CsvSource({
         "YAW_RIGHT, 1, 0, 0", "YAW_LEFT, -1, 0, 0", "PITCH_UP, 0, 1, 0", "PITCH_DOWN, 0, -1, 0"})
+    void inFreeFlightArrowsTurnByTurnSpeedTimesTime(Action key, double x, double y, double z) {
+        CameraController c = free();
+        c.apply(hold(key, 1.5)); // 60 degrees a second for 1.5 s: a right angle
+        assertVector(new Vector3d(x, y, z), c.camera().orientation().forward(), 1e-12);
+    }
+
+    @ParameterizedTest(name = "{0} turns forward to ({1}, {2}, {3})")
+    @CsvSource({
+        "YAW_RIGHT, 0.5, 0, 0.8660254037844386", "YAW_LEFT, -0.5, 0, 0.8660254037844386",
+        "PITCH_UP, 0, 0.5, 0.8660254037844386", "PITCH_DOWN, 0, -0.5, 0.8660254037844386"})
     void arrowsTurnByTurnSpeedTimesTime(Action key, double x, double y, double z) {
-        camera.apply(hold(key, 1.5)); // 60 degrees a second for 1.5 s: a right angle
+        camera.apply(hold(key, 0.5)); // 60 degrees a second for 0.5 s: 30 degrees
         assertVector(new Vector3d(x, y, z), camera.camera().orientation().forward(), 1e-12);
     }
 
@@ -123,8 +148,8 @@ class CameraControllerTest {
         camera.apply(new InputFrame.Builder().drag(pixels, 0).build()); // drag right: turn right
         assertVector(new Vector3d(1, 0, 0), camera.camera().orientation().forward(), 1e-12);
         camera.apply(new InputFrame.Builder().drag(-pixels, 0).build()); // back left
-        camera.apply(new InputFrame.Builder().drag(0, -pixels).build()); // drag up: look up
-        assertVector(new Vector3d(0, 1, 0), camera.camera().orientation().forward(), 1e-12);
+        camera.apply(new InputFrame.Builder().drag(0, -pixels / 3).build()); // drag up: look up
+        assertVector(new Vector3d(0, 0.5, Math.sqrt(0.75)), camera.camera().orientation().forward(), 1e-12);
     }
 
     @Test
@@ -168,22 +193,25 @@ class CameraControllerTest {
     }
 
     @Test
-    void noGimbalLockLookingStraightUp() {
-        turn(Action.PITCH_UP, 90);
+    void inFreeFlightNoGimbalLockLookingStraightUp() {
+        CameraController camera = free();
+        turn(camera, Action.PITCH_UP, 90);
         Quaternion up = camera.camera().orientation();
         assertVector(new Vector3d(0, 1, 0), up.forward(), 1e-12);
 
         // yaw and roll are still different motions: yaw swings the view, roll spins it in place
         CameraController yawed = new CameraController(camera.camera(), SPEED, TURN);
+        yawed.setFreeFlight(true);
         yawed.apply(hold(Action.YAW_RIGHT, 1.5));
         assertVector(new Vector3d(1, 0, 0), yawed.camera().orientation().forward(), 1e-12);
         CameraController rolled = new CameraController(camera.camera(), SPEED, TURN);
+        rolled.setFreeFlight(true);
         rolled.apply(hold(Action.ROLL_RIGHT, 1.5));
         assertVector(new Vector3d(0, 1, 0), rolled.camera().orientation().forward(), 1e-12);
         assertVector(new Vector3d(1, 0, 0), rolled.camera().orientation().up(), 1e-12);
 
         // pitching on goes over the top: no clamp, no flip
-        turn(Action.PITCH_UP, 90);
+        turn(camera, Action.PITCH_UP, 90);
         assertVector(new Vector3d(0, 0, -1), camera.camera().orientation().forward(), 1e-12);
         assertVector(new Vector3d(0, -1, 0), camera.camera().orientation().up(), 1e-12);
     }
@@ -195,5 +223,115 @@ class CameraControllerTest {
         assertEquals(pose.position(), camera.camera().position());
         assertEquals(45, camera.camera().fovDegrees());
         assertVector(new Vector3d(0, 0, 1), camera.camera().orientation().forward(), 1e-15);
+    }
+
+    // ---- the level camera ----
+
+    /** The default scene's camera: it looks slightly down. */
+    private static Camera lookingDown() {
+        return Camera.lookAt(new Vector3d(0, 1.6, -6), new Vector3d(0, 0.9, 0), Vector3d.UNIT_Y, 60);
+    }
+
+    private static double elevationDegrees(CameraController c) {
+        return Math.toDegrees(Math.asin(c.camera().orientation().forward().y()));
+    }
+
+    @Test
+    void rightDownLeftUpComesBackLevelToTheStart() {
+        CameraController c = new CameraController(lookingDown(), SPEED, TURN);
+        Quaternion start = c.camera().orientation();
+        for (Action a : new Action[] {Action.YAW_RIGHT, Action.PITCH_DOWN, Action.YAW_LEFT, Action.PITCH_UP}) {
+            turn(c, a, 40);
+            assertEquals(0, c.roll(), 1e-15, "roll after " + a);
+        }
+        assertVector(start.forward(), c.camera().orientation().forward(), 1e-14);
+        assertVector(start.up(), c.camera().orientation().up(), 1e-14);
+    }
+
+    @Test
+    void anySequenceOfYawAndPitchKeepsRollBelowANanoradian() {
+        java.util.Random random = new java.util.Random(25);
+        Action[] turns = {Action.YAW_LEFT, Action.YAW_RIGHT, Action.PITCH_UP, Action.PITCH_DOWN};
+        CameraController c = new CameraController(lookingDown(), SPEED, TURN);
+        double worstRoll = 0;
+        double highest = 0;
+        for (int i = 0; i < 200_000; i++) {
+            InputFrame.Builder in = new InputFrame.Builder()
+                    .hold(turns[random.nextInt(4)], random.nextDouble() * 2) // up to 120 degrees
+                    .hold(turns[random.nextInt(4)], random.nextDouble() * 0.05);
+            if (random.nextInt(3) == 0) {
+                in.drag(random.nextGaussian() * 200, random.nextGaussian() * 200);
+            }
+            c.apply(in.build());
+            worstRoll = Math.max(worstRoll, Math.abs(c.roll()));
+            highest = Math.max(highest, Math.abs(elevationDegrees(c)));
+        }
+        assertTrue(worstRoll < 1e-9, "largest roll " + worstRoll + " rad");
+        assertTrue(highest <= 90 - CameraController.PITCH_LIMIT_DEGREES + 1e-9, "steepest view " + highest);
+        assertEquals(1, c.camera().orientation().norm(), 1e-12);
+    }
+
+    @ParameterizedTest(name = "{0} stops short of straight up or down")
+    @CsvSource({"PITCH_UP, 1", "PITCH_DOWN, -1"})
+    void pitchIsBounded(Action key, double sign) {
+        CameraController c = new CameraController(lookingDown(), SPEED, TURN);
+        c.apply(hold(key, 10)); // 600 degrees: it would go over the top three times
+        assertEquals(sign * (90 - CameraController.PITCH_LIMIT_DEGREES), elevationDegrees(c), 1e-9);
+        assertFalse(c.apply(hold(key, 1)), "at the bound, turning on does nothing");
+        assertTrue(c.camera().orientation().up().y() > 0, "the camera is not upside down");
+        c.apply(hold(key == Action.PITCH_UP ? Action.PITCH_DOWN : Action.PITCH_UP, 89.0 / TURN)); // back 89
+        assertEquals(0, elevationDegrees(c), 1e-9);
+    }
+
+    @Test
+    void rolledThePitchStopsWhereTheViewIsHighest() {
+        CameraController c = new CameraController(lookingDown(), SPEED, TURN);
+        turn(c, Action.ROLL_LEFT, 30);
+        Quaternion q = c.camera().orientation();
+        // pitching about the tilted right axis, forward's height is at most |(f.y, u.y)|
+        double highest = Math.hypot(q.forward().y(), q.up().y());
+        c.apply(hold(Action.PITCH_UP, 10));
+        assertEquals(highest, c.camera().orientation().forward().y(), 1e-12);
+        assertFalse(c.apply(hold(Action.PITCH_UP, 1)), "it does not turn over");
+        c.apply(hold(Action.PITCH_DOWN, 10));
+        assertEquals(-highest, c.camera().orientation().forward().y(), 1e-12);
+    }
+
+    @Test
+    void yawLooksAroundTheWorldsUpAxisWhateverThePitch() {
+        CameraController c = new CameraController(lookingDown(), SPEED, TURN);
+        turn(c, Action.PITCH_UP, 60);
+        double elevation = elevationDegrees(c);
+        turn(c, Action.YAW_RIGHT, 90);
+        assertEquals(elevation, elevationDegrees(c), 1e-12); // about the world's up: the height stays
+        assertEquals(0, c.roll(), 1e-15);
+    }
+
+    @Test
+    void onlyRollTiltsTheHorizonAndLevelTakesItOut() {
+        CameraController c = new CameraController(lookingDown(), SPEED, TURN);
+        turn(c, Action.ROLL_LEFT, 20);
+        assertEquals(Math.toRadians(20), c.roll(), 1e-12);
+        turn(c, Action.YAW_RIGHT, 50);
+        turn(c, Action.PITCH_UP, 30);
+        Vector3d forward = c.camera().orientation().forward();
+        Vector3d position = c.camera().position();
+        assertTrue(c.level());
+        assertEquals(0, c.roll(), 1e-12);
+        assertTrue(c.camera().orientation().up().y() > 0);
+        assertVector(forward, c.camera().orientation().forward(), 1e-12); // it looks where it looked
+        assertEquals(position, c.camera().position());
+        assertFalse(c.level(), "a level camera stays as it is");
+    }
+
+    @Test
+    void levelFromStraightUpInFreeFlightKeepsTheHeading() {
+        CameraController c = free();
+        turn(c, Action.YAW_RIGHT, 90); // heading +x
+        turn(c, Action.PITCH_UP, 90);  // straight up, the camera's top towards -x
+        assertTrue(c.level());
+        assertEquals(0, c.roll(), 1e-12);
+        assertEquals(90 - CameraController.PITCH_LIMIT_DEGREES, elevationDegrees(c), 1e-9);
+        assertTrue(c.camera().orientation().forward().x() > 0, "still heading +x");
     }
 }

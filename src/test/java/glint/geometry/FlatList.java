@@ -1,6 +1,6 @@
 package glint.geometry;
 
-/** Every ray tests every primitive: the aggregate of small scenes, and the brute force the others are checked against. */
+/** Every ray tests every primitive: the brute force the renderer's aggregates are checked against. */
 public final class FlatList implements Aggregate {
 
     private final Primitives primitives;

@@ -1,0 +1,42 @@
+package glint.app;
+
+import glint.ui.KeyBindings;
+import java.util.ArrayList;
+import java.util.List;
+
+/** The end of {@code --help}: a few example commands and the window's keys (from {@link KeyBindings}). */
+final class HelpFooter {
+
+    private static final String JAR = "java -jar target/glint.jar";
+
+    private HelpFooter() {
+    }
+
+    /** The footer's lines. */
+    static List<String> lines() {
+        List<String> lines = new ArrayList<>();
+        lines.add("");
+        lines.add("Examples:");
+        lines.add("  Open the window on the config's scene, or on another one:");
+        lines.add("    " + JAR);
+        lines.add("    " + JAR + " --scene scenes/glass.yaml");
+        lines.add("  Render a still to a file; time 10 frames:");
+        lines.add("    " + JAR + " --scene scenes/metals.yaml --output metals.png --spp 16");
+        lines.add("    " + JAR + " --scene scenes/field.yaml --bench 10");
+        lines.add("");
+        lines.add("Window keys:");
+        for (String help : KeyBindings.helpLines()) {
+            lines.add("  " + help);
+        }
+        return lines;
+    }
+
+    /** The footer as picocli takes it: every line ends in %n, and a '%' of the text is doubled. */
+    static String text() {
+        StringBuilder sb = new StringBuilder();
+        for (String line : lines()) {
+            sb.append(line.replace("%", "%%")).append("%n");
+        }
+        return sb.toString();
+    }
+}

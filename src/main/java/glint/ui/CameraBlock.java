@@ -1,0 +1,38 @@
+package glint.ui;
+
+import glint.math.Vector3d;
+import glint.scene.Camera;
+import java.math.BigDecimal;
+import java.math.RoundingMode;
+
+/**
+ * A camera written as the {@code camera:} block of a scene file (key C): position, a look_at one unit
+ * ahead, the camera's up and its field of view. Pasted into a scene, or under {@code views:}, it gives the
+ * same picture: the numbers keep six decimals, a hundred-thousandth of a degree of the view.
+ */
+final class CameraBlock {
+
+    private CameraBlock() {
+    }
+
+    /** The block, four lines under {@code camera:}, each ending in a newline. */
+    static String yaml(Camera camera) {
+        Vector3d p = camera.position();
+        Vector3d forward = camera.orientation().forward();
+        return "camera:\n"
+                + "  position: " + vector(p) + "\n"
+                + "  look_at: " + vector(p.add(forward)) + "\n"
+                + "  up: " + vector(camera.orientation().up()) + "\n"
+                + "  fov: " + number(camera.fovDegrees()) + "\n";
+    }
+
+    private static String vector(Vector3d v) {
+        return "[" + number(v.x()) + ", " + number(v.y()) + ", " + number(v.z()) + "]";
+    }
+
+    /** Six decimals at most, no trailing zeros, no minus zero. */
+    static String number(double x) {
+        String s = BigDecimal.valueOf(x).setScale(6, RoundingMode.HALF_EVEN).stripTrailingZeros().toPlainString();
+        return s.equals("-0") ? "0" : s;
+    }
+}

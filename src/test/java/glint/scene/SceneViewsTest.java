@@ -1,0 +1,92 @@
+package glint.scene;
+
+import static org.junit.jupiter.api.Assertions.assertEquals;
+import static org.junit.jupiter.api.Assertions.assertThrows;
+import static org.junit.jupiter.api.Assertions.assertTrue;
+
+import glint.input.InputException;
+import glint.math.Vector3d;
+import org.junit.jupiter.api.Test;
+
+/** The scene key {@code views:}: cameras the window's keys 1 to 9 go to, and what is wrong with bad ones. */
+class SceneViewsTest {
+
+    private static final String FILE = "scenes/v.yaml";
+
+    private static String error(String text) {
+        return assertThrows(InputException.class, () -> SceneLoader.parse(FILE, text)).getMessage();
+    }
+
+    @Test
+    void viewsAreCamerasWithNames() throws InputException {
+        Scene s = SceneLoader.parse(FILE, """
+                views:
+                  - {name: overhead, position: [0, 10, 0], look_at: [0, 0, 0], up: [0, 0, 1], fov: 30}
+                  - position: [1, 2, 3]
+                    look_at: [1, 2, 4]
+                """);
+        assertEquals(2, s.views().size());
+        assertEquals(new View("overhead", Camera.lookAt(new Vector3d(0, 10, 0), Vector3d.ZERO, Vector3d.UNIT_Z, 30)),
+                s.views().get(0));
+        assertEquals(new View("view 2", Camera.lookAt(new Vector3d(1, 2, 3), new Vector3d(1, 2, 4), Vector3d.UNIT_Y,
+                Camera.DEFAULT_FOV)), s.views().get(1));
+        assertEquals(Camera.defaults(), s.camera()); // views leave the scene's camera alone
+    }
+
+    @Test
+    void noViewsOrAnEmptyKeyIsNoViews() throws InputException {
+        assertTrue(SceneLoader.parse(FILE, "ambient: [0, 0, 0]\n").views().isEmpty());
+        assertTrue(SceneLoader.parse(FILE, "views:\n").views().isEmpty());
+        assertTrue(SceneLoader.parse(FILE, "views: []\n").views().isEmpty());
+    }
+
+    @Test
+    void nineViewsAtMost() throws InputException {
+        String nine = "views:\n" + "  - {position: [0, 1, -5]}\n".repeat(9);
+        assertEquals(9, SceneLoader.parse(FILE, nine).views().size());
+        assertEquals("scenes/v.yaml:11:5: too many views: at most 9 (keys 1 to 9 go to them)",
+                error(nine + "  - {position: [0, 1, -5]}\n"));
+    }
+
+    @Test
+    void viewsMustBeAListOfMappings() {
+        assertEquals("scenes/v.yaml:1:8: expected a list of views, got a mapping",
+                error("views: {position: [0, 1, -5]}\n"));
+        assertEquals("scenes/v.yaml:2:5: expected a mapping for view 1, got 'overhead'",
+                error("views:\n  - overhead\n"));
+    }
+
+    @Test
+    void unknownKeyInAViewIsNamedWithASuggestion() {
+        assertEquals("scenes/v.yaml:3:27: unknown key 'lookat' in view 2 (did you mean 'look_at'?)", error("""
+                views:
+                  - {name: a}
+                  - {position: [0, 0, 0], lookat: [0, 0, 1]}
+                """));
+    }
+
+    @Test
+    void namesAreTextAndDifferent() {
+        assertEquals("scenes/v.yaml:3:12: duplicate view name 'a'", error("""
+                views:
+                  - {name: a}
+                  - {name: a, fov: 40}
+                """));
+        assertEquals("scenes/v.yaml:2:12: expected a name for view 1, got a list", error("""
+                views:
+                  - {name: [a]}
+                """));
+    }
+
+    @Test
+    void aViewIsCheckedLikeTheCamera() {
+        assertEquals("scenes/v.yaml:2:11: fov must lie strictly between 0 and 180 degrees, got 180", error("""
+                views:
+                  - {fov: 180}
+                """));
+        assertEquals("scenes/v.yaml:2:36: look_at must differ from the camera position", error("""
+                views:
+                  - {position: [1, 1, 1], look_at: [1, 1, 1]}
+                """));
+    }
+}

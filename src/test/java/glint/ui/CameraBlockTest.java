@@ -1,0 +1,60 @@
+package glint.ui;
+
+import static org.junit.jupiter.api.Assertions.assertEquals;
+
+import glint.input.InputException;
+import glint.math.Quaternion;
+import glint.math.Vector3d;
+import glint.scene.Camera;
+import glint.scene.SceneLoader;
+import java.util.Random;
+import org.junit.jupiter.api.Test;
+
+/** Key C's camera block, read back by the scene loader, is the camera it was written from. */
+class CameraBlockTest {
+
+    private static void assertNear(Vector3d expected, Vector3d actual, double tolerance, String what) {
+        assertEquals(0, expected.sub(actual).length(), tolerance, () -> what + ": " + expected + " vs " + actual);
+    }
+
+    @Test
+    void anyCameraRoundTripsThroughTheSceneLoader() throws InputException {
+        Random random = new Random(7);
+        for (int i = 0; i < 2000; i++) {
+            Vector3d position = new Vector3d(random.nextGaussian() * 50, random.nextGaussian() * 50,
+                    random.nextGaussian() * 50);
+            Quaternion q = new Quaternion(random.nextGaussian(), random.nextGaussian(), random.nextGaussian(),
+                    random.nextGaussian()).normalize(); // any orientation, rolled too
+            Camera camera = new Camera(position, q, 1 + random.nextDouble() * 150);
+            String block = CameraBlock.yaml(camera);
+            Camera read = SceneLoader.parse("pasted.yaml", block).camera();
+            // six decimals: the position to within 5e-7 a coordinate, the directions to within about 1e-6
+            assertNear(camera.position(), read.position(), 1e-6, "position");
+            assertNear(q.forward(), read.orientation().forward(), 2e-6, "forward");
+            assertNear(q.up(), read.orientation().up(), 2e-6, "up");
+            assertEquals(camera.fovDegrees(), read.fovDegrees(), 5e-7);
+        }
+    }
+
+    @Test
+    void theBlockIsFourKeysUnderCamera() {
+        Camera camera = Camera.lookAt(new Vector3d(0, 1.6, -6), new Vector3d(0, 1.6, 0), Vector3d.UNIT_Y, 60);
+        assertEquals("""
+                camera:
+                  position: [0, 1.6, -6]
+                  look_at: [0, 1.6, -5]
+                  up: [0, 1, 0]
+                  fov: 60
+                """, CameraBlock.yaml(camera));
+    }
+
+    @Test
+    void numbersKeepSixDecimalsWithoutTrailingZerosOrMinusZero() {
+        assertEquals("0", CameraBlock.number(-0.0));
+        assertEquals("0", CameraBlock.number(-1e-9));
+        assertEquals("2", CameraBlock.number(2.0));
+        assertEquals("0.123457", CameraBlock.number(0.1234567));
+        assertEquals("-1250.5", CameraBlock.number(-1250.5));
+        assertEquals("100000000", CameraBlock.number(1e8));
+    }
+}
