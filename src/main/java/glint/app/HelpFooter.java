@@ -21,7 +21,7 @@ final class HelpFooter {
         lines.add("    " + JAR);
         lines.add("    " + JAR + " --scene scenes/glass.yaml");
         lines.add("  Render a still to a file; time 10 frames:");
-        lines.add("    " + JAR + " --scene scenes/metals.yaml --output metals.png --spp 16");
+        lines.add("    " + JAR + " --scene scenes/metals.yaml --output metals.png");
         lines.add("    " + JAR + " --scene scenes/field.yaml --bench 10");
         lines.add("");
         lines.add("Window keys:");
