@@ -72,10 +72,6 @@ final class Integrator {
         }
     }
 
-    RenderScene scene() {
-        return scene;
-    }
-
     /**
      * Starts the path of camera ray (pixel, frame, sample): the roulette's random numbers that
      * follow are a pure function of these and of their order along the path, so the image does not

@@ -1,5 +1,8 @@
 package glint.ui;
 
+import java.awt.Point;
+import java.awt.Robot;
+import java.awt.event.InputEvent;
 import java.util.concurrent.TimeUnit;
 import java.util.function.BooleanSupplier;
 import java.util.function.Supplier;
@@ -39,5 +42,17 @@ final class Poll {
         @SuppressWarnings("unchecked")
         T t = (T) result[0];
         return t;
+    }
+
+    /** Clicks the middle of the window's display and waits until it holds the keyboard focus. */
+    static void clickToFocus(GlintWindow window, Robot robot, Supplier<String> what) throws Exception {
+        Point centre = onEventThread(() -> {
+            Point p = window.display().getLocationOnScreen();
+            return new Point(p.x + window.display().getWidth() / 2, p.y + window.display().getHeight() / 2);
+        });
+        robot.mouseMove(centre.x, centre.y);
+        robot.mousePress(InputEvent.BUTTON1_DOWN_MASK);
+        robot.mouseRelease(InputEvent.BUTTON1_DOWN_MASK);
+        until(() -> window.display().isFocusOwner(), 10_000, what);
     }
 }

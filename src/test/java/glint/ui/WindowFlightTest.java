@@ -9,9 +9,7 @@ import glint.math.Vector3d;
 import glint.scene.Camera;
 import glint.scene.SceneLoader;
 import java.awt.GraphicsEnvironment;
-import java.awt.Point;
 import java.awt.Robot;
-import java.awt.event.InputEvent;
 import java.awt.event.KeyEvent;
 import java.io.PrintWriter;
 import java.io.StringWriter;
@@ -64,14 +62,7 @@ class WindowFlightTest {
         robot = new Robot();
         Poll.until(() -> window.frame().isShowing() && window.display().shown() != null,
                 20_000, () -> "the window shows a frame; err: " + err);
-        Point centre = Poll.onEventThread(() -> {
-            Point p = window.display().getLocationOnScreen();
-            return new Point(p.x + W / 2, p.y + H / 2);
-        });
-        robot.mouseMove(centre.x, centre.y);
-        robot.mousePress(InputEvent.BUTTON1_DOWN_MASK);
-        robot.mouseRelease(InputEvent.BUTTON1_DOWN_MASK);
-        Poll.until(() -> window.display().isFocusOwner(), 10_000, () -> "the keyboard focus; err: " + err);
+        Poll.clickToFocus(window, robot, () -> "the keyboard focus; err: " + err);
     }
 
     @AfterEach

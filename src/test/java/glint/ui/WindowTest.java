@@ -62,14 +62,7 @@ class WindowTest {
         robot = new Robot();
         Poll.until(() -> window.frame().isShowing() && refined(),
                 20_000, () -> "the window shows a refined frame; err: " + err);
-        Point centre = Poll.onEventThread(() -> {
-            Point p = window.display().getLocationOnScreen();
-            return new Point(p.x + W / 2, p.y + H / 2);
-        });
-        robot.mouseMove(centre.x, centre.y);
-        robot.mousePress(InputEvent.BUTTON1_DOWN_MASK);
-        robot.mouseRelease(InputEvent.BUTTON1_DOWN_MASK);
-        Poll.until(() -> window.display().isFocusOwner(), 10_000, () -> "the keyboard focus; err: " + err);
+        Poll.clickToFocus(window, robot, () -> "the keyboard focus; err: " + err);
     }
 
     @AfterEach
