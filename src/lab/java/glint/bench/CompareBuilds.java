@@ -1,0 +1,153 @@
+package glint.bench;
+
+import java.io.PrintWriter;
+import java.io.StringWriter;
+import java.lang.reflect.InvocationTargetException;
+import java.lang.reflect.Method;
+import java.net.URL;
+import java.net.URLClassLoader;
+import java.nio.file.Files;
+import java.nio.file.Path;
+import java.util.ArrayList;
+import java.util.Arrays;
+import java.util.List;
+import java.util.Locale;
+import java.util.regex.Matcher;
+import java.util.regex.Pattern;
+
+/**
+ * Compares the render CPU a frame of two builds of Glint in one JVM, alternating them: each build's
+ * jar gets a class loader of its own, and its {@code glint.app.Main.run} renders a short
+ * {@code --bench} of the scene, A then B, then B then A, and so on. Each run counts its least render
+ * CPU over the frames after the first; each pair of runs gives a ratio B / A, and the median ratio
+ * with its quartiles is the result. A machine whose speed drifts from minute to minute drifts under
+ * both builds alike, since they take turns every second or so.
+ *
+ * <p>Usage, from the repository root: {@code java -cp target/benchmarks.jar glint.bench.CompareBuilds
+ * A.jar B.jar [--pairs N] [--threads T] [--depth D] [--size WxH] SCENE...} (default 12 pairs after 3
+ * for warming up, 2 threads, depth 5, 800x600, 1 sample a pixel). Both builds must read the scene:
+ * older builds do not know every key of newer ones.
+ */
+public final class CompareBuilds {
+
+    private static final Pattern FRAME_CPU = Pattern.compile("^frame \\d+: [0-9.]+ ms, render cpu ([0-9.]+) ms$",
+            Pattern.MULTILINE);
+    private static final int WARM_UP_PAIRS = 3;
+    private static final int FRAMES_A_RUN = 4;
+
+    private CompareBuilds() {
+    }
+
+    /** One scene's result: the median render CPU a frame of each build and the ratio's median and quartiles. */
+    record Result(String scene, double medianA, double medianB, double ratio, double ratioQ1, double ratioQ3) {
+
+        String line() {
+            return String.format(Locale.ROOT, "%s: A %.1f ms, B %.1f ms; B/A %.3f (quartiles %.3f-%.3f)", scene,
+                    medianA, medianB, ratio, ratioQ1, ratioQ3);
+        }
+    }
+
+    public static void main(String[] args) throws Exception {
+        List<String> rest = new ArrayList<>(Arrays.asList(args));
+        int pairs = Integer.parseInt(option(rest, "--pairs", "12"));
+        String threads = option(rest, "--threads", "2");
+        String depth = option(rest, "--depth", "5");
+        String[] size = option(rest, "--size", "800x600").split("x");
+        if (rest.size() < 3) {
+            System.err.println("usage: CompareBuilds A.jar B.jar [--pairs N] [--threads T] [--depth D] [--size WxH] SCENE...");
+            System.exit(2);
+        }
+        Method a = mainOf(Path.of(rest.get(0)));
+        Method b = mainOf(Path.of(rest.get(1)));
+        System.out.println("A = " + rest.get(0) + ", B = " + rest.get(1) + "; render CPU a frame, " + pairs
+                + " pairs, " + threads + " threads");
+        for (String scene : rest.subList(2, rest.size())) {
+            String[] bench = {"--scene", scene, "--width", size[0], "--height", size[1], "--spp", "1", "--depth", depth,
+                    "--threads", threads, "--bench", String.valueOf(FRAMES_A_RUN)};
+            System.out.println(compare(scene, a, b, bench, pairs).line());
+        }
+    }
+
+    /** Runs {@code pairs} pairs (after the warm-up ones), alternating which build goes first. */
+    static Result compare(String scene, Method a, Method b, String[] bench, int pairs) throws Exception {
+        double[] cpuA = new double[pairs], cpuB = new double[pairs], ratios = new double[pairs];
+        for (int i = -WARM_UP_PAIRS; i < pairs; i++) {
+            boolean aFirst = (i & 1) == 0;
+            double first = leastCpu(aFirst ? a : b, bench);
+            double second = leastCpu(aFirst ? b : a, bench);
+            if (i >= 0) {
+                cpuA[i] = aFirst ? first : second;
+                cpuB[i] = aFirst ? second : first;
+                ratios[i] = cpuB[i] / cpuA[i];
+            }
+        }
+        return new Result(scene, quantile(cpuA, 0.5), quantile(cpuB, 0.5), quantile(ratios, 0.5),
+                quantile(ratios, 0.25), quantile(ratios, 0.75));
+    }
+
+    /** The least render CPU of a {@code --bench} run's frames after the first. */
+    static double leastCpu(Method main, String[] bench) throws Exception {
+        StringWriter out = new StringWriter(), err = new StringWriter();
+        int status;
+        try {
+            status = (Integer) main.invoke(null, bench, new PrintWriter(out, true), new PrintWriter(err, true));
+        } catch (InvocationTargetException e) {
+            throw new IllegalStateException("the build failed: " + e.getCause(), e.getCause());
+        }
+        if (status != 0) {
+            throw new IllegalStateException("the build exited with " + status + ": " + err.toString().strip());
+        }
+        return leastAfterFirst(out.toString());
+    }
+
+    /** The least render CPU of the frame lines of {@code --bench} output, the first frame left out. */
+    static double leastAfterFirst(String benchOutput) {
+        Matcher m = FRAME_CPU.matcher(benchOutput);
+        double least = Double.POSITIVE_INFINITY;
+        for (int frame = 0; m.find(); frame++) {
+            if (frame > 0) {
+                least = Math.min(least, Double.parseDouble(m.group(1)));
+            }
+        }
+        if (least == Double.POSITIVE_INFINITY) {
+            throw new IllegalStateException("no render cpu after the first frame in: " + benchOutput.strip());
+        }
+        return least;
+    }
+
+    /** The q-quantile of the values, interpolated between neighbours of the sorted copy. */
+    static double quantile(double[] values, double q) {
+        double[] sorted = values.clone();
+        Arrays.sort(sorted);
+        double at = q * (sorted.length - 1);
+        int below = (int) Math.floor(at);
+        int above = Math.min(below + 1, sorted.length - 1);
+        return sorted[below] + (at - below) * (sorted[above] - sorted[below]);
+    }
+
+    /**
+     * {@code glint.app.Main.run} of the build in a jar (or a classes folder), in a class loader of its
+     * own; {@code libraries} are what a classes folder needs beside it (a product jar holds them).
+     */
+    static Method mainOf(Path build, URL... libraries) throws Exception {
+        if (!Files.exists(build)) {
+            throw new IllegalArgumentException(build + ": no such jar");
+        }
+        URL[] path = new URL[libraries.length + 1];
+        path[0] = build.toUri().toURL();
+        System.arraycopy(libraries, 0, path, 1, libraries.length);
+        URLClassLoader loader = new URLClassLoader(path, ClassLoader.getPlatformClassLoader());
+        return loader.loadClass("glint.app.Main").getMethod("run", String[].class, PrintWriter.class,
+                PrintWriter.class);
+    }
+
+    private static String option(List<String> args, String name, String fallback) {
+        int i = args.indexOf(name);
+        if (i < 0) {
+            return fallback;
+        }
+        String value = args.get(i + 1);
+        args.subList(i, i + 2).clear();
+        return value;
+    }
+}
