@@ -90,14 +90,7 @@ final class CookTorrance implements ShadingModel {
             int material = s.material;
             double eta = Bsdf.eta(m.ior(material), s.front);
             double reflectance = Bsdf.dielectricReflectance(s.cosIncident, eta, it.exactFresnel);
-            double keepReflected = it.keep(weight * reflectance);
-            if (keepReflected > 0) {
-                Rgb reflected = it.traceReflected(s, dx, dy, dz, hitsLeft, weight * reflectance * keepReflected);
-                double k = keepReflected * reflectance;
-                sum.r += k * reflected.r;
-                sum.g += k * reflected.g;
-                sum.b += k * reflected.b;
-            }
+            it.addReflected(s, dx, dy, dz, hitsLeft, weight, reflectance, sum);
             double tR = (1 - reflectance) * m.color(material, 0);
             double tG = (1 - reflectance) * m.color(material, 1);
             double tB = (1 - reflectance) * m.color(material, 2);

@@ -121,11 +121,14 @@ final class Integrator {
     }
 
     /**
-     * {@link #trace} for a camera ray, whose nearest hit is among {@code candidates}, gathered
-     * for the frustum of camera rays it belongs to.
+     * {@link #trace} for a camera ray: its nearest hit is searched among {@code candidates},
+     * gathered for the frustum of camera rays it belongs to, or where they are null, in the aggregate.
      */
     Rgb traceCamera(Candidates candidates, double ox, double oy, double oz, double dx, double dy, double dz,
                     int hitsLeft) {
+        if (candidates == null) {
+            return trace(ox, oy, oz, dx, dy, dz, hitsLeft, 1, Hit.NONE, Hit.NONE);
+        }
         PathVertex v = vertices[hitsLeft];
         rays++;
         if (!candidates.nearest(primitives, ox, oy, oz, dx, dy, dz, Intersect.MISS, v.hit)) {
@@ -169,6 +172,22 @@ final class Integrator {
         double k = 2 * s.cosIncident;
         return trace(s.nearX(), s.nearY(), s.nearZ(), dx + k * s.nx, dy + k * s.ny, dz + k * s.nz, hitsLeft - 1,
                 weight, s.skipNear, s.insideNear);
+    }
+
+    /**
+     * Adds to {@code sum} the light mirrored at s with the grey factor {@code factor} (a Fresnel
+     * reflectance, or phong's ks): the reflected ray of path weight weight x factor is traced if
+     * {@link #keep} keeps it, and its radiance counts factor x keep.
+     */
+    void addReflected(Surface s, double dx, double dy, double dz, int hitsLeft, double weight, double factor, Rgb sum) {
+        double keep = keep(weight * factor);
+        if (keep > 0) {
+            Rgb reflected = traceReflected(s, dx, dy, dz, hitsLeft, weight * factor * keep);
+            double k = keep * factor;
+            sum.r += k * reflected.r;
+            sum.g += k * reflected.g;
+            sum.b += k * reflected.b;
+        }
     }
 
     /**

@@ -49,14 +49,7 @@ final class Phong implements ShadingModel {
         sum.set(kd * colorR * diffuseR + ks * specR, kd * colorG * diffuseG + ks * specG,
                 kd * colorB * diffuseB + ks * specB);
         if (hitsLeft > 1) {
-            double keepReflected = it.keep(weight * ks);
-            if (keepReflected > 0) {
-                Rgb reflected = it.traceReflected(s, dx, dy, dz, hitsLeft, weight * ks * keepReflected);
-                double k = keepReflected * ks;
-                sum.r += k * reflected.r;
-                sum.g += k * reflected.g;
-                sum.b += k * reflected.b;
-            }
+            it.addReflected(s, dx, dy, dz, hitsLeft, weight, ks, sum);
             double childWeight = weight * kt * Math.max(colorR, Math.max(colorG, colorB));
             double keepRefracted = childWeight > 0 ? it.keep(childWeight) : 0;
             if (keepRefracted > 0) {

@@ -3,7 +3,6 @@ package glint.render;
 import glint.geometry.AggregatePolicy;
 import glint.geometry.Candidates;
 import glint.geometry.Frustum;
-import glint.geometry.Hit;
 import glint.shading.Rgb;
 
 /**
@@ -45,11 +44,7 @@ final class TracerWorker {
             rowStart = y * frame.width();
             rows.frustum(y, rowFrustum);
             integrator.gather(rowFrustum, rowCandidates);
-            if (rowCandidates.count() <= AggregatePolicy.MOST_ROW_CANDIDATES) {
-                traceRowAmongCandidates(scene, rays);
-            } else {
-                traceRow(scene, rays);
-            }
+            traceRow(scene, rays, rowCandidates.count() <= AggregatePolicy.MOST_ROW_CANDIDATES ? rowCandidates : null);
             rows.writeRow(frame, y);
         }
     }
@@ -63,30 +58,18 @@ final class TracerWorker {
                 tileFirstSample + ray % tileSampleCount);
     }
 
-    /** Traces the row's camera rays [0, rays) from the eye, searching only the row's candidates. */
-    private void traceRowAmongCandidates(RenderScene scene, int rays) {
+    /**
+     * Traces the row's camera rays [0, rays) from the eye into the row's radiance, searching only
+     * {@code candidates} when given, else the aggregate.
+     */
+    private void traceRow(RenderScene scene, int rays, Candidates candidates) {
         CameraBasis camera = scene.camera;
         int hits = scene.settings.recursionMax();
         CameraRows r = rows;
         for (int ray = 0; ray < rays; ray++) {
             beginPath(ray);
-            Rgb radiance = integrator.traceCamera(rowCandidates, camera.eyeX, camera.eyeY, camera.eyeZ, r.dirX[ray],
+            Rgb radiance = integrator.traceCamera(candidates, camera.eyeX, camera.eyeY, camera.eyeZ, r.dirX[ray],
                     r.dirY[ray], r.dirZ[ray], hits);
-            r.radianceR[ray] = radiance.r;
-            r.radianceG[ray] = radiance.g;
-            r.radianceB[ray] = radiance.b;
-        }
-    }
-
-    /** Traces the row's camera rays [0, rays) from the eye, into the row's radiance. */
-    private void traceRow(RenderScene scene, int rays) {
-        CameraBasis camera = scene.camera;
-        int hits = scene.settings.recursionMax();
-        CameraRows r = rows;
-        for (int ray = 0; ray < rays; ray++) {
-            beginPath(ray);
-            Rgb radiance = integrator.trace(camera.eyeX, camera.eyeY, camera.eyeZ, r.dirX[ray], r.dirY[ray],
-                    r.dirZ[ray], hits, 1, Hit.NONE, Hit.NONE);
             r.radianceR[ray] = radiance.r;
             r.radianceG[ray] = radiance.g;
             r.radianceB[ray] = radiance.b;
