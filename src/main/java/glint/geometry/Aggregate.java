@@ -6,8 +6,10 @@ package glint.geometry;
  * number of a primitive the ray leaves on its outer side (it cannot meet it there again), or
  * {@link Hit#NONE}; {@code inside} the closed primitive the ray has just entered or goes on
  * inside of (refracted into it, reflected inside it), or {@link Hit#NONE}: a hint an aggregate may
- * use ({@link EmptyInteriors}). Implementations ({@link Bvh}, the filter {@link EmptyInteriors}, and in the tests a flat list) are immutable and shared by
- * the render threads; each thread passes its own traversal {@code stack}, made by
+ * use ({@link EmptyInteriors}). The ray starts inside that primitive, or, where its origin's offset
+ * off the surface is larger than the primitive, past it, moving away, so that it misses it.
+ * Implementations ({@link Bvh}, the filter {@link EmptyInteriors}, and in the tests a flat list)
+ * are immutable and shared by the render threads; each thread passes its own traversal {@code stack}, made by
  * {@link #newStack}. {@link AggregatePolicy} picks one for a scene.
  */
 public interface Aggregate {

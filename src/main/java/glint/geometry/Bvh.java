@@ -3,8 +3,8 @@ package glint.geometry;
 /**
  * A bounding volume hierarchy over the bounded primitives, in flat arrays; the unbounded ones
  * (planes) are tested by every ray before it. Nodes split at the best of a few binned
- * surface-area-heuristic candidates along the widest centroid axis. Traversal visits the nearer
- * child first; its stack holds at most one node a level, so {@link #newStack} sizes it from the
+ * surface-area-heuristic candidates along the widest centroid axis. The nearest-hit traversal
+ * visits the nearer child first; its stack holds at most one node a level, so {@link #newStack} sizes it from the
  * tree's depth.
  */
 public final class Bvh implements Aggregate {

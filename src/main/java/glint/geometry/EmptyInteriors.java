@@ -5,8 +5,10 @@ import java.util.Arrays;
 /**
  * A filter in front of another aggregate: a ray inside a closed primitive that nothing else
  * reaches into (a glass sphere resting on a floor, say) can only leave it, so its nearest hit is
- * that primitive's, found without a search. Which interiors are empty is worked out once, when
- * the scene is compiled: every closed primitive's bounding ball against the other primitives.
+ * that primitive's, found without a search. A ray that misses it (its origin pushed past the
+ * primitive by an offset larger than the primitive) is searched like any other. Which interiors
+ * are empty is worked out once, when the scene is compiled: every closed primitive's bounding ball
+ * against the other primitives.
  */
 public final class EmptyInteriors implements Aggregate {
 
@@ -46,7 +48,7 @@ public final class EmptyInteriors implements Aggregate {
                 primitives.record(hit, inside, t);
                 return true;
             }
-            return false;
+            // the origin was pushed past the primitive (an offset larger than it): search as usual
         }
         return searched.nearest(ox, oy, oz, dx, dy, dz, tMax, skip, inside, hit, stack);
     }

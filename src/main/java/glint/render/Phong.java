@@ -27,7 +27,7 @@ final class Phong implements ShadingModel {
         Lights lights = it.lights;
         for (int i = 0; i < lights.count(); i++) {
             double cosLight = lights.sample(i, s.px, s.py, s.pz, s.nx, s.ny, s.nz, light);
-            if (cosLight <= 0) {
+            if (!(cosLight > 0)) { // NaN too: no light from an undefined direction
                 continue;
             }
             double pass = it.transmittance(s, light);

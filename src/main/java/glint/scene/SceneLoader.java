@@ -34,6 +34,12 @@ public final class SceneLoader {
     private static final Set<String> VIEW_KEYS = ordered("name", "position", "look_at", "up", "fov");
     /** Keys 1 to 9 of the window go to the views. */
     public static final int MAX_VIEWS = 9;
+
+    /**
+     * The shortest and longest lengths a scene may give a radius or the camera's view: their squares
+     * stay normal doubles, so intersections and normals neither underflow to 0 nor overflow.
+     */
+    static final double SHORTEST = 1e-150, LONGEST = 1e150;
     private static final Set<String> MATERIAL_KEYS =
             ordered("type", "color", "kd", "ks", "kt", "shininess", "ior", "roughness");
     private static final Set<String> SPHERE_KEYS = ordered("type", "center", "radius", "material");
@@ -217,7 +223,7 @@ public final class SceneLoader {
             throw yaml.error(m.getOrDefault("look_at", node), "look_at must differ from the camera position");
         }
         double distance = view.isFinite() ? view.length() : Double.POSITIVE_INFINITY;
-        if (!(distance <= 1e150 && distance >= 1e-150)) {
+        if (!(distance <= LONGEST && distance >= SHORTEST)) {
             throw yaml.error(m.getOrDefault("look_at", node), String.format(Locale.ROOT,
                     "look_at is %s from the camera position; it must be between 1e-150 and 1e150 away",
                     distance(position, lookAt)));
@@ -321,6 +327,10 @@ public final class SceneLoader {
             if (!(radius > 0)) {
                 throw yaml.error(radiusNode, "radius must be > 0, got " + YamlTree.source(radiusNode, radius));
             }
+            if (!(radius >= SHORTEST && radius <= LONGEST)) {
+                throw yaml.error(radiusNode, "radius must lie between 1e-150 and 1e150 (its square must be a"
+                        + " normal double), got " + YamlTree.source(radiusNode, radius));
+            }
             return new SceneObject(new Sphere(center, radius), materialOf(m));
         }
         Map<String, Node> m = yaml.mapping(node, "plane", PLANE_KEYS);
@@ -407,7 +417,7 @@ public final class SceneLoader {
      */
     static Vector3d lengthSafe(Vector3d v) {
         double length = v.length();
-        if (Double.isFinite(length) && length > 1e-150) {
+        if (Double.isFinite(length) && length > SHORTEST) {
             return v;
         }
         double largest = Math.max(Math.abs(v.x()), Math.max(Math.abs(v.y()), Math.abs(v.z())));

@@ -116,11 +116,16 @@ class AggregateTest {
         }
     }
 
+    /**
+     * Rays sent into an empty sphere as a surface sends them: from the point on the line through
+     * the centre at offset {@code offset} inside the surface point, towards the inside. An offset
+     * above the diameter puts the origin past the sphere, where the filter must search as usual.
+     */
     @Test
-    void aRayInsideAnEmptySphereMeetsWhatTheFullSearchMeets() {
+    void aRaySentIntoAnEmptySphereMeetsWhatTheFullSearchMeets() {
         SplittableRandom random = new SplittableRandom(SEED + 4);
         Hit a = new Hit(), b = new Hit();
-        int checked = 0;
+        int inside = 0, pastIt = 0;
         for (int scene = 0; scene < 30; scene++) {
             Primitives primitives = randomScene(random, 2 + random.nextInt(100), 1 + random.nextInt(2));
             Aggregate filtered = EmptyInteriors.around(new FlatList(primitives));
@@ -130,23 +135,37 @@ class AggregateTest {
             double[] ball = new double[4];
             for (int i = 0; i < 200; i++) {
                 int sphere = random.nextInt(spheres.count());
-                int inside = primitives.number(0, sphere);
-                if (!(filtered instanceof EmptyInteriors e) || !e.isEmpty(inside)) {
+                int hint = primitives.number(0, sphere);
+                if (!(filtered instanceof EmptyInteriors e) || !e.isEmpty(hint)) {
                     continue;
                 }
                 spheres.boundingBall(sphere, ball);
-                double[] from = unit(random.nextDouble(-1, 1), random.nextDouble(-1, 1), random.nextDouble(-1, 1));
-                double depth = ball[3] * random.nextDouble(0, 0.999);
-                double ox = ball[0] + depth * from[0], oy = ball[1] + depth * from[1], oz = ball[2] + depth * from[2];
+                double[] n = unit(random.nextDouble(-1, 1), random.nextDouble(-1, 1), random.nextDouble(-1, 1));
+                double offset = ball[3] * random.nextDouble(0, 3);
+                double fromCentre = ball[3] - offset;
+                double ox = ball[0] + fromCentre * n[0], oy = ball[1] + fromCentre * n[1], oz = ball[2] + fromCentre * n[2];
                 double[] d = unit(random.nextDouble(-1, 1), random.nextDouble(-1, 1), random.nextDouble(-1, 1));
-                assertTrue(filtered.nearest(ox, oy, oz, d[0], d[1], d[2], Intersect.MISS, Hit.NONE, inside, a, stack));
-                assertTrue(truth.nearest(ox, oy, oz, d[0], d[1], d[2], Intersect.MISS, Hit.NONE, Hit.NONE, b, stack));
-                assertEquals(b.primitive, a.primitive);
-                assertEquals(b.t, a.t, 0);
-                checked++;
+                double along = d[0] * n[0] + d[1] * n[1] + d[2] * n[2];
+                if (along > 0) { // towards the inside of the surface point, as refracted and reflected rays go
+                    d[0] = -d[0];
+                    d[1] = -d[1];
+                    d[2] = -d[2];
+                }
+                boolean found = truth.nearest(ox, oy, oz, d[0], d[1], d[2], Intersect.MISS, Hit.NONE, Hit.NONE, b, stack);
+                assertEquals(found, filtered.nearest(ox, oy, oz, d[0], d[1], d[2], Intersect.MISS, Hit.NONE, hint, a,
+                        stack));
+                if (found) {
+                    assertEquals(b.primitive, a.primitive);
+                    assertEquals(b.t, a.t, 0);
+                }
+                if (offset < 1.999 * ball[3]) {
+                    inside++;
+                } else if (offset > 2.001 * ball[3]) {
+                    pastIt++;
+                }
             }
         }
-        assertTrue(checked > 1_000, "rays inside empty spheres: " + checked);
+        assertTrue(inside > 500 && pastIt > 200, "rays from inside: " + inside + ", from past the sphere: " + pastIt);
     }
 
     @Test

@@ -37,6 +37,28 @@ class AggregateRenderTest {
     }
 
     /**
+     * A glass sphere smaller than the offset rays leaving a surface start at: a ray refracted into
+     * it starts past it, so the search inside it alone would lose what lies beyond.
+     */
+    @Test
+    void aSphereSmallerThanTheOffsetRendersAsBruteForceDoes() {
+        Scene scene = Renders.scene("""
+                camera: {position: [0, 0.6, -0.3], look_at: [0, 0.3, 0], fov: 12}
+                background: [0.2, 0.3, 0.9]
+                lights: [{type: point, position: [-5, 8, -6], intensity: 100}]
+                materials: {clear: {type: glass, ior: 1.5}}
+                objects:
+                  - {type: plane, point: [0, 0, 0], normal: [0, 1, 0]}
+                  - {type: sphere, center: [0, 0.3, 0], radius: 0.02, material: clear}
+                """);
+        for (Shading shading : Shading.values()) {
+            float[] brute = render(scene, shading, FlatList::new, 0.05);
+            float[] chosen = render(scene, shading, AggregatePolicy::choose, 0.05);
+            assertSame(shading, brute, chosen, shading + ", offset 0.05 against a sphere 0.04 across");
+        }
+    }
+
+    /**
      * Bit for bit under cook-torrance; under phong to float rounding, as a shadow ray multiplies the
      * glass it passes in the order it meets them.
      */
@@ -49,7 +71,12 @@ class AggregateRenderTest {
     }
 
     private static float[] render(Scene scene, Shading shading, Function<Primitives, glint.geometry.Aggregate> of) {
-        RenderScene compiled = RenderScene.compile(scene, new RenderSettings(shading, 6, 0, Renders.EPSILON), of);
+        return render(scene, shading, of, Renders.EPSILON);
+    }
+
+    private static float[] render(Scene scene, Shading shading, Function<Primitives, glint.geometry.Aggregate> of,
+                                  double epsilon) {
+        RenderScene compiled = RenderScene.compile(scene, new RenderSettings(shading, 6, 0, epsilon), of);
         FrameBuffer frame = new FrameBuffer(48, 36);
         try (Tracer tracer = new Tracer(2)) {
             tracer.render(compiled, frame, 4, 0, 3);

@@ -335,6 +335,24 @@ class SceneLoaderErrorTest {
     }
 
     @Test
+    void radiusWhoseSquareUnderflows() {
+        assertError("scenes/x.yaml:2:47: radius must lie between 1e-150 and 1e150 (its square must be a normal"
+                + " double), got 1e-200", """
+                objects:
+                  - {type: sphere, center: [0, 0, 0], radius: 1e-200}
+                """);
+    }
+
+    @Test
+    void radiusWhoseSquareOverflows() {
+        assertError("scenes/x.yaml:2:47: radius must lie between 1e-150 and 1e150 (its square must be a normal"
+                + " double), got 3e200", """
+                objects:
+                  - {type: sphere, center: [0, 0, 0], radius: 3e200}
+                """);
+    }
+
+    @Test
     void radiusNegative() {
         // "  - {type: sphere, center: [0, 0, 0], radius: " is 46 characters
         assertError("scenes/x.yaml:2:47: radius must be > 0, got -1.5", """
