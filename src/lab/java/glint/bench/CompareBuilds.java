@@ -48,6 +48,15 @@ public final class CompareBuilds {
     }
 
     public static void main(String[] args) throws Exception {
+        try {
+            run(args);
+        } catch (IllegalArgumentException | IllegalStateException | IndexOutOfBoundsException e) {
+            System.err.println("CompareBuilds: " + e.getMessage());
+            System.exit(2);
+        }
+    }
+
+    private static void run(String[] args) throws Exception {
         List<String> rest = new ArrayList<>(Arrays.asList(args));
         int pairs = Integer.parseInt(option(rest, "--pairs", "12"));
         String threads = option(rest, "--threads", "2");
