@@ -1,0 +1,141 @@
+package glint.geometry;
+
+/**
+ * The geometry behind {@link LeavingCells}: each direction cell of the cube map (and each cube
+ * face) as a cone, its axis and the cosine and sine of its half-angle, and which primitives a ray
+ * from a ball may reach in a cell.
+ *
+ * <p>A ray from o, |o - c| <= r, along d meets the ball (c', R) only if the ray from c along d
+ * passes within r + R of c' (the two rays stay r apart at most), so only if the angle between d
+ * and c' - c is at most asin((r + R) / |c' - c|), or always where r + R >= |c' - c|. A cell lists
+ * the primitive when that cone meets the cell's cone. Each cone's half-angle is the largest angle
+ * from its axis to points sampled along the cell's edges (it is reached at a corner; the samples
+ * make sure), widened by a slack angle that also covers the rounding of the lookup and the tests.
+ */
+final class CellCones {
+
+    static final CellCones INSTANCE = new CellCones();
+
+    private static final int K = LeavingCells.K;
+    /** Angle (radians) every cone is widened by. */
+    static final double SLACK = 1e-3;
+    private static final int SAMPLES = 16;
+
+    /** Per cell: axis x, y, z, cos and sin of the half-angle. */
+    private final double[] cell = new double[5 * LeavingCells.CELLS];
+    /** Per face: the same for the whole face. */
+    private final double[] face = new double[5 * 6];
+
+    private CellCones() {
+        for (int f = 0; f < 6; f++) {
+            cone(f, -1, 1, -1, 1, face, 5 * f);
+            for (int i = 0; i < K; i++) {
+                for (int j = 0; j < K; j++) {
+                    double u0 = -1 + 2.0 * i / K, u1 = -1 + 2.0 * (i + 1) / K;
+                    double v0 = -1 + 2.0 * j / K, v1 = -1 + 2.0 * (j + 1) / K;
+                    cone(f, u0, u1, v0, v1, cell, 5 * ((f * K + i) * K + j));
+                }
+            }
+        }
+    }
+
+    /** The cone around the directions of face f with coordinates in [u0, u1] x [v0, v1]. */
+    private static void cone(int f, double u0, double u1, double v0, double v1, double[] out, int at) {
+        double[] axis = direction(f, 0.5 * (u0 + u1), 0.5 * (v0 + v1));
+        double largest = 0;
+        for (int s = 0; s <= SAMPLES; s++) {
+            double a = (double) s / SAMPLES;
+            double u = u0 + a * (u1 - u0), v = v0 + a * (v1 - v0);
+            largest = Math.max(largest, angle(axis, direction(f, u, v0)));
+            largest = Math.max(largest, angle(axis, direction(f, u, v1)));
+            largest = Math.max(largest, angle(axis, direction(f, u0, v)));
+            largest = Math.max(largest, angle(axis, direction(f, u1, v)));
+        }
+        double half = largest + SLACK;
+        System.arraycopy(axis, 0, out, at, 3);
+        out[at + 3] = Math.cos(half);
+        out[at + 4] = Math.sin(half);
+    }
+
+    /** The unit direction of face f at (u, v), as {@link LeavingCells#cellOf} reads it. */
+    private static double[] direction(int f, double u, double v) {
+        double sign = f % 2 == 0 ? 1 : -1;
+        double[] d = switch (f / 2) {
+            case 0 -> new double[] {sign, u, v};
+            case 1 -> new double[] {u, sign, v};
+            default -> new double[] {u, v, sign};
+        };
+        double length = Math.sqrt(d[0] * d[0] + d[1] * d[1] + d[2] * d[2]);
+        return new double[] {d[0] / length, d[1] / length, d[2] / length};
+    }
+
+    private static double angle(double[] a, double[] b) {
+        return Math.acos(Math.min(1, Math.max(-1, a[0] * b[0] + a[1] * b[1] + a[2] * b[2])));
+    }
+
+    /**
+     * Writes primitive q's ball to {@code balls} from 4q: the kind's bounding ball for a closed
+     * kind, the ball around its box otherwise.
+     */
+    static void ballOf(Primitives p, int q, double[] scratch, double[] balls) {
+        if (p.closed(q)) {
+            p.kind(p.kindOf(q)).boundingBall(p.indexOf(q), scratch);
+            System.arraycopy(scratch, 0, balls, 4 * q, 4);
+            return;
+        }
+        p.bounds(q, scratch, 0);
+        double ex = 0.5 * (scratch[3] - scratch[0]), ey = 0.5 * (scratch[4] - scratch[1]);
+        double ez = 0.5 * (scratch[5] - scratch[2]);
+        balls[4 * q] = 0.5 * (scratch[0] + scratch[3]);
+        balls[4 * q + 1] = 0.5 * (scratch[1] + scratch[4]);
+        balls[4 * q + 2] = 0.5 * (scratch[2] + scratch[5]);
+        balls[4 * q + 3] = Math.nextUp(Math.sqrt(ex * ex + ey * ey + ez * ez)) * (1 + 1e-12);
+    }
+
+    /**
+     * Adds primitive q (ball at 4q of {@code balls}) to the lists ({@code lists}, {@link LeavingCells#CAP}
+     * slots a cell) of the cells in which a ray from the ball (c, reach) may reach it; a cell's
+     * count goes one past the cap at most, meaning it falls back.
+     */
+    void mark(double cx, double cy, double cz, double reach, double[] balls, int q, int[] lists, int[] counts) {
+        double ex = balls[4 * q] - cx, ey = balls[4 * q + 1] - cy, ez = balls[4 * q + 2] - cz;
+        double distance = Math.sqrt(ex * ex + ey * ey + ez * ez);
+        double sum = reach + balls[4 * q + 3];
+        if (!(sum < distance)) {
+            for (int c = 0; c < LeavingCells.CELLS; c++) {
+                add(c, q, lists, counts);
+            }
+            return;
+        }
+        ex /= distance;
+        ey /= distance;
+        ez /= distance;
+        double sinB = sum / distance, cosB = Math.sqrt(1 - sinB * sinB);
+        for (int f = 0; f < 6; f++) {
+            if (!meets(face, 5 * f, ex, ey, ez, cosB, sinB)) {
+                continue;
+            }
+            for (int c = f * K * K, end = c + K * K; c < end; c++) {
+                if (counts[c] <= LeavingCells.CAP && meets(cell, 5 * c, ex, ey, ez, cosB, sinB)) {
+                    add(c, q, lists, counts);
+                }
+            }
+        }
+    }
+
+    /** Whether the cone at {@code at} meets the cone about e of half-angle B: angle(axis, e) <= A + B. */
+    private static boolean meets(double[] cones, int at, double ex, double ey, double ez, double cosB, double sinB) {
+        double cos = cones[at] * ex + cones[at + 1] * ey + cones[at + 2] * ez;
+        return cos >= cones[at + 3] * cosB - cones[at + 4] * sinB;
+    }
+
+    private static void add(int c, int q, int[] lists, int[] counts) {
+        int count = counts[c];
+        if (count < LeavingCells.CAP) {
+            lists[c * LeavingCells.CAP + count] = q;
+        }
+        if (count <= LeavingCells.CAP) {
+            counts[c] = count + 1;
+        }
+    }
+}

@@ -1,0 +1,265 @@
+package glint.geometry;
+
+import java.util.Arrays;
+
+/**
+ * A filter in front of another aggregate for rays that leave a closed primitive on its outer side
+ * (reflected off a metal or glass sphere, or leaving a glass one). For each closed bounded primitive
+ * S a cube map of direction cells (6 faces of {@link #K} x K) lists the bounded primitives a ray
+ * starting within S's bounding ball, travelling in a direction of the cell, could meet; such a ray
+ * tests the unbounded primitives and its cell's list instead of searching. A cell that would list
+ * more than {@link #CAP} falls back to the search, as does a ray whose origin is not within the
+ * ball the cells were worked out for. Worked out once, when the scene is compiled.
+ */
+public final class LeavingCells implements Aggregate {
+
+    /** Cells along a cube face's side. */
+    static final int K = 8;
+    static final int CELLS = 6 * K * K;
+    /** The most primitives a cell lists; a cell that would list more falls back to the search. */
+    static final int CAP = 16;
+    /**
+     * How far off S's bounding ball (relative to max(1, |centre| + radius)) an origin may be and still
+     * use the cells: a spawned ray starts epsilon x max(1, |p|) off the surface (epsilon 1e-9 by
+     * default, a million times less). An origin farther off is searched as usual (checked per ray).
+     */
+    private static final double OFFSET = 1e-6;
+
+    private final Aggregate searched;
+    private final Primitives primitives;
+    /** Per primitive: its first cell in {@link #cellFrom} / {@link #cellCount}, or -1 if it has none. */
+    private final int[] firstCell;
+    /** Per primitive with cells: the centre of the ball they cover and its radius squared, 4 doubles. */
+    private final double[] covered;
+    /** Per cell: its first slot in the lists, and how many (-1: fall back to the search). */
+    private final int[] cellFrom, cellCount;
+    /** The cells' lists: primitive numbers, their kinds and indices within the kinds. */
+    private final int[] listed, listedIndex;
+    private final Shape[] listedKind;
+    private final int[] unbounded, unboundedIndex;
+    private final Shape[] unboundedKind;
+
+    private LeavingCells(Aggregate searched, Builder b) {
+        this.searched = searched;
+        this.primitives = searched.primitives();
+        this.firstCell = b.firstCell;
+        this.covered = b.covered;
+        this.cellFrom = Arrays.copyOf(b.cellFrom, b.cells);
+        this.cellCount = Arrays.copyOf(b.cellCount, b.cells);
+        this.listed = Arrays.copyOf(b.listed, b.slots);
+        this.listedKind = new Shape[b.slots];
+        this.listedIndex = new int[b.slots];
+        for (int s = 0; s < b.slots; s++) {
+            listedKind[s] = primitives.kind(primitives.kindOf(listed[s]));
+            listedIndex[s] = primitives.indexOf(listed[s]);
+        }
+        int n = 0;
+        int[] u = new int[primitives.count()];
+        for (int q = 0; q < primitives.count(); q++) {
+            if (!primitives.bounded(q)) {
+                u[n++] = q;
+            }
+        }
+        this.unbounded = Arrays.copyOf(u, n);
+        this.unboundedKind = new Shape[n];
+        this.unboundedIndex = new int[n];
+        for (int i = 0; i < n; i++) {
+            unboundedKind[i] = primitives.kind(primitives.kindOf(unbounded[i]));
+            unboundedIndex[i] = primitives.indexOf(unbounded[i]);
+        }
+    }
+
+    /** The filter in front of {@code searched}, or {@code searched} itself when no primitive has a cell to use. */
+    public static Aggregate around(Aggregate searched) {
+        Builder b = new Builder(searched.primitives());
+        return b.cells > 0 ? new LeavingCells(searched, b) : searched;
+    }
+
+    /** Whether rays leaving primitive p use cells (some of its cells list few enough). */
+    public boolean hasCells(int p) {
+        return firstCell[p] >= 0;
+    }
+
+    @Override
+    public boolean nearest(double ox, double oy, double oz, double dx, double dy, double dz, double tMax, int skip,
+                           int inside, Hit hit, TraversalStack stack) {
+        int first = skip >= 0 ? firstCell[skip] : -1;
+        if (first >= 0) {
+            int b = 4 * skip;
+            double ex = ox - covered[b], ey = oy - covered[b + 1], ez = oz - covered[b + 2];
+            if (ex * ex + ey * ey + ez * ez <= covered[b + 3]) {
+                int cell = first + cellOf(dx, dy, dz);
+                int count = cellCount[cell];
+                if (count >= 0) {
+                    return nearestListed(ox, oy, oz, dx, dy, dz, tMax, skip, cellFrom[cell], count, hit);
+                }
+            }
+        }
+        return searched.nearest(ox, oy, oz, dx, dy, dz, tMax, skip, inside, hit, stack);
+    }
+
+    /** The unbounded primitives (but skip) and a cell's list, in that fixed order, as the hierarchy tests them. */
+    private boolean nearestListed(double ox, double oy, double oz, double dx, double dy, double dz, double tMax,
+                                  int skip, int from, int count, Hit hit) {
+        double nearest = tMax;
+        int found = Hit.NONE;
+        for (int i = 0; i < unbounded.length; i++) {
+            if (unbounded[i] != skip) {
+                double t = unboundedKind[i].intersect(unboundedIndex[i], ox, oy, oz, dx, dy, dz, nearest);
+                if (t < nearest) {
+                    nearest = t;
+                    found = unbounded[i];
+                }
+            }
+        }
+        for (int slot = from, end = from + count; slot < end; slot++) {
+            double t = listedKind[slot].intersect(listedIndex[slot], ox, oy, oz, dx, dy, dz, nearest);
+            if (t < nearest) {
+                nearest = t;
+                found = listed[slot];
+            }
+        }
+        if (found == Hit.NONE) {
+            return false;
+        }
+        primitives.record(hit, found, nearest);
+        return true;
+    }
+
+    /**
+     * The cell of a direction: the face of its largest component (+x, -x, +y, -y, +z, -z), then the
+     * other two components over the largest one's size, each in [-1, 1], cut into K steps.
+     */
+    static int cellOf(double dx, double dy, double dz) {
+        double ax = Math.abs(dx), ay = Math.abs(dy), az = Math.abs(dz);
+        int face;
+        double major, u, v;
+        if (ax >= ay && ax >= az) {
+            face = dx > 0 ? 0 : 1;
+            major = ax;
+            u = dy;
+            v = dz;
+        } else if (ay >= az) {
+            face = dy > 0 ? 2 : 3;
+            major = ay;
+            u = dx;
+            v = dz;
+        } else {
+            face = dz > 0 ? 4 : 5;
+            major = az;
+            u = dx;
+            v = dy;
+        }
+        double scale = 0.5 * K / major;
+        int i = Math.min(K - 1, Math.max(0, (int) (u * scale + 0.5 * K)));
+        int j = Math.min(K - 1, Math.max(0, (int) (v * scale + 0.5 * K)));
+        return (face * K + i) * K + j;
+    }
+
+    @Override
+    public double transmittance(double ox, double oy, double oz, double dx, double dy, double dz, double tMax,
+                                int skip, double[] pass, TraversalStack stack) {
+        return searched.transmittance(ox, oy, oz, dx, dy, dz, tMax, skip, pass, stack);
+    }
+
+    @Override
+    public void gather(Frustum frustum, Candidates out, TraversalStack stack) {
+        searched.gather(frustum, out, stack);
+    }
+
+    @Override
+    public Primitives primitives() {
+        return primitives;
+    }
+
+    @Override
+    public TraversalStack newStack() {
+        return searched.newStack();
+    }
+
+    @Override
+    public String toString() {
+        return "LeavingCells[" + cellFrom.length / CELLS + " primitives with cells, " + listed.length
+                + " listed] in front of " + searched;
+    }
+
+    /** Works out the cells of every closed bounded primitive (see {@link CellCones} for the geometry). */
+    private static final class Builder {
+
+        final int[] firstCell;
+        final double[] covered;
+        int[] cellFrom = new int[CELLS], cellCount = new int[CELLS], listed = new int[64];
+        int cells, slots;
+
+        Builder(Primitives p) {
+            int n = p.count();
+            firstCell = new int[n];
+            Arrays.fill(firstCell, -1);
+            covered = new double[4 * n];
+            double[] balls = new double[4 * n];
+            int[] bounded = new int[n];
+            int boundedCount = 0;
+            double[] box = new double[6];
+            for (int q = 0; q < n; q++) {
+                if (p.bounded(q)) {
+                    bounded[boundedCount++] = q;
+                    CellCones.ballOf(p, q, box, balls);
+                }
+            }
+            CellCones cones = CellCones.INSTANCE;
+            int[] scratch = new int[CELLS * CAP];
+            int[] counts = new int[CELLS];
+            for (int s = 0; s < n; s++) {
+                if (!p.bounded(s) || !p.closed(s)) {
+                    continue;
+                }
+                double cx = balls[4 * s], cy = balls[4 * s + 1], cz = balls[4 * s + 2];
+                double r = balls[4 * s + 3];
+                double reach = r + OFFSET * Math.max(1, Math.sqrt(cx * cx + cy * cy + cz * cz) + r);
+                Arrays.fill(counts, 0);
+                for (int k = 0; k < boundedCount; k++) {
+                    int q = bounded[k];
+                    if (q != s) {
+                        cones.mark(cx, cy, cz, reach, balls, q, scratch, counts);
+                    }
+                }
+                add(s, cx, cy, cz, reach, scratch, counts);
+            }
+        }
+
+        /** Appends S's cells, unless every one of them falls back. */
+        private void add(int s, double cx, double cy, double cz, double reach, int[] scratch, int[] counts) {
+            boolean any = false;
+            for (int c = 0; c < CELLS && !any; c++) {
+                any = counts[c] <= CAP;
+            }
+            if (!any) {
+                return;
+            }
+            if (cells + CELLS > cellFrom.length) {
+                cellFrom = Arrays.copyOf(cellFrom, 2 * (cells + CELLS));
+                cellCount = Arrays.copyOf(cellCount, cellFrom.length);
+            }
+            firstCell[s] = cells;
+            covered[4 * s] = cx;
+            covered[4 * s + 1] = cy;
+            covered[4 * s + 2] = cz;
+            covered[4 * s + 3] = reach * reach;
+            for (int c = 0; c < CELLS; c++, cells++) {
+                int count = counts[c];
+                if (count > CAP) {
+                    cellFrom[cells] = 0;
+                    cellCount[cells] = -1;
+                    continue;
+                }
+                if (slots + count > listed.length) {
+                    listed = Arrays.copyOf(listed, 2 * (slots + count));
+                }
+                cellFrom[cells] = slots;
+                cellCount[cells] = count;
+                System.arraycopy(scratch, c * CAP, listed, slots, count);
+                slots += count;
+            }
+        }
+    }
+}
