@@ -75,9 +75,15 @@ public final class LeavingCells implements Aggregate {
         return b.cells > 0 ? new LeavingCells(searched, b) : searched;
     }
 
-    /** Whether rays leaving primitive p use cells (some of its cells list few enough). */
-    public boolean hasCells(int p) {
-        return firstCell[p] >= 0;
+    /** Whether this ray, leaving primitive {@code skip}, is answered from a cell's list (not searched). */
+    boolean usesCells(int skip, double ox, double oy, double oz, double dx, double dy, double dz) {
+        int first = skip >= 0 ? firstCell[skip] : -1;
+        if (first < 0) {
+            return false;
+        }
+        int b = 4 * skip;
+        double ex = ox - covered[b], ey = oy - covered[b + 1], ez = oz - covered[b + 2];
+        return ex * ex + ey * ey + ez * ez <= covered[b + 3] && cellCount[first + cellOf(dx, dy, dz)] >= 0;
     }
 
     @Override

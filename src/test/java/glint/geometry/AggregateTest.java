@@ -168,6 +168,59 @@ class AggregateTest {
         assertTrue(inside > 500 && pastIt > 200, "rays from inside: " + inside + ", from past the sphere: " + pastIt);
     }
 
+    /**
+     * Rays leaving a sphere on its outer side, as a surface sends them: from a point just off its
+     * surface (0 to 1e-6 of max(1, |p|) outside), outwards or inwards along a tangent (grazing
+     * the sphere's other side is left to the skip), skipping it; through the cells of
+     * {@link LeavingCells} they meet what testing every primitive meets.
+     */
+    @Test
+    void aRayLeavingASphereMeetsThroughItsCellsWhatBruteForceMeets() {
+        SplittableRandom random = new SplittableRandom(SEED + 6);
+        Hit a = new Hit(), b = new Hit();
+        int throughCells = 0;
+        for (int scene = 0; scene < 40; scene++) {
+            int count = 1 + random.nextInt(scene % 4 == 0 ? 300 : 40);
+            Primitives primitives = randomScene(random, count, random.nextInt(3));
+            FlatList truth = new FlatList(primitives);
+            Aggregate cells = LeavingCells.around(truth);
+            TraversalStack stack = truth.newStack();
+            Shape spheres = primitives.kind(0);
+            double[] ball = new double[4];
+            for (int i = 0; i < 2_000; i++) {
+                int sphere = random.nextInt(spheres.count());
+                int skip = primitives.number(0, sphere);
+                spheres.boundingBall(sphere, ball);
+                double[] n = unit(random.nextDouble(-1, 1), random.nextDouble(-1, 1), random.nextDouble(-1, 1));
+                double[] p = {ball[0] + ball[3] * n[0], ball[1] + ball[3] * n[1], ball[2] + ball[3] * n[2]};
+                double off = random.nextDouble(0, 1e-6) * Math.max(1, Math.sqrt(p[0] * p[0] + p[1] * p[1] + p[2] * p[2]));
+                double ox = p[0] + off * n[0], oy = p[1] + off * n[1], oz = p[2] + off * n[2];
+                double[] d = unit(random.nextDouble(-1, 1), random.nextDouble(-1, 1), random.nextDouble(-1, 1));
+                double along = d[0] * n[0] + d[1] * n[1] + d[2] * n[2];
+                if (i % 4 == 0) { // along the tangent plane, tilted a little inwards
+                    double tilt = random.nextDouble(0, 1e-3);
+                    d = unit(d[0] - (along + tilt) * n[0], d[1] - (along + tilt) * n[1], d[2] - (along + tilt) * n[2]);
+                } else if (along < 0) {
+                    d = unit(d[0] - 2 * along * n[0], d[1] - 2 * along * n[1], d[2] - 2 * along * n[2]);
+                }
+                double tMax = i % 5 == 0 ? random.nextDouble(0.5, 30) : Intersect.MISS;
+                boolean found = truth.nearest(ox, oy, oz, d[0], d[1], d[2], tMax, skip, Hit.NONE, b, stack);
+                assertEquals(found, cells.nearest(ox, oy, oz, d[0], d[1], d[2], tMax, skip, Hit.NONE, a, stack),
+                        "scene " + scene + ", ray " + i);
+                if (found) {
+                    assertEquals(b.primitive, a.primitive, "scene " + scene + ", ray " + i);
+                    assertEquals(b.t, a.t, 0);
+                    assertEquals(b.kind, a.kind);
+                    assertEquals(b.index, a.index);
+                }
+                if (cells instanceof LeavingCells c && c.usesCells(skip, ox, oy, oz, d[0], d[1], d[2])) {
+                    throughCells++;
+                }
+            }
+        }
+        assertTrue(throughCells > 40_000, "rays through cells: " + throughCells);
+    }
+
     @Test
     void raysInsideAFrustumFindAmongItsGatheredPrimitivesWhatTheSearchFinds() {
         SplittableRandom random = new SplittableRandom(SEED + 5);
