@@ -19,10 +19,12 @@ final class CellCones {
     private static final int K = LeavingCells.K;
     /** Angle (radians) every cone is widened by. */
     static final double SLACK = 1e-3;
-    private static final int SAMPLES = 16;
+    private static final int SAMPLES = 64;
 
     /** Per cell: axis x, y, z, cos and sin of the half-angle. */
     private final double[] cell = new double[5 * LeavingCells.CELLS];
+    /** Per row of a face's cells (fixed u): the same for the whole row. */
+    private final double[] row = new double[5 * 6 * K];
     /** Per face: the same for the whole face. */
     private final double[] face = new double[5 * 6];
 
@@ -30,6 +32,7 @@ final class CellCones {
         for (int f = 0; f < 6; f++) {
             cone(f, -1, 1, -1, 1, face, 5 * f);
             for (int i = 0; i < K; i++) {
+                cone(f, -1 + 2.0 * i / K, -1 + 2.0 * (i + 1) / K, -1, 1, row, 5 * (f * K + i));
                 for (int j = 0; j < K; j++) {
                     double u0 = -1 + 2.0 * i / K, u1 = -1 + 2.0 * (i + 1) / K;
                     double v0 = -1 + 2.0 * j / K, v1 = -1 + 2.0 * (j + 1) / K;
@@ -93,34 +96,51 @@ final class CellCones {
     }
 
     /**
-     * Adds primitive q (ball at 4q of {@code balls}) to the lists ({@code lists}, {@link LeavingCells#CAP}
-     * slots a cell) of the cells in which a ray from the ball (c, reach) may reach it; a cell's
-     * count goes one past the cap at most, meaning it falls back.
+     * Whether a ray from the ball (c, reach) may reach the ball (b, radius) in a cell still open
+     * in {@code lists}; with {@code q} >= 0, adds q to every such cell instead (returning whether
+     * there was one).
      */
-    void mark(double cx, double cy, double cz, double reach, double[] balls, int q, int[] lists, int[] counts) {
-        double ex = balls[4 * q] - cx, ey = balls[4 * q + 1] - cy, ez = balls[4 * q + 2] - cz;
+    boolean reach(double cx, double cy, double cz, double reach, double[] balls, int at, int q, Lists lists) {
+        double ex = balls[at] - cx, ey = balls[at + 1] - cy, ez = balls[at + 2] - cz;
         double distance = Math.sqrt(ex * ex + ey * ey + ez * ez);
-        double sum = reach + balls[4 * q + 3];
-        if (!(sum < distance)) {
+        double sum = reach + balls[at + 3];
+        boolean met = false;
+        if (!(sum < distance)) { // overlapping balls: every direction
             for (int c = 0; c < LeavingCells.CELLS; c++) {
-                add(c, q, lists, counts);
+                if (lists.counts[c] <= LeavingCells.CAP) {
+                    if (q < 0) {
+                        return true;
+                    }
+                    met = true;
+                    lists.add(c, q);
+                }
             }
-            return;
+            return met;
         }
         ex /= distance;
         ey /= distance;
         ez /= distance;
         double sinB = sum / distance, cosB = Math.sqrt(1 - sinB * sinB);
         for (int f = 0; f < 6; f++) {
-            if (!meets(face, 5 * f, ex, ey, ez, cosB, sinB)) {
+            if (lists.openInFace[f] == 0 || !meets(face, 5 * f, ex, ey, ez, cosB, sinB)) {
                 continue;
             }
-            for (int c = f * K * K, end = c + K * K; c < end; c++) {
-                if (counts[c] <= LeavingCells.CAP && meets(cell, 5 * c, ex, ey, ez, cosB, sinB)) {
-                    add(c, q, lists, counts);
+            for (int row = f * K, rows = row + K; row < rows; row++) {
+                if (lists.openInRow[row] == 0 || !meets(this.row, 5 * row, ex, ey, ez, cosB, sinB)) {
+                    continue;
+                }
+                for (int c = row * K, end = c + K; c < end; c++) {
+                    if (lists.counts[c] <= LeavingCells.CAP && meets(cell, 5 * c, ex, ey, ez, cosB, sinB)) {
+                        if (q < 0) {
+                            return true;
+                        }
+                        met = true;
+                        lists.add(c, q);
+                    }
                 }
             }
         }
+        return met;
     }
 
     /** Whether the cone at {@code at} meets the cone about e of half-angle B: angle(axis, e) <= A + B. */
@@ -129,13 +149,37 @@ final class CellCones {
         return cos >= cones[at + 3] * cosB - cones[at + 4] * sinB;
     }
 
-    private static void add(int c, int q, int[] lists, int[] counts) {
-        int count = counts[c];
-        if (count < LeavingCells.CAP) {
-            lists[c * LeavingCells.CAP + count] = q;
+    /**
+     * One closed primitive's cells as they are filled: up to {@link LeavingCells#CAP} primitives a
+     * cell, its count going one past the cap at most (the cell is then closed: it falls back), and
+     * how many cells are still open in each row and face.
+     */
+    static final class Lists {
+
+        final int[] lists = new int[LeavingCells.CELLS * LeavingCells.CAP];
+        final int[] counts = new int[LeavingCells.CELLS];
+        final int[] openInRow = new int[6 * K];
+        final int[] openInFace = new int[6];
+        int open;
+
+        void reset() {
+            java.util.Arrays.fill(counts, 0);
+            java.util.Arrays.fill(openInRow, K);
+            java.util.Arrays.fill(openInFace, K * K);
+            open = LeavingCells.CELLS;
         }
-        if (count <= LeavingCells.CAP) {
-            counts[c] = count + 1;
+
+        void add(int c, int q) {
+            int count = counts[c];
+            if (count < LeavingCells.CAP) {
+                lists[c * LeavingCells.CAP + count] = q;
+                counts[c] = count + 1;
+            } else if (count == LeavingCells.CAP) {
+                counts[c] = count + 1;
+                openInRow[c / K]--;
+                openInFace[c / (K * K)]--;
+                open--;
+            }
         }
     }
 }

@@ -203,18 +203,18 @@ public final class LeavingCells implements Aggregate {
             Arrays.fill(firstCell, -1);
             covered = new double[4 * n];
             double[] balls = new double[4 * n];
-            int[] bounded = new int[n];
-            int boundedCount = 0;
             double[] box = new double[6];
             for (int q = 0; q < n; q++) {
                 if (p.bounded(q)) {
-                    bounded[boundedCount++] = q;
                     CellCones.ballOf(p, q, box, balls);
                 }
             }
             CellCones cones = CellCones.INSTANCE;
-            int[] scratch = new int[CELLS * CAP];
-            int[] counts = new int[CELLS];
+            CellCones.Lists lists = new CellCones.Lists();
+            BvhBuilder tree = new BvhBuilder(p, 4);
+            double[] nodeBalls = nodeBalls(tree);
+            int[] links = tree.links(), order = tree.order();
+            int[] waiting = new int[tree.depth() + 2];
             for (int s = 0; s < n; s++) {
                 if (!p.bounded(s) || !p.closed(s)) {
                     continue;
@@ -222,26 +222,63 @@ public final class LeavingCells implements Aggregate {
                 double cx = balls[4 * s], cy = balls[4 * s + 1], cz = balls[4 * s + 2];
                 double r = balls[4 * s + 3];
                 double reach = r + OFFSET * Math.max(1, Math.sqrt(cx * cx + cy * cy + cz * cz) + r);
-                Arrays.fill(counts, 0);
-                for (int k = 0; k < boundedCount; k++) {
-                    int q = bounded[k];
-                    if (q != s) {
-                        cones.mark(cx, cy, cz, reach, balls, q, scratch, counts);
+                lists.reset();
+                // the tree, nearer child first, leaving out nodes that only closed cells could reach
+                int top = 0;
+                if (tree.nodeCount() > 0) {
+                    waiting[top++] = 0;
+                }
+                while (top > 0 && lists.open > 0) {
+                    int node = waiting[--top];
+                    if (!cones.reach(cx, cy, cz, reach, nodeBalls, 4 * node, -1, lists)) {
+                        continue;
+                    }
+                    int count = links[2 * node + 1];
+                    if (count == 0) {
+                        int left = links[2 * node];
+                        boolean leftNearer = distance2(nodeBalls, left, cx, cy, cz)
+                                <= distance2(nodeBalls, left + 1, cx, cy, cz);
+                        waiting[top++] = leftNearer ? left + 1 : left;
+                        waiting[top++] = leftNearer ? left : left + 1;
+                        continue;
+                    }
+                    for (int slot = links[2 * node], end = slot + count; slot < end; slot++) {
+                        if (order[slot] != s) {
+                            cones.reach(cx, cy, cz, reach, balls, 4 * order[slot], order[slot], lists);
+                        }
                     }
                 }
-                add(s, cx, cy, cz, reach, scratch, counts);
+                add(s, cx, cy, cz, reach, lists);
             }
         }
 
-        /** Appends S's cells, unless every one of them falls back. */
-        private void add(int s, double cx, double cy, double cz, double reach, int[] scratch, int[] counts) {
-            boolean any = false;
-            for (int c = 0; c < CELLS && !any; c++) {
-                any = counts[c] <= CAP;
+        /** The ball around each node's box (it holds what the node's primitives hold). */
+        private static double[] nodeBalls(BvhBuilder tree) {
+            double[] box = tree.nodeBox();
+            double[] ball = new double[4 * tree.nodeCount()];
+            for (int node = 0; node < tree.nodeCount(); node++) {
+                int b = 6 * node;
+                double ex = 0.5 * (box[b + 3] - box[b]), ey = 0.5 * (box[b + 4] - box[b + 1]);
+                double ez = 0.5 * (box[b + 5] - box[b + 2]);
+                ball[4 * node] = 0.5 * (box[b] + box[b + 3]);
+                ball[4 * node + 1] = 0.5 * (box[b + 1] + box[b + 4]);
+                ball[4 * node + 2] = 0.5 * (box[b + 2] + box[b + 5]);
+                ball[4 * node + 3] = Math.nextUp(Math.sqrt(ex * ex + ey * ey + ez * ez)) * (1 + 1e-12);
             }
-            if (!any) {
+            return ball;
+        }
+
+        private static double distance2(double[] balls, int node, double cx, double cy, double cz) {
+            double ex = balls[4 * node] - cx, ey = balls[4 * node + 1] - cy, ez = balls[4 * node + 2] - cz;
+            return ex * ex + ey * ey + ez * ez;
+        }
+
+        /** Appends S's cells, unless every one of them falls back. */
+        private void add(int s, double cx, double cy, double cz, double reach, CellCones.Lists lists) {
+            if (lists.open == 0) {
                 return;
             }
+            int[] counts = lists.counts;
             if (cells + CELLS > cellFrom.length) {
                 cellFrom = Arrays.copyOf(cellFrom, 2 * (cells + CELLS));
                 cellCount = Arrays.copyOf(cellCount, cellFrom.length);
@@ -263,7 +300,8 @@ public final class LeavingCells implements Aggregate {
                 }
                 cellFrom[cells] = slots;
                 cellCount[cells] = count;
-                System.arraycopy(scratch, c * CAP, listed, slots, count);
+                System.arraycopy(lists.lists, c * CAP, listed, slots, count);
+                Arrays.sort(listed, slots, slots + count); // in the primitives' order, whatever the tree's
                 slots += count;
             }
         }
