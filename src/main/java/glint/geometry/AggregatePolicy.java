@@ -22,6 +22,13 @@ public final class AggregatePolicy {
      */
     public static final int MOST_ROW_CANDIDATES = 16;
 
+    /**
+     * Rays leaving a closed primitive use its direction cells ({@link LeavingCells}) in scenes of
+     * at most this many primitives: building them is quadratic at worst, 0.15-0.2 s for field-1000
+     * (5 ms without) and 0.7 s for scenes/field.yaml's 3560; measured on field-1000, glass-25, default.
+     */
+    public static final int MOST_CELL_PRIMITIVES = 1024;
+
     private AggregatePolicy() {
     }
 
@@ -29,9 +36,12 @@ public final class AggregatePolicy {
      * The aggregate for these primitives: a {@link Bvh} (against testing every primitive, it took
      * 7-12 % off a frame of 5 glass or matte spheres and 27-41 % off 10 to 25, and cost nothing on
      * the default scene's 3), behind the {@link EmptyInteriors} filter where a closed primitive
-     * has an empty inside (13 % off glass-25, 2-3 % off the default scene and glass-5).
+     * has an empty inside (13 % off glass-25, 2-3 % off the default scene and glass-5), and behind
+     * it the {@link LeavingCells} filter for rays leaving a closed primitive's outer side (a ray
+     * hinting {@code inside} is answered by the first filter, one with {@code skip} by the second).
      */
     public static Aggregate choose(Primitives primitives) {
-        return EmptyInteriors.around(LeavingCells.around(new Bvh(primitives, LEAF_SIZE)));
+        Bvh bvh = new Bvh(primitives, LEAF_SIZE);
+        return EmptyInteriors.around(primitives.count() <= MOST_CELL_PRIMITIVES ? LeavingCells.around(bvh) : bvh);
     }
 }
