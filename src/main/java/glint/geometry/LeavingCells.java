@@ -185,8 +185,9 @@ public final class LeavingCells implements Aggregate {
 
     @Override
     public String toString() {
-        return "LeavingCells[" + cellFrom.length / CELLS + " primitives with cells, " + listed.length
-                + " listed] in front of " + searched;
+        long fallBack = Arrays.stream(cellCount).filter(count -> count < 0).count();
+        return "LeavingCells[" + cellCount.length / CELLS + " primitives with cells, " + fallBack + " of "
+                + cellCount.length + " cells fall back, " + listed.length + " listed] in front of " + searched;
     }
 
     /** Works out the cells of every closed bounded primitive (see {@link CellCones} for the geometry). */
