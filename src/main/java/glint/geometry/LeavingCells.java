@@ -16,7 +16,7 @@ public final class LeavingCells implements Aggregate {
     /** Cells along a cube face's side. */
     static final int K = 8;
     static final int CELLS = 6 * K * K;
-    /** The most primitives a cell lists; a cell that would list more falls back to the search. */
+    /** The most primitives a cell lists (below 32: see {@link #cell}); a cell that would list more falls back. */
     static final int CAP = 16;
     /**
      * How far off S's bounding ball (relative to max(1, |centre| + radius)) an origin may be and still
@@ -27,15 +27,17 @@ public final class LeavingCells implements Aggregate {
 
     private final Aggregate searched;
     private final Primitives primitives;
-    /** Per primitive: its first cell in {@link #cellFrom} / {@link #cellCount}, or -1 if it has none. */
+    /** Per primitive: its first cell in {@link #cell}, or -1 if it has none. */
     private final int[] firstCell;
     /** Per primitive with cells: the centre of the ball they cover and its radius squared, 4 doubles. */
     private final double[] covered;
-    /** Per cell: its first slot in the lists, and how many (-1: fall back to the search). */
-    private final int[] cellFrom, cellCount;
-    /** The cells' lists: primitive numbers, their kinds and indices within the kinds. */
-    private final int[] listed, listedIndex;
-    private final Shape[] listedKind;
+    /**
+     * Per cell, in one int so that a ray reads one place: its first slot in {@link #listed} times
+     * 32 plus how many it lists (at most {@link #CAP}), or -1: fall back to the search.
+     */
+    private final int[] cell;
+    /** The cells' lists of primitive numbers (numbers only: a large scene's lists stay small). */
+    private final int[] listed;
     private final int[] unbounded, unboundedIndex;
     private final Shape[] unboundedKind;
 
@@ -44,15 +46,8 @@ public final class LeavingCells implements Aggregate {
         this.primitives = searched.primitives();
         this.firstCell = b.firstCell;
         this.covered = b.covered;
-        this.cellFrom = Arrays.copyOf(b.cellFrom, b.cells);
-        this.cellCount = Arrays.copyOf(b.cellCount, b.cells);
+        this.cell = Arrays.copyOf(b.cell, b.cells);
         this.listed = Arrays.copyOf(b.listed, b.slots);
-        this.listedKind = new Shape[b.slots];
-        this.listedIndex = new int[b.slots];
-        for (int s = 0; s < b.slots; s++) {
-            listedKind[s] = primitives.kind(primitives.kindOf(listed[s]));
-            listedIndex[s] = primitives.indexOf(listed[s]);
-        }
         int n = 0;
         int[] u = new int[primitives.count()];
         for (int q = 0; q < primitives.count(); q++) {
@@ -83,7 +78,7 @@ public final class LeavingCells implements Aggregate {
         }
         int b = 4 * skip;
         double ex = ox - covered[b], ey = oy - covered[b + 1], ez = oz - covered[b + 2];
-        return ex * ex + ey * ey + ez * ez <= covered[b + 3] && cellCount[first + cellOf(dx, dy, dz)] >= 0;
+        return ex * ex + ey * ey + ez * ez <= covered[b + 3] && cell[first + cellOf(dx, dy, dz)] >= 0;
     }
 
     @Override
@@ -94,10 +89,9 @@ public final class LeavingCells implements Aggregate {
             int b = 4 * skip;
             double ex = ox - covered[b], ey = oy - covered[b + 1], ez = oz - covered[b + 2];
             if (ex * ex + ey * ey + ez * ez <= covered[b + 3]) {
-                int cell = first + cellOf(dx, dy, dz);
-                int count = cellCount[cell];
-                if (count >= 0) {
-                    return nearestListed(ox, oy, oz, dx, dy, dz, tMax, skip, cellFrom[cell], count, hit);
+                int listing = cell[first + cellOf(dx, dy, dz)];
+                if (listing >= 0) {
+                    return nearestListed(ox, oy, oz, dx, dy, dz, tMax, skip, listing >>> 5, listing & 31, hit);
                 }
             }
         }
@@ -119,7 +113,7 @@ public final class LeavingCells implements Aggregate {
             }
         }
         for (int slot = from, end = from + count; slot < end; slot++) {
-            double t = listedKind[slot].intersect(listedIndex[slot], ox, oy, oz, dx, dy, dz, nearest);
+            double t = primitives.intersect(listed[slot], ox, oy, oz, dx, dy, dz, nearest);
             if (t < nearest) {
                 nearest = t;
                 found = listed[slot];
@@ -185,9 +179,9 @@ public final class LeavingCells implements Aggregate {
 
     @Override
     public String toString() {
-        long fallBack = Arrays.stream(cellCount).filter(count -> count < 0).count();
-        return "LeavingCells[" + cellCount.length / CELLS + " primitives with cells, " + fallBack + " of "
-                + cellCount.length + " cells fall back, " + listed.length + " listed] in front of " + searched;
+        long fallBack = Arrays.stream(cell).filter(listing -> listing < 0).count();
+        return "LeavingCells[" + cell.length / CELLS + " primitives with cells, " + fallBack + " of "
+                + cell.length + " cells fall back, " + listed.length + " listed] in front of " + searched;
     }
 
     /** Works out the cells of every closed bounded primitive (see {@link CellCones} for the geometry). */
@@ -195,7 +189,7 @@ public final class LeavingCells implements Aggregate {
 
         final int[] firstCell;
         final double[] covered;
-        int[] cellFrom = new int[CELLS], cellCount = new int[CELLS], listed = new int[64];
+        int[] cell = new int[CELLS], listed = new int[64];
         int cells, slots;
 
         Builder(Primitives p) {
@@ -280,9 +274,8 @@ public final class LeavingCells implements Aggregate {
                 return;
             }
             int[] counts = lists.counts;
-            if (cells + CELLS > cellFrom.length) {
-                cellFrom = Arrays.copyOf(cellFrom, 2 * (cells + CELLS));
-                cellCount = Arrays.copyOf(cellCount, cellFrom.length);
+            if (cells + CELLS > cell.length) {
+                cell = Arrays.copyOf(cell, 2 * (cells + CELLS));
             }
             firstCell[s] = cells;
             covered[4 * s] = cx;
@@ -292,15 +285,16 @@ public final class LeavingCells implements Aggregate {
             for (int c = 0; c < CELLS; c++, cells++) {
                 int count = counts[c];
                 if (count > CAP) {
-                    cellFrom[cells] = 0;
-                    cellCount[cells] = -1;
+                    cell[cells] = -1;
                     continue;
                 }
                 if (slots + count > listed.length) {
                     listed = Arrays.copyOf(listed, 2 * (slots + count));
                 }
-                cellFrom[cells] = slots;
-                cellCount[cells] = count;
+                if (slots >= 1 << 26) {
+                    throw new IllegalStateException("too many listed for a cell's int: " + slots);
+                }
+                cell[cells] = slots << 5 | count;
                 System.arraycopy(lists.lists, c * CAP, listed, slots, count);
                 Arrays.sort(listed, slots, slots + count); // in the primitives' order, whatever the tree's
                 slots += count;
