@@ -21,7 +21,7 @@ public final class LeavingCells implements Aggregate {
     /**
      * How far off S's bounding ball (relative to max(1, |centre| + radius)) an origin may be and still
      * use the cells: a spawned ray starts epsilon x max(1, |p|) off the surface (epsilon 1e-9 by
-     * default, a million times less). An origin farther off is searched as usual (checked per ray).
+     * default, a thousandth of this margin). An origin farther off is searched as usual (checked per ray).
      */
     private static final double OFFSET = 1e-6;
 
