@@ -2,9 +2,9 @@ package glint.geometry;
 
 /**
  * The one place that decides how a scene's rays search its primitives, and every threshold of
- * that decision. Each was measured on scenes/bench (800x600, 1 spp, depth 5, cook-torrance; two
- * builds run side by side, one thread each, render CPU a frame, medians of 30-40 frames,
- * 2026-12-02; docs/benchmarks.md).
+ * that decision. Each was measured on scenes/bench (800x600, 1 spp, depth 5, cook-torrance, render
+ * CPU a frame, 2026-12-02; docs/benchmarks.md): the first ones with two builds run side by side,
+ * one thread each, medians of 30-40 frames; the cells with {@code CompareBuilds}.
  */
 public final class AggregatePolicy {
 
@@ -24,12 +24,13 @@ public final class AggregatePolicy {
 
     /**
      * Rays leaving a closed primitive use its direction cells ({@link LeavingCells}) in scenes of
-     * at most this many primitives: their build grows with the square at worst (field-1000: 0.19 s
-     * of compile against 4 ms without; scenes/field.yaml's 3560 would take 0.7 s). Measured on
-     * default, glass-25 and field-1000 with CompareBuilds (2 threads, 3 runs of 10 pairs):
-     * B/A 0.92-1.01, 0.78-0.85 and 0.90-0.97.
+     * at most this many primitives. Measured with CompareBuilds (2 threads, 10 pairs a run, 6 runs):
+     * glass-25 (26 primitives) took 0.76-0.85 of the render CPU a frame, the default scene 0.87-1.01;
+     * on field-1000 (1,001) the ratio wandered from 0.90 to 1.02 while the cells took 0.19 s of
+     * compile (4 ms without) and 4.5 MB, their build growing with the square of the count at worst.
+     * Up to 256 the build stays under 30 ms (the first 254 spheres of field-1000: 26 ms).
      */
-    public static final int MOST_CELL_PRIMITIVES = 1024;
+    public static final int MOST_CELL_PRIMITIVES = 256;
 
     private AggregatePolicy() {
     }
