@@ -72,28 +72,30 @@ public final class LeavingCells implements Aggregate {
 
     /** Whether this ray, leaving primitive {@code skip}, is answered from a cell's list (not searched). */
     boolean usesCells(int skip, double ox, double oy, double oz, double dx, double dy, double dz) {
+        return listing(skip, ox, oy, oz, dx, dy, dz) >= 0;
+    }
+
+    /**
+     * The listing of the cell that answers this ray ({@link #cell}'s slot x 32 + count), or -1 when
+     * the ray is searched: it skips no primitive with cells, starts outside the ball they cover, or
+     * its cell falls back.
+     */
+    private int listing(int skip, double ox, double oy, double oz, double dx, double dy, double dz) {
         int first = skip >= 0 ? firstCell[skip] : -1;
         if (first < 0) {
-            return false;
+            return -1;
         }
         int b = 4 * skip;
         double ex = ox - covered[b], ey = oy - covered[b + 1], ez = oz - covered[b + 2];
-        return ex * ex + ey * ey + ez * ez <= covered[b + 3] && cell[first + cellOf(dx, dy, dz)] >= 0;
+        return ex * ex + ey * ey + ez * ez <= covered[b + 3] ? cell[first + cellOf(dx, dy, dz)] : -1;
     }
 
     @Override
     public boolean nearest(double ox, double oy, double oz, double dx, double dy, double dz, double tMax, int skip,
                            int inside, Hit hit, TraversalStack stack) {
-        int first = skip >= 0 ? firstCell[skip] : -1;
-        if (first >= 0) {
-            int b = 4 * skip;
-            double ex = ox - covered[b], ey = oy - covered[b + 1], ez = oz - covered[b + 2];
-            if (ex * ex + ey * ey + ez * ez <= covered[b + 3]) {
-                int listing = cell[first + cellOf(dx, dy, dz)];
-                if (listing >= 0) {
-                    return nearestListed(ox, oy, oz, dx, dy, dz, tMax, skip, listing >>> 5, listing & 31, hit);
-                }
-            }
+        int listing = listing(skip, ox, oy, oz, dx, dy, dz);
+        if (listing >= 0) {
+            return nearestListed(ox, oy, oz, dx, dy, dz, tMax, skip, listing >>> 5, listing & 31, hit);
         }
         return searched.nearest(ox, oy, oz, dx, dy, dz, tMax, skip, inside, hit, stack);
     }
@@ -156,6 +158,10 @@ public final class LeavingCells implements Aggregate {
         return (face * K + i) * K + j;
     }
 
+    /**
+     * Searched as usual: shadow rays from a primitive's surface answered from its cells took 0.90 to
+     * 1.02 of the render CPU a frame on the default scene and glass-25 (4 runs), short of 5 %.
+     */
     @Override
     public double transmittance(double ox, double oy, double oz, double dx, double dy, double dz, double tMax,
                                 int skip, double[] pass, TraversalStack stack) {

@@ -187,6 +187,7 @@ class AggregateTest {
             TraversalStack stack = truth.newStack();
             Shape spheres = primitives.kind(0);
             double[] ball = new double[4];
+            double[] pass = passes(random, primitives.count());
             for (int i = 0; i < 2_000; i++) {
                 int sphere = random.nextInt(spheres.count());
                 int skip = primitives.number(0, sphere);
@@ -213,6 +214,9 @@ class AggregateTest {
                     assertEquals(b.kind, a.kind);
                     assertEquals(b.index, a.index);
                 }
+                double passB = truth.transmittance(ox, oy, oz, d[0], d[1], d[2], tMax, skip, pass, stack);
+                assertEquals(passB, cells.transmittance(ox, oy, oz, d[0], d[1], d[2], tMax, skip, pass, stack),
+                        1e-15 * passB, "scene " + scene + ", ray " + i);
                 if (cells instanceof LeavingCells c && c.usesCells(skip, ox, oy, oz, d[0], d[1], d[2])) {
                     throughCells++;
                 }
@@ -264,15 +268,21 @@ class AggregateTest {
         }
     }
 
+    /** The fraction of light each primitive passes: none for a third of them, 0.1 to 1 for the rest. */
+    private static double[] passes(SplittableRandom random, int count) {
+        double[] pass = new double[count];
+        for (int p = 0; p < count; p++) {
+            pass[p] = random.nextInt(3) == 0 ? 0 : random.nextDouble(0.1, 1);
+        }
+        return pass;
+    }
+
     /** Rays from random points and from random surface points, skipping the primitive left, in both aggregates. */
     private static void compare(Primitives primitives, Aggregate tested, Aggregate truth, SplittableRandom random,
                                 int rays) {
         Hit a = new Hit(), b = new Hit();
         TraversalStack stackA = tested.newStack(), stackB = truth.newStack();
-        double[] pass = new double[primitives.count()];
-        for (int p = 0; p < pass.length; p++) {
-            pass[p] = random.nextInt(3) == 0 ? 0 : random.nextDouble(0.1, 1);
-        }
+        double[] pass = passes(random, primitives.count());
         for (int i = 0; i < rays; i++) {
             double ox = random.nextDouble(-15, 15), oy = random.nextDouble(-15, 15), oz = random.nextDouble(-15, 15);
             double[] d = unit(random.nextDouble(-1, 1), random.nextDouble(-1, 1), random.nextDouble(-1, 1));
