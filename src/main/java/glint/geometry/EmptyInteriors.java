@@ -10,16 +10,13 @@ import java.util.Arrays;
  * are empty is worked out once, when the scene is compiled: every closed primitive's bounding ball
  * against the other primitives.
  */
-public final class EmptyInteriors implements Aggregate {
+public final class EmptyInteriors extends AggregateFilter {
 
-    private final Aggregate searched;
-    private final Primitives primitives;
     /** Per primitive: whether it is closed and nothing else reaches into it. */
     private final boolean[] empty;
 
     private EmptyInteriors(Aggregate searched, boolean[] empty) {
-        this.searched = searched;
-        this.primitives = searched.primitives();
+        super(searched);
         this.empty = empty;
     }
 
@@ -51,27 +48,6 @@ public final class EmptyInteriors implements Aggregate {
             // the origin was pushed past the primitive (an offset larger than it): search as usual
         }
         return searched.nearest(ox, oy, oz, dx, dy, dz, tMax, skip, inside, hit, stack);
-    }
-
-    @Override
-    public double transmittance(double ox, double oy, double oz, double dx, double dy, double dz, double tMax,
-                                int skip, double[] pass, TraversalStack stack) {
-        return searched.transmittance(ox, oy, oz, dx, dy, dz, tMax, skip, pass, stack);
-    }
-
-    @Override
-    public void gather(Frustum frustum, Candidates out, TraversalStack stack) {
-        searched.gather(frustum, out, stack);
-    }
-
-    @Override
-    public Primitives primitives() {
-        return primitives;
-    }
-
-    @Override
-    public TraversalStack newStack() {
-        return searched.newStack();
     }
 
     /**

@@ -1,0 +1,39 @@
+package glint.geometry;
+
+/**
+ * An aggregate in front of another that answers some nearest-hit queries itself and hands every
+ * other question to the one it filters: the shape of {@link EmptyInteriors} and
+ * {@link LeavingCells}.
+ */
+abstract class AggregateFilter implements Aggregate {
+
+    /** The aggregate behind this filter. */
+    final Aggregate searched;
+    final Primitives primitives;
+
+    AggregateFilter(Aggregate searched) {
+        this.searched = searched;
+        this.primitives = searched.primitives();
+    }
+
+    @Override
+    public double transmittance(double ox, double oy, double oz, double dx, double dy, double dz, double tMax,
+                                int skip, double[] pass, TraversalStack stack) {
+        return searched.transmittance(ox, oy, oz, dx, dy, dz, tMax, skip, pass, stack);
+    }
+
+    @Override
+    public void gather(Frustum frustum, Candidates out, TraversalStack stack) {
+        searched.gather(frustum, out, stack);
+    }
+
+    @Override
+    public Primitives primitives() {
+        return primitives;
+    }
+
+    @Override
+    public TraversalStack newStack() {
+        return searched.newStack();
+    }
+}
