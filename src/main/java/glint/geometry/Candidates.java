@@ -29,25 +29,17 @@ public final class Candidates {
     }
 
     /**
-     * The nearest hit among the gathered primitives with t in (0, tMax), into {@code hit}, as
-     * {@link Aggregate#nearest} gives it for a ray of the set the primitives were gathered for.
+     * The nearest hits among the gathered primitives of the rays r in [0, n) from the common
+     * origin o along (dx[r], dy[r], dz[r]): nearestT[r] and nearestPrimitive[r] become the distance
+     * and number of each ray's nearest hit, or {@link Intersect#MISS} and {@link Hit#NONE}. The same
+     * hits as {@link #nearest} ray by ray, found primitive by primitive.
      */
-    public boolean nearest(Primitives p, double ox, double oy, double oz, double dx, double dy, double dz,
-                           double tMax, Hit hit) {
-        double nearest = tMax;
-        int found = Hit.NONE;
+    public void nearestFromOrigin(Primitives p, double ox, double oy, double oz, double[] dx, double[] dy,
+                                  double[] dz, int n, double[] nearestT, int[] nearestPrimitive) {
+        java.util.Arrays.fill(nearestT, 0, n, Intersect.MISS);
+        java.util.Arrays.fill(nearestPrimitive, 0, n, Hit.NONE);
         for (int i = 0; i < count; i++) {
-            int q = primitives[i];
-            double t = p.intersect(q, ox, oy, oz, dx, dy, dz, nearest);
-            if (t < nearest) {
-                nearest = t;
-                found = q;
-            }
+            p.nearestFromOrigin(primitives[i], ox, oy, oz, dx, dy, dz, n, nearestT, nearestPrimitive);
         }
-        if (found == Hit.NONE) {
-            return false;
-        }
-        p.record(hit, found, nearest);
-        return true;
     }
 }

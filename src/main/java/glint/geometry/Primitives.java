@@ -81,6 +81,13 @@ public final class Primitives {
         return kinds[kindOf[primitive]].intersect(indexOf[primitive], ox, oy, oz, dx, dy, dz, tMax);
     }
 
+    /** {@link Shape#nearestFromOrigin} of a primitive given by its number. */
+    public void nearestFromOrigin(int primitive, double ox, double oy, double oz, double[] dx, double[] dy,
+                                  double[] dz, int n, double[] nearestT, int[] nearestPrimitive) {
+        kinds[kindOf[primitive]].nearestFromOrigin(indexOf[primitive], primitive, ox, oy, oz, dx, dy, dz, n, nearestT,
+                nearestPrimitive);
+    }
+
     /** Whether a ray leaving the primitive into its inside can meet it again ({@link Shape#closed}). */
     public boolean closed(int primitive) {
         return kinds[kindOf[primitive]].closed();

@@ -56,6 +56,23 @@ public final class Spheres implements Shape {
         return Intersect.sphereBefore(data[k], data[k + 1], data[k + 2], data[k + 3], ox, oy, oz, dx, dy, dz, tMax);
     }
 
+    /** The origin's offset from the centre and its square less r^2, once for all the rays. */
+    @Override
+    public void nearestFromOrigin(int i, int number, double ox, double oy, double oz, double[] dx, double[] dy,
+                                  double[] dz, int n, double[] nearestT, int[] nearestPrimitive) {
+        int k = 4 * i;
+        double radius = data[k + 3];
+        double fx = ox - data[k], fy = oy - data[k + 1], fz = oz - data[k + 2];
+        double c = fx * fx + fy * fy + fz * fz - radius * radius;
+        for (int r = 0; r < n; r++) {
+            double t = Intersect.sphereFrom(fx, fy, fz, c, radius, dx[r], dy[r], dz[r], nearestT[r]);
+            if (t < nearestT[r]) {
+                nearestT[r] = t;
+                nearestPrimitive[r] = number;
+            }
+        }
+    }
+
     /** The point of the sphere nearest p (removes the error t carries into p) and the outward normal. */
     @Override
     public void surfaceAt(int i, double px, double py, double pz, Hit hit) {

@@ -22,6 +22,9 @@ final class CameraRows {
     // one coordinate an array
     double[] dirX = new double[0], dirY = new double[0], dirZ = new double[0];
     double[] radianceR = new double[0], radianceG = new double[0], radianceB = new double[0];
+    /** Each ray's nearest hit, where the row's hits are found before they are shaded: distance and primitive. */
+    double[] hitT = new double[0];
+    int[] hitPrimitive = new int[0];
     /** Screen x of the centres of the tile's pixels, shared by its rows (with one sample a pixel). */
     private double[] centreX = new double[0];
 
@@ -55,6 +58,8 @@ final class CameraRows {
             radianceR = new double[rays];
             radianceG = new double[rays];
             radianceB = new double[rays];
+            hitT = new double[rays];
+            hitPrimitive = new int[rays];
         }
         for (int ray = 0, n = x1 - x0; ray < n; ray++) {
             centreX[ray] = screenX(x0 + ray + 0.5);

@@ -121,20 +121,28 @@ final class Integrator {
     }
 
     /**
-     * {@link #trace} for a camera ray: its nearest hit is searched among {@code candidates},
-     * gathered for the frustum of camera rays it belongs to, or where they are null, in the aggregate.
+     * The nearest hits of camera rays r in [0, n) from o along (dx[r], dy[r], dz[r]) among
+     * {@code candidates}, gathered for the frustum the rays lie in, into nearestT and
+     * nearestPrimitive (as {@link Candidates#nearestFromOrigin}).
      */
-    Rgb traceCamera(Candidates candidates, double ox, double oy, double oz, double dx, double dy, double dz,
+    void findCameraHits(Candidates candidates, double ox, double oy, double oz, double[] dx, double[] dy,
+                        double[] dz, int n, double[] nearestT, int[] nearestPrimitive) {
+        candidates.nearestFromOrigin(primitives, ox, oy, oz, dx, dy, dz, n, nearestT, nearestPrimitive);
+        rays += n;
+    }
+
+    /**
+     * {@link #trace} for a camera ray whose nearest hit is already known: primitive
+     * {@code primitive} ({@link Hit#NONE} for none) at distance t.
+     */
+    Rgb shadeCamera(int primitive, double t, double ox, double oy, double oz, double dx, double dy, double dz,
                     int hitsLeft) {
-        if (candidates == null) {
-            return trace(ox, oy, oz, dx, dy, dz, hitsLeft, 1, Hit.NONE, Hit.NONE);
-        }
         PathVertex v = vertices[hitsLeft];
-        rays++;
-        if (!candidates.nearest(primitives, ox, oy, oz, dx, dy, dz, Intersect.MISS, v.hit)) {
+        if (primitive == Hit.NONE) {
             v.radiance.set(scene.backgroundR, scene.backgroundG, scene.backgroundB);
             return v.radiance;
         }
+        primitives.record(v.hit, primitive, t);
         return shadeHit(v, ox, oy, oz, dx, dy, dz, hitsLeft, 1);
     }
 

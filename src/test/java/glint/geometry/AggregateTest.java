@@ -228,7 +228,7 @@ class AggregateTest {
     @Test
     void raysInsideAFrustumFindAmongItsGatheredPrimitivesWhatTheSearchFinds() {
         SplittableRandom random = new SplittableRandom(SEED + 5);
-        Hit a = new Hit(), b = new Hit();
+        Hit b = new Hit();
         Candidates candidates = new Candidates();
         Frustum frustum = new Frustum();
         for (int scene = 0; scene < 30; scene++) {
@@ -251,18 +251,23 @@ class AggregateTest {
                 }
                 frustum.set(ax, ay, az, edges);
                 gathering.gather(frustum, candidates, stack);
-                for (int i = 0; i < 50; i++) {
+                int rays = 50;
+                double[] dx = new double[rays], dy = new double[rays], dz = new double[rays], nearestT = new double[rays];
+                int[] nearestPrimitive = new int[rays];
+                for (int i = 0; i < rays; i++) {
                     double s = random.nextDouble(-1, 1) * width, t = random.nextDouble(-1, 1) * height;
                     double[] d = unit(axis[0] + s * u[0] + t * v[0], axis[1] + s * u[1] + t * v[1],
                             axis[2] + s * u[2] + t * v[2]);
-                    boolean foundA = candidates.nearest(primitives, ax, ay, az, d[0], d[1], d[2], Intersect.MISS, a);
-                    boolean foundB = truth.nearest(ax, ay, az, d[0], d[1], d[2], Intersect.MISS, Hit.NONE, Hit.NONE, b,
+                    dx[i] = d[0];
+                    dy[i] = d[1];
+                    dz[i] = d[2];
+                }
+                candidates.nearestFromOrigin(primitives, ax, ay, az, dx, dy, dz, rays, nearestT, nearestPrimitive);
+                for (int i = 0; i < rays; i++) {
+                    boolean found = truth.nearest(ax, ay, az, dx[i], dy[i], dz[i], Intersect.MISS, Hit.NONE, Hit.NONE, b,
                             stack);
-                    assertEquals(foundB, foundA);
-                    if (foundB) {
-                        assertEquals(b.primitive, a.primitive);
-                        assertEquals(b.t, a.t, 0);
-                    }
+                    assertEquals(found ? b.primitive : Hit.NONE, nearestPrimitive[i]);
+                    assertEquals(found ? b.t : Intersect.MISS, nearestT[i], 0);
                 }
             }
         }
