@@ -207,22 +207,14 @@ public final class Bvh implements Aggregate {
         double tx0 = (box[b] - ox) * ix, tx1 = (box[b + 3] - ox) * ix;
         double ty0 = (box[b + 1] - oy) * iy, ty1 = (box[b + 4] - oy) * iy;
         double tz0 = (box[b + 2] - oz) * iz, tz1 = (box[b + 5] - oz) * iz;
-        double near = max(max(min(tx0, tx1), min(ty0, ty1)), max(min(tz0, tz1), 0));
-        double far = min(min(max(tx0, tx1), max(ty0, ty1)), max(tz0, tz1));
+        // Math.min and max compile to branch-free code, which a ray's unpredictable slabs need
+        double near = Math.max(Math.max(Math.min(tx0, tx1), Math.min(ty0, ty1)), Math.max(Math.min(tz0, tz1), 0));
+        double far = Math.min(Math.min(Math.max(tx0, tx1), Math.max(ty0, ty1)), Math.max(tz0, tz1));
         return near <= far * (1 + 8 * 0x1p-53) ? near : Intersect.MISS;
     }
 
     private static double nonZero(double component) {
         return component == 0 ? 1e-300 : component;
-    }
-
-    // plain comparisons: no NaN reaches them, so Math.min/max's NaN and -0 handling is not needed
-    private static double min(double a, double b) {
-        return a < b ? a : b;
-    }
-
-    private static double max(double a, double b) {
-        return a > b ? a : b;
     }
 
     @Override
