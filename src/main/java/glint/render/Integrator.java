@@ -33,6 +33,8 @@ final class Integrator {
     private ShadingModel model;
     private TraversalStack stack;
     private PathVertex[] vertices = new PathVertex[0];
+    /** Scratch: a camera ray's hit while a row's hits are found in the aggregate. */
+    private final Hit cameraHit = new Hit();
 
     // the scene's settings, read once per scene rather than through the record on every ray
     double epsilon, minWeight;
@@ -121,14 +123,25 @@ final class Integrator {
     }
 
     /**
-     * The nearest hits of camera rays r in [0, n) from o along (dx[r], dy[r], dz[r]) among
-     * {@code candidates}, gathered for the frustum the rays lie in, into nearestT and
-     * nearestPrimitive (as {@link Candidates#nearestFromOrigin}).
+     * The nearest hits of camera rays r in [0, n) from o along (dx[r], dy[r], dz[r]), into
+     * nearestT and nearestPrimitive ({@link Intersect#MISS} and {@link Hit#NONE} for none): among
+     * {@code candidates}, gathered for the frustum the rays lie in, primitive by primitive
+     * ({@link Candidates#nearestFromOrigin}), or where they are null, ray by ray in the aggregate.
      */
     void findCameraHits(Candidates candidates, double ox, double oy, double oz, double[] dx, double[] dy,
                         double[] dz, int n, double[] nearestT, int[] nearestPrimitive) {
-        candidates.nearestFromOrigin(primitives, ox, oy, oz, dx, dy, dz, n, nearestT, nearestPrimitive);
         rays += n;
+        if (candidates != null) {
+            candidates.nearestFromOrigin(primitives, ox, oy, oz, dx, dy, dz, n, nearestT, nearestPrimitive);
+            return;
+        }
+        Hit hit = cameraHit;
+        for (int r = 0; r < n; r++) {
+            boolean found = aggregate.nearest(ox, oy, oz, dx[r], dy[r], dz[r], Intersect.MISS, Hit.NONE, Hit.NONE, hit,
+                    stack);
+            nearestT[r] = found ? hit.t : Intersect.MISS;
+            nearestPrimitive[r] = found ? hit.primitive : Hit.NONE;
+        }
     }
 
     /**

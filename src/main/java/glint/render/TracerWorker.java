@@ -3,7 +3,6 @@ package glint.render;
 import glint.geometry.AggregatePolicy;
 import glint.geometry.Candidates;
 import glint.geometry.Frustum;
-import glint.geometry.Hit;
 import glint.shading.Rgb;
 
 /**
@@ -51,27 +50,22 @@ final class TracerWorker {
     }
 
     /**
-     * Traces the row's camera rays [0, rays) from the eye into the row's radiance, searching only
-     * {@code candidates} when given, else the aggregate. Ray i is sample
-     * {@code firstSample + i % sampleCount} of pixel {@code x0 + i / sampleCount}, and its (pixel, frame,
-     * sample) seeds its path's random decisions.
+     * Traces the row's camera rays [0, rays) from the eye into the row's radiance: first every
+     * ray's nearest hit (among {@code candidates} when given, else in the aggregate), then each hit
+     * shaded. Ray i is sample {@code firstSample + i % sampleCount} of pixel {@code x0 + i / sampleCount},
+     * and its (pixel, frame, sample) seeds its path's random decisions.
      */
     private void traceRow(RenderScene scene, int rays, Candidates candidates) {
         CameraBasis camera = scene.camera;
         int hits = scene.settings.recursionMax();
         CameraRows r = rows;
-        if (candidates != null) {
-            integrator.findCameraHits(candidates, camera.eyeX, camera.eyeY, camera.eyeZ, r.dirX, r.dirY, r.dirZ, rays,
-                    r.hitT, r.hitPrimitive);
-        }
+        integrator.findCameraHits(candidates, camera.eyeX, camera.eyeY, camera.eyeZ, r.dirX, r.dirY, r.dirZ, rays,
+                r.hitT, r.hitPrimitive);
         int pixel = rowStart + tileX0, sample = tileFirstSample, end = tileFirstSample + tileSampleCount;
         for (int ray = 0; ray < rays; ray++) {
             integrator.beginPath(pixel, tileFrameIndex, sample);
-            Rgb radiance = candidates != null
-                    ? integrator.shadeCamera(r.hitPrimitive[ray], r.hitT[ray], camera.eyeX, camera.eyeY, camera.eyeZ,
-                    r.dirX[ray], r.dirY[ray], r.dirZ[ray], hits)
-                    : integrator.trace(camera.eyeX, camera.eyeY, camera.eyeZ, r.dirX[ray], r.dirY[ray], r.dirZ[ray],
-                    hits, 1, Hit.NONE, Hit.NONE);
+            Rgb radiance = integrator.shadeCamera(r.hitPrimitive[ray], r.hitT[ray], camera.eyeX, camera.eyeY,
+                    camera.eyeZ, r.dirX[ray], r.dirY[ray], r.dirZ[ray], hits);
             r.radianceR[ray] = radiance.r;
             r.radianceG[ray] = radiance.g;
             r.radianceB[ray] = radiance.b;
