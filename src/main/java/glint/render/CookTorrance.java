@@ -32,7 +32,7 @@ final class CookTorrance implements ShadingModel {
         sum.set(0, 0, 0);
         for (int i = 0; i < lights.count(); i++) {
             double cosLight = lights.sample(i, s.px, s.py, s.pz, s.nx, s.ny, s.nz, light);
-            if (cosLight > 0 && it.transmittance(s, light) > 0) {
+            if (cosLight > 0 && it.transmittance(s, light, i) > 0) {
                 sum.r += light.irradianceR * cosLight;
                 sum.g += light.irradianceG * cosLight;
                 sum.b += light.irradianceB * cosLight;
@@ -58,7 +58,7 @@ final class CookTorrance implements ShadingModel {
             Lights lights = it.lights;
             for (int i = 0; i < lights.count(); i++) {
                 double cosLight = lights.sample(i, s.px, s.py, s.pz, s.nx, s.ny, s.nz, light);
-                if (cosLight > 0 && it.transmittance(s, light) > 0) {
+                if (cosLight > 0 && it.transmittance(s, light, i) > 0) {
                     Bsdf.addConductorHighlight(m, material, s, light, cosLight, dx, dy, dz, sum);
                 }
             }

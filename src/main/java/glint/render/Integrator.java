@@ -18,9 +18,9 @@ import glint.shading.Surface;
 /**
  * One render thread's Whitted tracer: follows a ray to its nearest hit, describes the surface
  * there and lets the shading model send radiance back, tracing reflected and refracted rays by
- * recursion. Every ray asks the scene's one {@link Aggregate}. Its scratch values live in one
- * {@link PathVertex} a level, so nothing is allocated per ray. All vectors are world space,
- * directions unit length.
+ * recursion. Every ray asks the scene's one {@link Aggregate}, but a shadow ray the one chosen for
+ * its light. Its scratch values live in one {@link PathVertex} a level, so nothing is allocated per
+ * ray. All vectors are world space, directions unit length.
  */
 final class Integrator {
 
@@ -29,6 +29,8 @@ final class Integrator {
 
     private RenderScene scene;
     private Aggregate aggregate;
+    /** Per light: the aggregate its shadow rays ask. */
+    private Aggregate[] shadowAggregate;
     private Primitives primitives;
     private ShadingModel model;
     private TraversalStack stack;
@@ -55,6 +57,7 @@ final class Integrator {
         }
         scene = renderScene;
         aggregate = renderScene.aggregate;
+        shadowAggregate = renderScene.shadowAggregate;
         primitives = aggregate.primitives();
         RenderSettings settings = renderScene.settings;
         model = settings.shading() == Shading.PHONG ? PHONG : COOK_TORRANCE;
@@ -176,12 +179,12 @@ final class Integrator {
     }
 
     /**
-     * The fraction of the sampled light that reaches surface s: a shadow ray from s towards the
-     * light, up to it, through the scene's shadow pass of each primitive it meets.
+     * The fraction of light i, sampled as {@code light}, that reaches surface s: a shadow ray from s
+     * towards the light, up to it, through the scene's shadow pass of each primitive it meets.
      */
-    double transmittance(Surface s, LightSample light) {
+    double transmittance(Surface s, LightSample light, int i) {
         rays++;
-        return aggregate.transmittance(s.nearX(), s.nearY(), s.nearZ(), light.dirX, light.dirY, light.dirZ,
+        return shadowAggregate[i].transmittance(s.nearX(), s.nearY(), s.nearZ(), light.dirX, light.dirY, light.dirZ,
                 light.distance, s.skipNear, scene.shadowPass, stack);
     }
 

@@ -30,7 +30,7 @@ final class Phong implements ShadingModel {
             if (!(cosLight > 0)) { // NaN too: no light from an undefined direction
                 continue;
             }
-            double pass = it.transmittance(s, light);
+            double pass = it.transmittance(s, light, i);
             if (pass == 0) {
                 continue;
             }

@@ -30,6 +30,11 @@ public final class RenderScene {
     final RenderSettings settings;
     final Primitives primitives;
     final Aggregate aggregate;
+    /**
+     * Per light: the aggregate its shadow rays ask ({@link AggregatePolicy#forPointLight} for a
+     * point light when the policy chose the scene's aggregate; the scene's aggregate otherwise).
+     */
+    final Aggregate[] shadowAggregate;
     /** Per primitive: its material's number. */
     final int[] materialOf;
     final Materials materials;
@@ -44,7 +49,8 @@ public final class RenderScene {
     /** The camera, world space. */
     final CameraBasis camera;
 
-    private RenderScene(Scene scene, RenderSettings settings, Function<Primitives, Aggregate> aggregateOf) {
+    private RenderScene(Scene scene, RenderSettings settings, Function<Primitives, Aggregate> aggregateOf,
+                        boolean lightCells) {
         this.settings = settings;
         List<Material> materialList = new ArrayList<>();
         List<SceneObject> spheres = new ArrayList<>(), planes = new ArrayList<>();
@@ -77,6 +83,11 @@ public final class RenderScene {
             shadowPass[p] = materials.type(m) == MaterialType.GLASS ? materials.kt(m) : 0;
         }
         lights = new Lights(scene.lights());
+        shadowAggregate = new Aggregate[lights.count()];
+        for (int i = 0, points = 0; i < shadowAggregate.length; i++) {
+            shadowAggregate[i] = lightCells && lights.isPoint(i) ? AggregatePolicy.forPointLight(aggregate, points++,
+                    lights.position(i, 0), lights.position(i, 1), lights.position(i, 2)) : aggregate;
+        }
         backgroundR = scene.background().x();
         backgroundG = scene.background().y();
         backgroundB = scene.background().z();
@@ -91,6 +102,7 @@ public final class RenderScene {
         settings = base.settings;
         primitives = base.primitives;
         aggregate = base.aggregate;
+        shadowAggregate = base.shadowAggregate;
         materialOf = base.materialOf;
         materials = base.materials;
         lights = base.lights;
@@ -106,12 +118,15 @@ public final class RenderScene {
 
     /** Compiles an immutable scene with the given settings. */
     public static RenderScene compile(Scene scene, RenderSettings settings) {
-        return new RenderScene(scene, settings, AggregatePolicy::choose);
+        return new RenderScene(scene, settings, AggregatePolicy::choose, true);
     }
 
-    /** Compiles a scene whose rays search the aggregate {@code aggregateOf} builds, whatever the policy would choose. */
+    /**
+     * Compiles a scene whose rays, shadow rays too, search the aggregate {@code aggregateOf} builds,
+     * whatever the policy would choose.
+     */
     static RenderScene compile(Scene scene, RenderSettings settings, Function<Primitives, Aggregate> aggregateOf) {
-        return new RenderScene(scene, settings, aggregateOf);
+        return new RenderScene(scene, settings, aggregateOf, false);
     }
 
     /**

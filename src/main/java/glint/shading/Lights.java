@@ -35,6 +35,16 @@ public final class Lights {
         return count;
     }
 
+    /** Whether light i is a point light (else a directional one). */
+    public boolean isPoint(int i) {
+        return isPoint[i];
+    }
+
+    /** Coordinate {@code axis} (0 to 2) of point light i's position. */
+    public double position(int i, int axis) {
+        return vector[3 * i + axis];
+    }
+
     /**
      * Light i seen from surface point p of unit normal n, into {@code out}; returns n.l, the cosine
      * at the surface, or 0 (leaving {@code out} alone) for a point light at p itself.

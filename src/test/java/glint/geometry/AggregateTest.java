@@ -225,6 +225,114 @@ class AggregateTest {
         assertTrue(throughCells > 40_000, "rays through cells: " + throughCells);
     }
 
+    /**
+     * Shadow rays towards a point light as a surface sends them: from a random point on a sphere or
+     * plane, offset along the normal facing the light, straight to the light, skipping the primitive
+     * where a surface would. Through a light's cells (8, 16 or 32 a side, caps from 1, where most
+     * cells overflow, to 40) the light passed is what testing every primitive passes: with the spawn
+     * offset (answered from the cells), with an offset far beyond the reach (searched), with lights
+     * inside a sphere, and for rays whose end is nowhere near the light.
+     */
+    @Test
+    void aShadowRayThroughALightsCellsPassesWhatBruteForcePasses() {
+        SplittableRandom random = new SplittableRandom(SEED + 7);
+        int[] sides = {8, 16, 32};
+        int throughCells = 0, offsetTooFar = 0, overflowing = 0, insideASphere = 0;
+        Hit a = new Hit(), b = new Hit();
+        for (int scene = 0; scene < 40; scene++) {
+            Primitives primitives = randomScene(random, 1 + random.nextInt(scene % 4 == 0 ? 300 : 40),
+                    1 + random.nextInt(2));
+            FlatList truth = new FlatList(primitives);
+            TraversalStack stack = truth.newStack();
+            Shape spheres = primitives.kind(0);
+            double[] ball = new double[4];
+            double[] pass = passes(random, primitives.count());
+            for (int light = 0; light < 4; light++) {
+                double[] l = {random.nextDouble(-15, 15), random.nextDouble(-15, 15), random.nextDouble(-15, 15)};
+                if (light == 3) { // inside a sphere
+                    spheres.boundingBall(random.nextInt(spheres.count()), ball);
+                    double[] e = unit(random.nextDouble(-1, 1), random.nextDouble(-1, 1), random.nextDouble(-1, 1));
+                    double at = random.nextDouble(0, 0.99) * ball[3];
+                    l = new double[] {ball[0] + at * e[0], ball[1] + at * e[1], ball[2] + at * e[2]};
+                }
+                int cap = random.nextInt(4) == 0 ? 1 + random.nextInt(3) : 1 + random.nextInt(40);
+                Aggregate cells = LightCells.around(truth, l[0], l[1], l[2], sides[random.nextInt(3)], cap);
+                double reach = LightCells.OFFSET * Math.max(1, Math.sqrt(l[0] * l[0] + l[1] * l[1] + l[2] * l[2]));
+                for (int i = 0; i < 500; i++) {
+                    double[] p = new double[3], n = new double[3];
+                    int skip = surfacePoint(random, primitives, l, p, n);
+                    double lx = l[0] - p[0], ly = l[1] - p[1], lz = l[2] - p[2];
+                    double tMax = Math.sqrt(lx * lx + ly * ly + lz * lz);
+                    double[] d = {lx / tMax, ly / tMax, lz / tMax};
+                    double epsilon = i % 10 == 0 ? random.nextDouble(1e-5, 1e-2) : random.nextDouble(0, 1e-8);
+                    double off = epsilon * Math.max(1, Math.sqrt(p[0] * p[0] + p[1] * p[1] + p[2] * p[2]));
+                    double ox = p[0] + off * n[0], oy = p[1] + off * n[1], oz = p[2] + off * n[2];
+                    if (i % 25 == 0) { // any ray, its end anywhere
+                        tMax = random.nextDouble(0.1, 40);
+                        d = unit(random.nextDouble(-1, 1), random.nextDouble(-1, 1), random.nextDouble(-1, 1));
+                    }
+                    double passB = truth.transmittance(ox, oy, oz, d[0], d[1], d[2], tMax, skip, pass, stack);
+                    String what = "scene " + scene + ", light " + light + ", ray " + i;
+                    assertEquals(passB, cells.transmittance(ox, oy, oz, d[0], d[1], d[2], tMax, skip, pass, stack),
+                            1e-14 * passB, what);
+                    boolean found = truth.nearest(ox, oy, oz, d[0], d[1], d[2], tMax, skip, Hit.NONE, b, stack);
+                    assertEquals(found, cells.nearest(ox, oy, oz, d[0], d[1], d[2], tMax, skip, Hit.NONE, a, stack));
+                    if (found) {
+                        assertEquals(b.primitive, a.primitive, what);
+                        assertEquals(b.t, a.t, 0, what);
+                    }
+                    double ex = ox + tMax * d[0] - l[0], ey = oy + tMax * d[1] - l[1], ez = oz + tMax * d[2] - l[2];
+                    boolean withinReach = ex * ex + ey * ey + ez * ez <= reach * reach;
+                    boolean used = cells instanceof LightCells c && c.usesCells(ox, oy, oz, d[0], d[1], d[2], tMax);
+                    assertTrue(withinReach || !used, "a ray ending out of reach is searched: " + what);
+                    throughCells += used ? 1 : 0;
+                    offsetTooFar += off > 2 * reach && i % 25 != 0 ? 1 : 0;
+                    overflowing += withinReach && !used ? 1 : 0;
+                    insideASphere += light == 3 && used ? 1 : 0;
+                }
+            }
+        }
+        assertTrue(throughCells > 30_000 && offsetTooFar > 4_000 && overflowing > 5_000 && insideASphere > 5_000,
+                "through cells " + throughCells + ", offset beyond reach " + offsetTooFar + ", in overflowing cells "
+                        + overflowing + ", from a light inside a sphere " + insideASphere);
+    }
+
+    /**
+     * A random point p on a random primitive of the scene lit by the light at l, its unit normal n
+     * facing the light, and the primitive a shadow ray from it skips: a plane's always, a sphere's
+     * when p is on its outer side ({@link Hit#NONE} from the inside of a sphere around the light).
+     */
+    private static int surfacePoint(SplittableRandom random, Primitives primitives, double[] l, double[] p,
+                                    double[] n) {
+        int q = random.nextInt(primitives.count());
+        Shape kind = primitives.kind(primitives.kindOf(q));
+        int index = primitives.indexOf(q);
+        double[] outward;
+        if (kind instanceof Spheres) {
+            double[] ball = new double[4];
+            kind.boundingBall(index, ball);
+            outward = unit(random.nextDouble(-1, 1), random.nextDouble(-1, 1), random.nextDouble(-1, 1));
+            for (int k = 0; k < 3; k++) {
+                p[k] = ball[k] + ball[3] * outward[k];
+            }
+        } else {
+            Hit hit = new Hit(); // the point of the plane nearest a random point
+            primitives.record(hit, q, 0);
+            primitives.describe(hit, random.nextDouble(-15, 15), random.nextDouble(-15, 15), random.nextDouble(-15, 15),
+                    1, 0, 0);
+            p[0] = hit.px;
+            p[1] = hit.py;
+            p[2] = hit.pz;
+            outward = new double[] {hit.nx, hit.ny, hit.nz};
+        }
+        double facing = (l[0] - p[0]) * outward[0] + (l[1] - p[1]) * outward[1] + (l[2] - p[2]) * outward[2];
+        double sign = facing >= 0 ? 1 : -1;
+        for (int k = 0; k < 3; k++) {
+            n[k] = sign * outward[k];
+        }
+        return kind instanceof Spheres && sign < 0 ? Hit.NONE : q;
+    }
+
     @Test
     void raysInsideAFrustumFindAmongItsGatheredPrimitivesWhatTheSearchFinds() {
         SplittableRandom random = new SplittableRandom(SEED + 5);

@@ -8,15 +8,18 @@ import glint.config.Shading;
 import glint.geometry.AggregatePolicy;
 import glint.geometry.Bvh;
 import glint.geometry.FlatList;
+import glint.geometry.LightCells;
 import glint.geometry.Primitives;
 import glint.scene.Scene;
 import java.util.Random;
 import java.util.function.Function;
+import org.junit.jupiter.api.Assertions;
 import org.junit.jupiter.api.Test;
 
 /**
- * Every ray asks one aggregate, so an image does not depend on which one: rendered through the
- * hierarchy and through brute force, seeded random scenes give the same pixels.
+ * An image does not depend on which aggregate its rays ask: rendered through the hierarchy, through
+ * brute force and through what the policy chooses (shadow rays towards a point light through its
+ * direction cells), seeded random scenes give the same pixels.
  */
 class AggregateRenderTest {
 
@@ -30,7 +33,7 @@ class AggregateRenderTest {
             Shading shading = i % 4 == 3 ? Shading.PHONG : Shading.COOK_TORRANCE;
             float[] brute = render(scene, shading, FlatList::new);
             float[] hierarchy = render(scene, shading, p -> new Bvh(p, 2));
-            float[] chosen = render(scene, shading, AggregatePolicy::choose);
+            float[] chosen = render(scene, shading, null);
             assertSame(shading, brute, hierarchy, "scene " + i + " through the hierarchy");
             assertSame(shading, brute, chosen, "scene " + i + " through the aggregate the policy chose");
         }
@@ -53,9 +56,51 @@ class AggregateRenderTest {
                 """);
         for (Shading shading : Shading.values()) {
             float[] brute = render(scene, shading, FlatList::new, 0.05);
-            float[] chosen = render(scene, shading, AggregatePolicy::choose, 0.05);
+            float[] chosen = render(scene, shading, null, 0.05);
             assertSame(shading, brute, chosen, shading + ", offset 0.05 against a sphere 0.04 across");
         }
+    }
+
+    /**
+     * A point light's shadow rays ask its direction cells in front of the scene's aggregate; a
+     * directional light's, those of the point lights past the first few, and every light's in a scene
+     * of more primitives than the policy gives cells, ask the scene's aggregate.
+     */
+    @Test
+    void shadowRaysAskTheAggregateChosenForTheirLight() {
+        String camera = "camera: {position: [0, 1, -6], look_at: [0, 1, 0], fov: 50}\n";
+        String lights = """
+                lights:
+                  - {type: point, position: [-5, 8, -6], intensity: 100}
+                  - {type: directional, direction: [1, -1, 0.5], intensity: 1}
+                """;
+        String floor = "objects:\n  - {type: plane, point: [0, 0, 0], normal: [0, 1, 0]}\n";
+        RenderSettings settings = new RenderSettings(Shading.COOK_TORRANCE, 6, 0, Renders.EPSILON);
+        RenderScene small = RenderScene.compile(Renders.scene(camera + lights + floor + spheres(3)), settings);
+        assertTrue(small.shadowAggregate[0] instanceof LightCells, small.shadowAggregate[0].toString());
+        Assertions.assertSame(small.aggregate, small.shadowAggregate[1]);
+        int most = AggregatePolicy.MOST_LIGHT_CELL_PRIMITIVES;
+        RenderScene large = RenderScene.compile(Renders.scene(camera + lights + floor + spheres(most)), settings);
+        Assertions.assertSame(large.aggregate, large.shadowAggregate[0], "a plane and " + most + " spheres");
+        Assertions.assertSame(large.aggregate, large.shadowAggregate[1]);
+        StringBuilder many = new StringBuilder("lights:\n");
+        for (int i = 0; i <= AggregatePolicy.MOST_CELL_LIGHTS; i++) {
+            many.append("  - {type: point, position: [").append(i).append(", 8, -6], intensity: 10}\n");
+        }
+        RenderScene crowded = RenderScene.compile(Renders.scene(camera + many + floor + spheres(3)), settings);
+        for (int i = 0; i < AggregatePolicy.MOST_CELL_LIGHTS; i++) {
+            assertTrue(crowded.shadowAggregate[i] instanceof LightCells, "point light " + i);
+        }
+        Assertions.assertSame(crowded.aggregate, crowded.shadowAggregate[AggregatePolicy.MOST_CELL_LIGHTS]);
+    }
+
+    /** Objects lines for n spheres in a row along x. */
+    private static String spheres(int n) {
+        StringBuilder yaml = new StringBuilder();
+        for (int i = 0; i < n; i++) {
+            yaml.append("  - {type: sphere, center: [").append(i).append(", 1, 0], radius: 0.4}\n");
+        }
+        return yaml.toString();
     }
 
     /**
@@ -74,9 +119,12 @@ class AggregateRenderTest {
         return render(scene, shading, of, Renders.EPSILON);
     }
 
+    /** Rendered through the aggregate {@code of} builds, or with null through what the policy chooses. */
     private static float[] render(Scene scene, Shading shading, Function<Primitives, glint.geometry.Aggregate> of,
                                   double epsilon) {
-        RenderScene compiled = RenderScene.compile(scene, new RenderSettings(shading, 6, 0, epsilon), of);
+        RenderSettings settings = new RenderSettings(shading, 6, 0, epsilon);
+        RenderScene compiled = of == null ? RenderScene.compile(scene, settings)
+                : RenderScene.compile(scene, settings, of);
         FrameBuffer frame = new FrameBuffer(48, 36);
         try (Tracer tracer = new Tracer(2)) {
             tracer.render(compiled, frame, 4, 0, 3);

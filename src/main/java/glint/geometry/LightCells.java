@@ -1,0 +1,75 @@
+package glint.geometry;
+
+/**
+ * A filter in front of another aggregate for shadow rays towards one point light L: a cube map of
+ * direction cells around L lists the bounded primitives a ray starting within the ball (L, reach),
+ * travelling in a direction of the cell, could meet. A shadow ray from o along d up to tMax whose
+ * end o + tMax d lies in that ball is that ray run backwards (from its end along -d), so it tests
+ * the unbounded primitives and the list of the cell of -d instead of searching. A surface's shadow
+ * ray ends within its spawn offset of L (it starts at p + offset n with tMax = |L - p|), so the
+ * reach covers that offset; a ray ending farther off, or whose cell would list more than its cap,
+ * is searched as usual (checked per ray). Nearest-hit queries go straight to the aggregate behind.
+ */
+public final class LightCells extends CellFilter {
+
+    /**
+     * The reach, relative to max(1, |L|): a spawned ray starts epsilon x max(1, |p|) off the surface
+     * (epsilon 1e-9 by default), so with the default epsilon every surface point up to a thousand
+     * times max(1, |L|) from the origin ends its shadow ray within reach.
+     */
+    static final double OFFSET = 1e-6;
+
+    private final double lx, ly, lz, reach2;
+
+    private LightCells(Aggregate searched, CellMaps maps, double lx, double ly, double lz, double reach) {
+        super(searched, maps);
+        this.lx = lx;
+        this.ly = ly;
+        this.lz = lz;
+        this.reach2 = reach * reach;
+    }
+
+    /**
+     * The filter for shadow rays towards the point light at (lx, ly, lz), of k x k cells a cube
+     * face listing at most {@code cap} primitives each, in front of {@code searched}; or
+     * {@code searched} itself when every cell would fall back.
+     */
+    public static Aggregate around(Aggregate searched, double lx, double ly, double lz, int k, int cap) {
+        CellMaps maps = new CellMaps(searched.primitives(), k, cap);
+        double reach = OFFSET * Math.max(1, Math.sqrt(lx * lx + ly * ly + lz * lz));
+        return maps.add(lx, ly, lz, reach, Hit.NONE) < 0 ? searched
+                : new LightCells(searched, maps, lx, ly, lz, reach);
+    }
+
+    /** Whether this shadow ray is answered from a cell's list (not searched). */
+    boolean usesCells(double ox, double oy, double oz, double dx, double dy, double dz, double tMax) {
+        return listing(ox, oy, oz, dx, dy, dz, tMax) >= 0;
+    }
+
+    /** The listing of the cell of -d when the ray ends within reach of the light, else -1. */
+    private int listing(double ox, double oy, double oz, double dx, double dy, double dz, double tMax) {
+        double ex = ox + tMax * dx - lx, ey = oy + tMax * dy - ly, ez = oz + tMax * dz - lz;
+        return ex * ex + ey * ey + ez * ez <= reach2 ? cell[cellOf(-dx, -dy, -dz)] : -1;
+    }
+
+    @Override
+    public boolean nearest(double ox, double oy, double oz, double dx, double dy, double dz, double tMax, int skip,
+                           int inside, Hit hit, TraversalStack stack) {
+        return searched.nearest(ox, oy, oz, dx, dy, dz, tMax, skip, inside, hit, stack);
+    }
+
+    @Override
+    public double transmittance(double ox, double oy, double oz, double dx, double dy, double dz, double tMax,
+                                int skip, double[] pass, TraversalStack stack) {
+        int listing = listing(ox, oy, oz, dx, dy, dz, tMax);
+        if (listing >= 0) {
+            return transmittanceListed(ox, oy, oz, dx, dy, dz, tMax, skip, listing, pass);
+        }
+        return searched.transmittance(ox, oy, oz, dx, dy, dz, tMax, skip, pass, stack);
+    }
+
+    @Override
+    public String toString() {
+        return "LightCells[light (" + lx + ", " + ly + ", " + lz + "), " + cellCounts() + "] in front of " + searched;
+    }
+}
