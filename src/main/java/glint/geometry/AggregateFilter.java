@@ -1,9 +1,9 @@
 package glint.geometry;
 
 /**
- * An aggregate in front of another that answers some nearest-hit queries itself and hands every
- * other question to the one it filters: the shape of {@link EmptyInteriors} and
- * {@link LeavingCells}.
+ * An aggregate in front of another that answers some queries itself (nearest hits for
+ * {@link EmptyInteriors} and {@link LeavingCells}, shadow rays for {@link LightCells}) and hands
+ * every other question to the one it filters.
  */
 abstract class AggregateFilter implements Aggregate {
 

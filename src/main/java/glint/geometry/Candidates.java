@@ -2,8 +2,9 @@ package glint.geometry;
 
 /**
  * Scratch value: the primitives a set of rays may meet, gathered once by
- * {@link Aggregate#gather} (say for a row of camera rays) and then searched ray by ray. Searching
- * them finds the same hit as the aggregate does for every ray of the set.
+ * {@link Aggregate#gather} (say for a row of camera rays) and then searched for all the rays at
+ * once, primitive by primitive. Searching them finds the same hit as the aggregate does for every
+ * ray of the set.
  */
 public final class Candidates {
 
@@ -31,8 +32,8 @@ public final class Candidates {
     /**
      * The nearest hits among the gathered primitives of the rays r in [0, n) from the common
      * origin o along (dx[r], dy[r], dz[r]): nearestT[r] and nearestPrimitive[r] become the distance
-     * and number of each ray's nearest hit, or {@link Intersect#MISS} and {@link Hit#NONE}. The same
-     * hits as {@link #nearest} ray by ray, found primitive by primitive.
+     * and number of each ray's nearest hit, or {@link Intersect#MISS} and {@link Hit#NONE}; where two
+     * are met at the same distance, the one gathered first.
      */
     public void nearestFromOrigin(Primitives p, double ox, double oy, double oz, double[] dx, double[] dy,
                                   double[] dz, int n, double[] nearestT, int[] nearestPrimitive) {

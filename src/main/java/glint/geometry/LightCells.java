@@ -18,8 +18,16 @@ public final class LightCells extends CellFilter {
      * times max(1, |L|) from the origin ends its shadow ray within reach.
      */
     static final double OFFSET = 1e-6;
+    /**
+     * The longest shadow ray the cells answer, relative to the reach: the ray's end, computed in
+     * doubles, is then off by well under a thousandth of the reach (a few rounding steps of
+     * |o| + tMax), which the cells, worked out for twice the reach, cover. A longer ray could have its
+     * computed end within reach while the ray itself passes far from the light; it is searched.
+     * With the default epsilon every surface that can use the cells is this close anyway.
+     */
+    static final double LONGEST = 1e9;
 
-    private final double lx, ly, lz, reach2;
+    private final double lx, ly, lz, reach2, longest;
 
     private LightCells(Aggregate searched, CellMaps maps, double lx, double ly, double lz, double reach) {
         super(searched, maps);
@@ -27,6 +35,7 @@ public final class LightCells extends CellFilter {
         this.ly = ly;
         this.lz = lz;
         this.reach2 = reach * reach;
+        this.longest = LONGEST * reach;
     }
 
     /**
@@ -37,7 +46,7 @@ public final class LightCells extends CellFilter {
     public static Aggregate around(Aggregate searched, double lx, double ly, double lz, int k, int cap) {
         CellMaps maps = new CellMaps(searched.primitives(), k, cap);
         double reach = OFFSET * Math.max(1, Math.sqrt(lx * lx + ly * ly + lz * lz));
-        return maps.add(lx, ly, lz, reach, Hit.NONE) < 0 ? searched
+        return maps.add(lx, ly, lz, 2 * reach, Hit.NONE) < 0 ? searched
                 : new LightCells(searched, maps, lx, ly, lz, reach);
     }
 
@@ -46,10 +55,13 @@ public final class LightCells extends CellFilter {
         return listing(ox, oy, oz, dx, dy, dz, tMax) >= 0;
     }
 
-    /** The listing of the cell of -d when the ray ends within reach of the light, else -1. */
+    /**
+     * The listing of the cell of -d when the ray is at most {@link #LONGEST} reaches long and ends
+     * within reach of the light, else -1.
+     */
     private int listing(double ox, double oy, double oz, double dx, double dy, double dz, double tMax) {
         double ex = ox + tMax * dx - lx, ey = oy + tMax * dy - ly, ez = oz + tMax * dz - lz;
-        return ex * ex + ey * ey + ez * ez <= reach2 ? cell[cellOf(-dx, -dy, -dz)] : -1;
+        return tMax <= longest && ex * ex + ey * ey + ez * ez <= reach2 ? cell[cellOf(-dx, -dy, -dz)] : -1;
     }
 
     @Override
