@@ -1,5 +1,7 @@
 package glint.geometry;
 
+import java.util.Arrays;
+
 /**
  * Scratch value: the primitives a set of rays may meet, gathered once by
  * {@link Aggregate#gather} (say for a row of camera rays) and then searched for all the rays at
@@ -24,7 +26,7 @@ public final class Candidates {
 
     void add(int primitive) {
         if (count == primitives.length) {
-            primitives = java.util.Arrays.copyOf(primitives, 2 * count);
+            primitives = Arrays.copyOf(primitives, 2 * count);
         }
         primitives[count++] = primitive;
     }
@@ -37,8 +39,8 @@ public final class Candidates {
      */
     public void nearestFromOrigin(Primitives p, double ox, double oy, double oz, double[] dx, double[] dy,
                                   double[] dz, int n, double[] nearestT, int[] nearestPrimitive) {
-        java.util.Arrays.fill(nearestT, 0, n, Intersect.MISS);
-        java.util.Arrays.fill(nearestPrimitive, 0, n, Hit.NONE);
+        Arrays.fill(nearestT, 0, n, Intersect.MISS);
+        Arrays.fill(nearestPrimitive, 0, n, Hit.NONE);
         for (int i = 0; i < count; i++) {
             p.nearestFromOrigin(primitives[i], ox, oy, oz, dx, dy, dz, n, nearestT, nearestPrimitive);
         }
