@@ -37,12 +37,8 @@ public final class Bvh implements Aggregate {
         this.depth = builder.depth();
         this.leafPrimitives = builder.order();
         this.unbounded = builder.unbounded();
-        this.leafKind = new Shape[leafPrimitives.length];
-        this.leafIndex = new int[leafPrimitives.length];
-        for (int slot = 0; slot < leafPrimitives.length; slot++) {
-            leafKind[slot] = primitives.kind(primitives.kindOf(leafPrimitives[slot]));
-            leafIndex[slot] = primitives.indexOf(leafPrimitives[slot]);
-        }
+        this.leafKind = primitives.kindsOf(leafPrimitives);
+        this.leafIndex = primitives.indicesOf(leafPrimitives);
     }
 
     /** Levels below the root on the longest path to a leaf: a traversal keeps at most this many nodes waiting. */

@@ -16,8 +16,9 @@ abstract class CellFilter extends AggregateFilter {
     private final int k;
     /** Per cell, its listing ({@link CellMaps#cell}): first slot and count, or -1: fall back. */
     final int[] cell;
-    /** The cells' lists of primitive numbers. */
-    private final int[] listed;
+    /** The cells' lists of primitive numbers, and per slot the primitive's kind and index within it. */
+    private final int[] listed, listedIndex;
+    private final Shape[] listedKind;
     private final int[] unbounded, unboundedIndex;
     private final Shape[] unboundedKind;
 
@@ -26,6 +27,8 @@ abstract class CellFilter extends AggregateFilter {
         this.k = maps.k;
         this.cell = Arrays.copyOf(maps.cell, maps.cells);
         this.listed = Arrays.copyOf(maps.listed, maps.slots);
+        this.listedKind = primitives.kindsOf(listed);
+        this.listedIndex = primitives.indicesOf(listed);
         int n = 0;
         int[] u = new int[primitives.count()];
         for (int q = 0; q < primitives.count(); q++) {
@@ -34,12 +37,8 @@ abstract class CellFilter extends AggregateFilter {
             }
         }
         this.unbounded = Arrays.copyOf(u, n);
-        this.unboundedKind = new Shape[n];
-        this.unboundedIndex = new int[n];
-        for (int i = 0; i < n; i++) {
-            unboundedKind[i] = primitives.kind(primitives.kindOf(unbounded[i]));
-            unboundedIndex[i] = primitives.indexOf(unbounded[i]);
-        }
+        this.unboundedKind = primitives.kindsOf(unbounded);
+        this.unboundedIndex = primitives.indicesOf(unbounded);
     }
 
     /**
@@ -60,7 +59,7 @@ abstract class CellFilter extends AggregateFilter {
             }
         }
         for (int slot = listing >>> CellMaps.COUNT_BITS, end = slot + (listing & COUNT_MASK); slot < end; slot++) {
-            double t = primitives.intersect(listed[slot], ox, oy, oz, dx, dy, dz, nearest);
+            double t = listedKind[slot].intersect(listedIndex[slot], ox, oy, oz, dx, dy, dz, nearest);
             if (t < nearest) {
                 nearest = t;
                 found = listed[slot];
@@ -92,7 +91,7 @@ abstract class CellFilter extends AggregateFilter {
         }
         for (int slot = listing >>> CellMaps.COUNT_BITS, end = slot + (listing & COUNT_MASK); slot < end; slot++) {
             int q = listed[slot];
-            if (q != skip && primitives.intersect(q, ox, oy, oz, dx, dy, dz, tMax) < tMax) {
+            if (q != skip && listedKind[slot].intersect(listedIndex[slot], ox, oy, oz, dx, dy, dz, tMax) < tMax) {
                 passed *= pass[q];
                 if (passed == 0) {
                     return 0;

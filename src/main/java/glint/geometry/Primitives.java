@@ -67,6 +67,27 @@ public final class Primitives {
         return indexOf[primitive];
     }
 
+    /**
+     * The kind of each primitive of a list of numbers: a structure that keeps it beside the list
+     * calls the kind straight away, rather than looking it up per test.
+     */
+    public Shape[] kindsOf(int[] numbers) {
+        Shape[] out = new Shape[numbers.length];
+        for (int i = 0; i < numbers.length; i++) {
+            out[i] = kinds[kindOf[numbers[i]]];
+        }
+        return out;
+    }
+
+    /** The index within its kind of each primitive of a list of numbers. */
+    public int[] indicesOf(int[] numbers) {
+        int[] out = new int[numbers.length];
+        for (int i = 0; i < numbers.length; i++) {
+            out[i] = indexOf[numbers[i]];
+        }
+        return out;
+    }
+
     public boolean bounded(int primitive) {
         return kinds[kindOf[primitive]].bounded(indexOf[primitive]);
     }
