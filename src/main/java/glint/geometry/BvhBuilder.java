@@ -23,17 +23,12 @@ final class BvhBuilder {
 
     BvhBuilder(Primitives primitives, int leafSize) {
         this.leafSize = leafSize;
-        int bounded = 0;
-        for (int p = 0; p < primitives.count(); p++) {
-            bounded += primitives.bounded(p) ? 1 : 0;
-        }
+        unbounded = primitives.unbounded();
+        int bounded = primitives.count() - unbounded.length;
         int[] boundedNumbers = new int[bounded];
-        unbounded = new int[primitives.count() - bounded];
-        for (int p = 0, b = 0, u = 0; p < primitives.count(); p++) {
+        for (int p = 0, b = 0; p < primitives.count(); p++) {
             if (primitives.bounded(p)) {
                 boundedNumbers[b++] = p;
-            } else {
-                unbounded[u++] = p;
             }
         }
         boxes = new double[6 * bounded];

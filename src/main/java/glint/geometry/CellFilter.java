@@ -29,14 +29,7 @@ abstract class CellFilter extends AggregateFilter {
         this.listed = Arrays.copyOf(maps.listed, maps.slots);
         this.listedKind = primitives.kindsOf(listed);
         this.listedIndex = primitives.indicesOf(listed);
-        int n = 0;
-        int[] u = new int[primitives.count()];
-        for (int q = 0; q < primitives.count(); q++) {
-            if (!primitives.bounded(q)) {
-                u[n++] = q;
-            }
-        }
-        this.unbounded = Arrays.copyOf(u, n);
+        this.unbounded = primitives.unbounded();
         this.unboundedKind = primitives.kindsOf(unbounded);
         this.unboundedIndex = primitives.indicesOf(unbounded);
     }

@@ -1,6 +1,7 @@
 package glint.geometry;
 
 import java.util.List;
+import java.util.stream.IntStream;
 
 /**
  * A scene's primitives: its shape kinds, and one number per primitive across them (kind 0's
@@ -86,6 +87,11 @@ public final class Primitives {
             out[i] = indexOf[numbers[i]];
         }
         return out;
+    }
+
+    /** The numbers of the unbounded primitives (planes), in order: every ray tests them. */
+    public int[] unbounded() {
+        return IntStream.range(0, count).filter(q -> !bounded(q)).toArray();
     }
 
     public boolean bounded(int primitive) {
