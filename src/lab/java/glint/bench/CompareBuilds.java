@@ -24,8 +24,8 @@ import java.util.regex.Pattern;
  * both builds alike, since they take turns every second or so.
  *
  * <p>Usage, from the repository root: {@code java -cp target/benchmarks.jar glint.bench.CompareBuilds
- * A.jar B.jar [--pairs N] [--threads T] [--depth D] [--size WxH] SCENE...} (default 12 pairs after 3
- * for warming up, 2 threads, depth 5, 800x600, 1 sample a pixel). Both builds must read the scene:
+ * A.jar B.jar [--pairs N] [--threads T] [--depth D] [--size WxH] [--config FILE] SCENE...} (default 12 pairs
+ * after 3 for warming up, 2 threads, depth 5, 800x600, 1 sample a pixel, ./config.properties). Both builds must read the scene:
  * older builds do not know every key of newer ones.
  */
 public final class CompareBuilds {
@@ -62,8 +62,10 @@ public final class CompareBuilds {
         String threads = option(rest, "--threads", "2");
         String depth = option(rest, "--depth", "5");
         String[] size = option(rest, "--size", "800x600").split("x");
+        String config = option(rest, "--config", null);
         if (rest.size() < 3) {
-            System.err.println("usage: CompareBuilds A.jar B.jar [--pairs N] [--threads T] [--depth D] [--size WxH] SCENE...");
+            System.err.println("usage: CompareBuilds A.jar B.jar [--pairs N] [--threads T] [--depth D] [--size WxH]"
+                    + " [--config FILE] SCENE...");
             System.exit(2);
         }
         Method a = mainOf(Path.of(rest.get(0)));
@@ -71,9 +73,12 @@ public final class CompareBuilds {
         System.out.println("A = " + rest.get(0) + ", B = " + rest.get(1) + "; render CPU a frame, " + pairs
                 + " pairs, " + threads + " threads");
         for (String scene : rest.subList(2, rest.size())) {
-            String[] bench = {"--scene", scene, "--width", size[0], "--height", size[1], "--spp", "1", "--depth", depth,
-                    "--threads", threads, "--bench", String.valueOf(FRAMES_A_RUN)};
-            System.out.println(compare(scene, a, b, bench, pairs).line());
+            List<String> bench = new ArrayList<>(List.of("--scene", scene, "--width", size[0], "--height", size[1],
+                    "--spp", "1", "--depth", depth, "--threads", threads, "--bench", String.valueOf(FRAMES_A_RUN)));
+            if (config != null) {
+                bench.addAll(List.of("--config", config));
+            }
+            System.out.println(compare(scene, a, b, bench.toArray(new String[0]), pairs).line());
         }
     }
 

@@ -36,6 +36,15 @@ public interface Aggregate {
      */
     void gather(Frustum frustum, Candidates out, TraversalStack stack);
 
+    /**
+     * Whether closed primitive p has an inside nothing else reaches into, so that a ray inside it
+     * meets only p's far side (found once, when the aggregate is built); false where the
+     * aggregate does not know.
+     */
+    default boolean emptyInside(int p) {
+        return false;
+    }
+
     /** The primitives it searches. */
     Primitives primitives();
 

@@ -28,6 +28,11 @@ abstract class AggregateFilter implements Aggregate {
     }
 
     @Override
+    public boolean emptyInside(int p) {
+        return searched.emptyInside(p);
+    }
+
+    @Override
     public Primitives primitives() {
         return primitives;
     }

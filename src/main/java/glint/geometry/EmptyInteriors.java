@@ -32,7 +32,8 @@ public final class EmptyInteriors extends AggregateFilter {
     }
 
     /** Whether primitive p is closed and nothing else reaches into it. */
-    public boolean isEmpty(int p) {
+    @Override
+    public boolean emptyInside(int p) {
         return empty[p];
     }
 

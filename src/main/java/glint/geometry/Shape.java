@@ -51,6 +51,21 @@ public interface Shape {
     void surfaceAt(int i, double px, double py, double pz, Hit hit);
 
     /**
+     * Where a ray inside primitive i meets its surface again, for a kind that knows it in closed
+     * form: the ray leaves surface point p along unit u into the primitive, at cosine
+     * {@code cosInside} to the inward normal there, and rays leaving the surface start
+     * {@code offset} off it. Writes to {@code end} the chord's length (t), the point where it ends
+     * and the unit outward normal there, and returns the cosine between u and that normal; returns
+     * NaN, leaving {@code end} alone, where the kind has no closed form or the primitive is too small
+     * for an offset ray to start inside it (the caller then searches as for any ray). Asked only of
+     * closed kinds, for primitives nothing else reaches into.
+     */
+    default double chordInside(int i, double px, double py, double pz, double ux, double uy, double uz,
+                               double cosInside, double offset, Hit end) {
+        return Double.NaN;
+    }
+
+    /**
      * Writes a ball that holds primitive i (centre x, y, z, radius) to {@code ball}; asked only of
      * closed kinds, whose inside it must hold.
      */

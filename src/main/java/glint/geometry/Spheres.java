@@ -5,6 +5,8 @@ public final class Spheres implements Shape {
 
     private final double[] data;
     private final int count;
+    /** 1 / radius of each sphere. */
+    private final double[] inverseRadii;
 
     /** @param data centre x, y, z and radius of each sphere (copied) */
     public Spheres(double[] data) {
@@ -13,6 +15,10 @@ public final class Spheres implements Shape {
         }
         this.data = data.clone();
         this.count = data.length / 4;
+        this.inverseRadii = new double[count];
+        for (int i = 0; i < count; i++) {
+            inverseRadii[i] = 1 / data[4 * i + 3];
+        }
     }
 
     @Override
@@ -86,6 +92,31 @@ public final class Spheres implements Shape {
         hit.px = cx + radius * hit.nx;
         hit.py = cy + radius * hit.ny;
         hit.pz = cz + radius * hit.nz;
+    }
+
+    /**
+     * A chord of a sphere is 2 r cos long and meets the sphere at its far end at the same angle as
+     * at its near end, so every bounce inside it meets the surface at the same cosine.
+     */
+    @Override
+    public double chordInside(int i, double px, double py, double pz, double ux, double uy, double uz,
+                              double cosInside, double offset, Hit end) {
+        int k = 4 * i;
+        double radius = data[k + 3];
+        if (!(radius > offset)) {
+            return Double.NaN;
+        }
+        double chord = 2 * radius * cosInside;
+        double qx = px + chord * ux, qy = py + chord * uy, qz = pz + chord * uz;
+        double inverseRadius = inverseRadii[i];
+        end.t = chord;
+        end.px = qx;
+        end.py = qy;
+        end.pz = qz;
+        end.nx = (qx - data[k]) * inverseRadius;
+        end.ny = (qy - data[k + 1]) * inverseRadius;
+        end.nz = (qz - data[k + 2]) * inverseRadius;
+        return cosInside;
     }
 
     @Override

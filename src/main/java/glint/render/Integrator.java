@@ -37,6 +37,7 @@ final class Integrator {
     private PathVertex[] vertices = new PathVertex[0];
     /** Scratch: a camera ray's hit while a row's hits are found in the aggregate. */
     private final Hit cameraHit = new Hit();
+    private final InsideWalk walk = new InsideWalk(this);
 
     // the scene's settings, read once per scene rather than through the record on every ray
     double epsilon, minWeight;
@@ -215,17 +216,59 @@ final class Integrator {
     }
 
     /**
-     * Traces the ray refracted through s (eta = n_incident / n_transmitted), its origin offset to
-     * the far side; past the critical angle, the reflected one. Returns its radiance.
+     * Adds to {@code v.sum} what v's boundary (its factors from {@link ShadingModel#boundary})
+     * reflects and refracts: the reflected ray through {@link #addReflected}, then the refracted one,
+     * of path weight weight x the tint's largest channel, traced if {@link #keep} keeps it.
      */
-    Rgb traceRefracted(PathVertex v, double dx, double dy, double dz, double eta, int hitsLeft, double weight) {
+    void scatter(PathVertex v, double dx, double dy, double dz, int hitsLeft, double weight) {
+        if (hitsLeft <= 1) {
+            return;
+        }
+        Rgb sum = v.sum;
+        addReflected(v.surface, dx, dy, dz, hitsLeft, weight, v.reflect, sum);
+        double childWeight = weight * Math.max(v.transmitR, Math.max(v.transmitG, v.transmitB));
+        double keep = childWeight > 0 ? keep(childWeight) : 0;
+        if (keep > 0) {
+            Rgb refracted = traceRefracted(v, dx, dy, dz, hitsLeft, childWeight * keep);
+            sum.r += keep * v.transmitR * refracted.r;
+            sum.g += keep * v.transmitG * refracted.g;
+            sum.b += keep * v.transmitB * refracted.b;
+        }
+    }
+
+    /**
+     * Traces the ray refracted through v's surface (eta = {@code v.eta}), its origin offset to the
+     * far side; past the critical angle, the reflected one. Into a closed primitive nothing else
+     * reaches into, the ray walks its inside ({@link InsideWalk}). Returns its radiance.
+     */
+    private Rgb traceRefracted(PathVertex v, double dx, double dy, double dz, int hitsLeft, double weight) {
         Surface s = v.surface;
         double[] t = v.refracted;
-        if (Optics.refract(dx, dy, dz, s.nx, s.ny, s.nz, s.cosIncident, eta, t)) {
-            return trace(s.farX(), s.farY(), s.farZ(), t[0], t[1], t[2], hitsLeft - 1, weight, s.skipFar,
-                    s.insideFar);
+        if (!Optics.refract(dx, dy, dz, s.nx, s.ny, s.nz, s.cosIncident, v.eta, t)) {
+            return traceReflected(s, dx, dy, dz, hitsLeft, weight);
         }
-        return traceReflected(s, dx, dy, dz, hitsLeft, weight);
+        if (s.insideFar != Hit.NONE && aggregate.emptyInside(s.insideFar)) {
+            return walk.trace(s, t[0], t[1], t[2], hitsLeft - 1, weight);
+        }
+        return trace(s.farX(), s.farY(), s.farZ(), t[0], t[1], t[2], hitsLeft - 1, weight, s.skipFar, s.insideFar);
+    }
+
+    /** The scratch values of recursion level {@code hitsLeft}. */
+    PathVertex vertex(int hitsLeft) {
+        return vertices[hitsLeft];
+    }
+
+    ShadingModel model() {
+        return model;
+    }
+
+    Primitives primitives() {
+        return primitives;
+    }
+
+    /** Per primitive: its material's number. */
+    int materialOf(int primitive) {
+        return scene.materialOf[primitive];
     }
 
     double ambientR() {

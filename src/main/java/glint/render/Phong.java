@@ -4,7 +4,6 @@ import glint.shading.Bsdf;
 import glint.shading.LightSample;
 import glint.shading.Lights;
 import glint.shading.Materials;
-import glint.shading.Rgb;
 import glint.shading.Surface;
 
 /**
@@ -16,11 +15,18 @@ final class Phong implements ShadingModel {
 
     @Override
     public void shade(Integrator it, PathVertex v, double dx, double dy, double dz, int hitsLeft, double weight) {
+        direct(it, v, dx, dy, dz);
+        boundary(it, v);
+        it.scatter(v, dx, dy, dz, hitsLeft, weight);
+        v.radiance.set(v.sum.r, v.sum.g, v.sum.b);
+    }
+
+    /** Ambient, and per light the diffuse term and the highlight, through what the shadow ray passes. */
+    @Override
+    public void direct(Integrator it, PathVertex v, double dx, double dy, double dz) {
         Surface s = v.surface;
         Materials m = it.materials;
         int material = s.material;
-        double colorR = m.color(material, 0), colorG = m.color(material, 1), colorB = m.color(material, 2);
-        double kd = m.kd(material), ks = m.ks(material), kt = m.kt(material);
         double diffuseR = it.ambientR(), diffuseG = it.ambientG(), diffuseB = it.ambientB();
         double specR = 0, specG = 0, specB = 0;
         LightSample light = v.light;
@@ -45,22 +51,21 @@ final class Phong implements ShadingModel {
                 specB += highlight * light.irradianceB;
             }
         }
-        Rgb sum = v.sum;
-        sum.set(kd * colorR * diffuseR + ks * specR, kd * colorG * diffuseG + ks * specG,
-                kd * colorB * diffuseB + ks * specB);
-        if (hitsLeft > 1) {
-            it.addReflected(s, dx, dy, dz, hitsLeft, weight, ks, sum);
-            double childWeight = weight * kt * Math.max(colorR, Math.max(colorG, colorB));
-            double keepRefracted = childWeight > 0 ? it.keep(childWeight) : 0;
-            if (keepRefracted > 0) {
-                Rgb refracted = it.traceRefracted(v, dx, dy, dz, Bsdf.eta(m.ior(material), s.front), hitsLeft,
-                        childWeight * keepRefracted);
-                double k = keepRefracted * kt;
-                sum.r += k * colorR * refracted.r;
-                sum.g += k * colorG * refracted.g;
-                sum.b += k * colorB * refracted.b;
-            }
-        }
-        v.radiance.set(sum.r, sum.g, sum.b);
+        double kd = m.kd(material), ks = m.ks(material);
+        v.sum.set(kd * m.color(material, 0) * diffuseR + ks * specR, kd * m.color(material, 1) * diffuseG + ks * specG,
+                kd * m.color(material, 2) * diffuseB + ks * specB);
+    }
+
+    /** ks of the light reflected, kt x colour of the light refracted, whatever the angle. */
+    @Override
+    public void boundary(Integrator it, PathVertex v) {
+        Materials m = it.materials;
+        int material = v.surface.material;
+        double kt = m.kt(material);
+        v.eta = Bsdf.eta(m.ior(material), v.surface.front);
+        v.reflect = m.ks(material);
+        v.transmitR = kt * m.color(material, 0);
+        v.transmitG = kt * m.color(material, 1);
+        v.transmitB = kt * m.color(material, 2);
     }
 }

@@ -1,6 +1,11 @@
 package glint.render;
 
-/** A shading model: the radiance a surface sends back along a ray, from the materials' functions. */
+/**
+ * A shading model: the radiance a surface sends back along a ray, from the materials' functions. A
+ * surface's radiance is its own light ({@link #direct}) plus what its reflected and refracted rays
+ * bring back; a material that refracts states its boundary's factors ({@link #boundary}), and
+ * {@link Integrator#scatter} traces both rays for every model alike.
+ */
 interface ShadingModel {
 
     /**
@@ -9,4 +14,16 @@ interface ShadingModel {
      * included), {@code weight} the path's throughput so far.
      */
     void shade(Integrator integrator, PathVertex v, double dx, double dy, double dz, int hitsLeft, double weight);
+
+    /**
+     * The light v's surface sends back along the ray of unit direction d by itself (ambient and
+     * the lights it sees), into {@code v.sum}.
+     */
+    void direct(Integrator integrator, PathVertex v, double dx, double dy, double dz);
+
+    /**
+     * The factors of v's surface as a refracting boundary, into {@code v.eta}, {@code v.reflect} and
+     * {@code v.transmitR/G/B}: they depend on the material, the side met and the cosine alone.
+     */
+    void boundary(Integrator integrator, PathVertex v);
 }

@@ -29,17 +29,34 @@ public final class Optics {
      */
     public static boolean refract(double dx, double dy, double dz, double nx, double ny, double nz,
                                   double cosIncident, double eta, double[] out) {
-        double sin2Transmitted = eta * eta * Math.max(0, 1 - cosIncident * cosIncident);
-        if (sin2Transmitted >= 1) {
+        double bend = refractionBend(cosIncident, eta);
+        if (Double.isNaN(bend)) {
             return false;
         }
-        double k = eta * cosIncident - Math.sqrt(1 - sin2Transmitted);
-        double tx = eta * dx + k * nx, ty = eta * dy + k * ny, tz = eta * dz + k * nz;
+        refractWithBend(dx, dy, dz, nx, ny, nz, eta, bend, out);
+        return true;
+    }
+
+    /**
+     * The refracted direction's share of the normal, which depends on the angle alone: the
+     * refracted direction is eta d + bend n, normalised. NaN past the critical angle.
+     */
+    public static double refractionBend(double cosIncident, double eta) {
+        double sin2Transmitted = eta * eta * Math.max(0, 1 - cosIncident * cosIncident);
+        if (sin2Transmitted >= 1) {
+            return Double.NaN;
+        }
+        return eta * cosIncident - Math.sqrt(1 - sin2Transmitted);
+    }
+
+    /** {@link #refract} with its {@link #refractionBend} worked out already (not NaN). */
+    public static void refractWithBend(double dx, double dy, double dz, double nx, double ny, double nz, double eta,
+                                       double bend, double[] out) {
+        double tx = eta * dx + bend * nx, ty = eta * dy + bend * ny, tz = eta * dz + bend * nz;
         double inv = 1 / Math.sqrt(tx * tx + ty * ty + tz * tz);
         out[0] = tx * inv;
         out[1] = ty * inv;
         out[2] = tz * inv;
-        return true;
     }
 
     /**

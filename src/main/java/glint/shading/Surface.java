@@ -58,6 +58,28 @@ public final class Surface {
         insideFar = closed && front ? hit.primitive : Hit.NONE;
     }
 
+    /**
+     * Fills this surface for a ray inside closed primitive {@code primitive} meeting its far side
+     * at {@code end} (point on the surface, outward normal) at cosine {@code cosIncident}, known in
+     * closed form ({@link glint.geometry.Shape#chordInside}).
+     */
+    public void setInside(Hit end, double cosIncident, double epsilon, int material, int primitive) {
+        px = end.px;
+        py = end.py;
+        pz = end.pz;
+        offset = epsilon * atLeastOne(Math.sqrt(px * px + py * py + pz * pz));
+        nx = -end.nx;
+        ny = -end.ny;
+        nz = -end.nz;
+        this.cosIncident = cosIncident;
+        front = false;
+        this.material = material;
+        skipNear = Hit.NONE;
+        skipFar = primitive;
+        insideNear = primitive;
+        insideFar = Hit.NONE;
+    }
+
     /** The origin of rays leaving on the incoming side: p + offset n. */
     public double nearX() {
         return px + offset * nx;

@@ -136,7 +136,7 @@ class AggregateTest {
             for (int i = 0; i < 200; i++) {
                 int sphere = random.nextInt(spheres.count());
                 int hint = primitives.number(0, sphere);
-                if (!(filtered instanceof EmptyInteriors e) || !e.isEmpty(hint)) {
+                if (!filtered.emptyInside(hint)) {
                     continue;
                 }
                 spheres.boundingBall(sphere, ball);

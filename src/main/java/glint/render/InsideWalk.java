@@ -1,0 +1,161 @@
+package glint.render;
+
+import glint.geometry.Hit;
+import glint.geometry.Primitives;
+import glint.geometry.Shape;
+import glint.shading.Optics;
+import glint.shading.Rgb;
+import glint.shading.Surface;
+
+/**
+ * How a ray refracted into a closed primitive that nothing else reaches into is traced: it can only
+ * bounce inside it, and at each bounce a ray leaves through the surface while the rest reflects on.
+ * The kind gives each chord in closed form ({@link Shape#chordInside}), so no bounce searches the
+ * scene; where the cosine at a bounce is the one before (every bounce of a sphere), the boundary's
+ * factors and the bend of the ray leaving are not worked out again. The radiance is what
+ * {@link Integrator#trace} would find, to rounding, and the roulette's numbers are drawn in the same
+ * order: first each bounce's reflected ray, going in, then each leaving ray, from the deepest bounce
+ * out, as the recursion draws them. Bounce k uses the path vertex of its level, as the recursion
+ * would, and a ray leaving it overwrites only the deeper ones, which are done with by then.
+ */
+final class InsideWalk {
+
+    private final Integrator it;
+
+    InsideWalk(Integrator integrator) {
+        this.it = integrator;
+    }
+
+    /**
+     * The radiance of the ray refracted through {@code entry} (which it enters on its outer side)
+     * along unit u, with {@code hitsLeft} hits and path weight {@code weight}: the scratch value of
+     * level {@code hitsLeft}.
+     */
+    Rgb trace(Surface entry, double ux, double uy, double uz, int hitsLeft, double weight) {
+        int primitive = entry.insideFar;
+        int deepest = walkIn(entry, ux, uy, uz, hitsLeft, weight);
+        double r = 0, g = 0, b = 0;
+        if (deepest > hitsLeft || it.vertex(deepest).keepReflected > 0) { // the search traced the rest
+            Rgb rest = it.vertex(deepest - 1).radiance;
+            r = rest.r;
+            g = rest.g;
+            b = rest.b;
+        }
+        for (int level = deepest; level <= hitsLeft; level++) {
+            PathVertex v = it.vertex(level);
+            double sumR = v.sum.r, sumG = v.sum.g, sumB = v.sum.b;
+            if (v.keepReflected > 0) {
+                double k = v.keepReflected * v.reflect;
+                sumR += k * r;
+                sumG += k * g;
+                sumB += k * b;
+            }
+            if (level > 1) {
+                double childWeight = v.weight * Math.max(v.transmitR, Math.max(v.transmitG, v.transmitB));
+                double keep = childWeight > 0 ? it.keep(childWeight) : 0;
+                if (keep > 0) {
+                    Rgb left = leave(v, primitive, level, childWeight * keep);
+                    sumR += keep * v.transmitR * left.r;
+                    sumG += keep * v.transmitG * left.g;
+                    sumB += keep * v.transmitB * left.b;
+                }
+            }
+            v.radiance.set(sumR, sumG, sumB);
+            r = sumR;
+            g = sumG;
+            b = sumB;
+        }
+        return it.vertex(hitsLeft).radiance;
+    }
+
+    /**
+     * Follows the chords in: at each bounce, its surface, its own light and boundary, the direction
+     * of the ray leaving it, and the roulette of the ray reflected on. Returns the level of the
+     * deepest bounce walked (hitsLeft + 1 for none). Where the kind gives no closed form, the rest
+     * is traced by the search, into the radiance of the level below that bounce, and the bounce's
+     * reflected ray is kept.
+     */
+    private int walkIn(Surface entry, double ux, double uy, double uz, int hitsLeft, double weight) {
+        int primitive = entry.insideFar;
+        Primitives primitives = it.primitives();
+        Shape kind = primitives.kind(primitives.kindOf(primitive));
+        int index = primitives.indexOf(primitive), material = it.materialOf(primitive);
+        ShadingModel model = it.model();
+        double px = entry.px, py = entry.py, pz = entry.pz; // where the chord starts, on the surface
+        double sx = entry.farX(), sy = entry.farY(), sz = entry.farZ(); // where a searched ray would start
+        double cos = -(ux * entry.nx + uy * entry.ny + uz * entry.nz), offset = entry.offset;
+        double bend = Double.NaN;
+        double weightIn = weight;
+        PathVertex previous = null;
+        for (int level = hitsLeft; ; level--) {
+            PathVertex v = it.vertex(level);
+            Hit end = v.hit;
+            double cosEnd = kind.chordInside(index, px, py, pz, ux, uy, uz, cos, offset, end);
+            if (Double.isNaN(cosEnd)) {
+                it.trace(sx, sy, sz, ux, uy, uz, level, weightIn, Hit.NONE, primitive);
+                return level + 1;
+            }
+            it.rays++;
+            Surface s = v.surface;
+            s.setInside(end, cosEnd, it.epsilon, material, primitive);
+            model.direct(it, v, ux, uy, uz);
+            boolean sameAngle = previous != null && cosEnd == previous.surface.cosIncident;
+            if (sameAngle) {
+                copyBoundary(previous, v);
+            } else {
+                model.boundary(it, v);
+                bend = Optics.refractionBend(cosEnd, v.eta);
+            }
+            v.weight = weightIn;
+            v.keepReflected = 0;
+            v.leavesThrough = !Double.isNaN(bend);
+            double[] out = v.refracted;
+            if (v.leavesThrough) {
+                Optics.refractWithBend(ux, uy, uz, s.nx, s.ny, s.nz, v.eta, bend, out);
+            } else { // past the critical angle the leaving ray reflects: keep the incoming direction
+                out[0] = ux;
+                out[1] = uy;
+                out[2] = uz;
+            }
+            if (level <= 1) {
+                return level;
+            }
+            v.keepReflected = it.keep(weightIn * v.reflect);
+            if (!(v.keepReflected > 0)) {
+                return level;
+            }
+            weightIn *= v.reflect * v.keepReflected;
+            double k = 2 * cosEnd;
+            ux += k * s.nx;
+            uy += k * s.ny;
+            uz += k * s.nz;
+            px = s.px;
+            py = s.py;
+            pz = s.pz;
+            sx = s.nearX();
+            sy = s.nearY();
+            sz = s.nearZ();
+            cos = cosEnd;
+            offset = s.offset;
+            previous = v;
+        }
+    }
+
+    /** Traces the ray leaving bounce v (at {@code level}) through the surface, or past the critical angle reflected. */
+    private Rgb leave(PathVertex v, int primitive, int level, double weight) {
+        Surface s = v.surface;
+        double[] d = v.refracted;
+        if (v.leavesThrough) {
+            return it.trace(s.farX(), s.farY(), s.farZ(), d[0], d[1], d[2], level - 1, weight, primitive, Hit.NONE);
+        }
+        return it.traceReflected(s, d[0], d[1], d[2], level, weight);
+    }
+
+    private static void copyBoundary(PathVertex from, PathVertex to) {
+        to.eta = from.eta;
+        to.reflect = from.reflect;
+        to.transmitR = from.transmitR;
+        to.transmitG = from.transmitG;
+        to.transmitB = from.transmitB;
+    }
+}
