@@ -16,17 +16,19 @@ import java.util.regex.Matcher;
 import java.util.regex.Pattern;
 
 /**
- * Compares the render CPU a frame of two builds of Glint in one JVM, alternating them: each build's
- * jar gets a class loader of its own, and its {@code glint.app.Main.run} renders a short
- * {@code --bench} of the scene, A then B, then B then A, and so on. Each run counts its least render
- * CPU over the frames after the first; each pair of runs gives a ratio B / A, and the median ratio
- * with its quartiles is the result. A machine whose speed drifts from minute to minute drifts under
- * both builds alike, since they take turns every second or so.
+ * Compares the render CPU a frame of two or more builds of Glint in one JVM, taking turns: each
+ * build's jar gets a class loader of its own, and its {@code glint.app.Main.run} renders a short
+ * {@code --bench} of the scene, A then B, then B then A, and so on (with three builds A B C, then
+ * C B A). Each run counts its least render CPU over the frames after the first; each round gives a
+ * ratio of every build to A, and the median ratio with its quartiles is the result. A machine whose
+ * speed drifts from minute to minute drifts under every build alike, since they take turns every
+ * second or so.
  *
  * <p>Usage, from the repository root: {@code java -cp target/benchmarks.jar glint.bench.CompareBuilds
- * A.jar B.jar [--pairs N] [--threads T] [--depth D] [--size WxH] [--config FILE] SCENE...} (default 12 pairs
- * after 3 for warming up, 2 threads, depth 5, 800x600, 1 sample a pixel, ./config.properties). Both builds must read the scene:
- * older builds do not know every key of newer ones.
+ * A.jar B.jar [C.jar ...] [--pairs N] [--threads T] [--depth D] [--size WxH] [--config FILE] SCENE...}
+ * (default 12 rounds after 3 for warming up, 2 threads, depth 5, 800x600, 1 sample a pixel,
+ * ./config.properties). Every build must read the scene: older builds do not know every key of
+ * newer ones.
  */
 public final class CompareBuilds {
 
@@ -63,40 +65,66 @@ public final class CompareBuilds {
         String depth = option(rest, "--depth", "5");
         String[] size = option(rest, "--size", "800x600").split("x");
         String config = option(rest, "--config", null);
-        if (rest.size() < 3) {
-            System.err.println("usage: CompareBuilds A.jar B.jar [--pairs N] [--threads T] [--depth D] [--size WxH]"
-                    + " [--config FILE] SCENE...");
+        int jars = 0;
+        while (jars < rest.size() && rest.get(jars).endsWith(".jar")) {
+            jars++;
+        }
+        if (jars < 2 || rest.size() == jars) {
+            System.err.println("usage: CompareBuilds A.jar B.jar [C.jar ...] [--pairs N] [--threads T] [--depth D]"
+                    + " [--size WxH] [--config FILE] SCENE...");
             System.exit(2);
         }
-        Method a = mainOf(Path.of(rest.get(0)));
-        Method b = mainOf(Path.of(rest.get(1)));
-        System.out.println("A = " + rest.get(0) + ", B = " + rest.get(1) + "; render CPU a frame, " + pairs
-                + " pairs, " + threads + " threads");
-        for (String scene : rest.subList(2, rest.size())) {
+        List<Method> builds = new ArrayList<>();
+        StringBuilder names = new StringBuilder();
+        for (int i = 0; i < jars; i++) {
+            builds.add(mainOf(Path.of(rest.get(i))));
+            names.append(i == 0 ? "" : ", ").append((char) ('A' + i)).append(" = ").append(rest.get(i));
+        }
+        System.out.println(names + "; render CPU a frame, " + pairs + " rounds, " + threads + " threads");
+        for (String scene : rest.subList(jars, rest.size())) {
             List<String> bench = new ArrayList<>(List.of("--scene", scene, "--width", size[0], "--height", size[1],
                     "--spp", "1", "--depth", depth, "--threads", threads, "--bench", String.valueOf(FRAMES_A_RUN)));
             if (config != null) {
                 bench.addAll(List.of("--config", config));
             }
-            System.out.println(compare(scene, a, b, bench.toArray(new String[0]), pairs).line());
+            for (Result result : compareAll(scene, builds, bench.toArray(new String[0]), pairs)) {
+                System.out.println(result.line());
+            }
         }
     }
 
     /** Runs {@code pairs} pairs (after the warm-up ones), alternating which build goes first. */
     static Result compare(String scene, Method a, Method b, String[] bench, int pairs) throws Exception {
-        double[] cpuA = new double[pairs], cpuB = new double[pairs], ratios = new double[pairs];
-        for (int i = -WARM_UP_PAIRS; i < pairs; i++) {
-            boolean aFirst = (i & 1) == 0;
-            double first = leastCpu(aFirst ? a : b, bench);
-            double second = leastCpu(aFirst ? b : a, bench);
-            if (i >= 0) {
-                cpuA[i] = aFirst ? first : second;
-                cpuB[i] = aFirst ? second : first;
-                ratios[i] = cpuB[i] / cpuA[i];
+        return compareAll(scene, List.of(a, b), bench, pairs).get(0);
+    }
+
+    /**
+     * Runs {@code rounds} rounds (after the warm-up ones) of every build in turn, forwards in even
+     * rounds and backwards in odd ones; returns each build after the first against the first.
+     */
+    static List<Result> compareAll(String scene, List<Method> builds, String[] bench, int rounds) throws Exception {
+        int n = builds.size();
+        double[][] cpu = new double[n][rounds];
+        for (int round = -WARM_UP_PAIRS; round < rounds; round++) {
+            for (int turn = 0; turn < n; turn++) {
+                int build = (round & 1) == 0 ? turn : n - 1 - turn;
+                double least = leastCpu(builds.get(build), bench);
+                if (round >= 0) {
+                    cpu[build][round] = least;
+                }
             }
         }
-        return new Result(scene, quantile(cpuA, 0.5), quantile(cpuB, 0.5), quantile(ratios, 0.5),
-                quantile(ratios, 0.25), quantile(ratios, 0.75));
+        List<Result> results = new ArrayList<>();
+        for (int build = 1; build < n; build++) {
+            double[] ratios = new double[rounds];
+            for (int round = 0; round < rounds; round++) {
+                ratios[round] = cpu[build][round] / cpu[0][round];
+            }
+            String label = n == 2 ? scene : scene + " " + (char) ('A' + build);
+            results.add(new Result(label, quantile(cpu[0], 0.5), quantile(cpu[build], 0.5), quantile(ratios, 0.5),
+                    quantile(ratios, 0.25), quantile(ratios, 0.75)));
+        }
+        return results;
     }
 
     /** The least render CPU of a {@code --bench} run's frames after the first. */

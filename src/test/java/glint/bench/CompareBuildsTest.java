@@ -61,6 +61,20 @@ class CompareBuildsTest {
         assertTrue(result.ratioQ1() <= result.ratio() && result.ratio() <= result.ratioQ3(), result.line());
     }
 
+    @Test
+    void threeBuildsAreEachComparedWithTheFirst() throws Exception {
+        Method main = CompareBuilds.mainOf(Path.of("target/classes"), libraryOf(CommandLine.class),
+                libraryOf(Load.class));
+        String[] bench = {"--scene", "scenes/default.yaml", "--width", "40", "--height", "30", "--spp", "1",
+                "--threads", "1", "--bench", "3"};
+        java.util.List<CompareBuilds.Result> results = CompareBuilds.compareAll("default",
+                java.util.List.of(main, main, main), bench, 2);
+        assertEquals(2, results.size(), "B against A and C against A");
+        assertEquals("default B", results.get(0).scene());
+        assertEquals("default C", results.get(1).scene());
+        assertEquals(results.get(0).medianA(), results.get(1).medianA(), "both against the same runs of A");
+    }
+
     private static URL libraryOf(Class<?> c) {
         return c.getProtectionDomain().getCodeSource().getLocation();
     }
