@@ -9,6 +9,7 @@ import glint.render.RenderSettings;
 import java.io.PrintWriter;
 import java.nio.file.Files;
 import java.nio.file.Path;
+import java.util.ArrayList;
 import java.util.List;
 import java.util.concurrent.Callable;
 import picocli.CommandLine;
@@ -75,7 +76,7 @@ public final class Main implements Callable<Integer> {
         cli.setErr(err);
         cli.registerConverter(Integer.class, Main::wholeNumber);
         cli.setParameterExceptionHandler((e, a) -> {
-            err.println(InputException.printable("glint: " + e.getMessage()));
+            err.println(InputException.printable(InputException.cutQuoted("glint: " + e.getMessage())));
             err.println("Try 'java -jar target/glint.jar --help' for the options.");
             return BAD_INPUT;
         });
@@ -85,14 +86,14 @@ public final class Main implements Callable<Integer> {
                 return BAD_INPUT;
             }
             if (e instanceof Headless.WriteFailure failure) {
-                err.println(InputException.printable("glint: " + failure.getMessage()));
+                err.println(InputException.printable(InputException.cutQuoted("glint: " + failure.getMessage())));
                 return FAILURE;
             }
             if (e.getCause() instanceof OutOfMemoryError) { // in a render thread
                 err.println(outOfMemory(e.getCause()));
                 return FAILURE;
             }
-            err.println(InputException.printable("glint: " + e));
+            err.println(InputException.printable(InputException.cutQuoted("glint: " + e)));
             return FAILURE;
         });
         try {
@@ -132,7 +133,12 @@ public final class Main implements Callable<Integer> {
             throw new InputException("glint", 0, 0, "--output and --bench cannot be used together");
         }
         if (output != null) {
-            return Headless.renderStill(scenePath, settings, output, out, err);
+            List<Path> inputs = new ArrayList<>(List.of(scenePath));
+            Path configFile = config != null ? config : Path.of("config.properties");
+            if (Files.exists(configFile)) {
+                inputs.add(configFile);
+            }
+            return Headless.renderStill(scenePath, inputs, settings, output, out, err);
         }
         if (bench != null) {
             if (bench < 1 || bench > Headless.MAX_BENCH_FRAMES) {
@@ -176,7 +182,7 @@ public final class Main implements Callable<Integer> {
         Path folder = configFile.toAbsolutePath().getParent();
         InputException at = ConfigLoader.errorAt(configFile, "scene", "");
         String problem = (at.line() > 0 ? "scene: no such file " : "no such scene file ")
-                + "'" + resolved + "'"
+                + InputException.quotePath(resolved)
                 + (configured.isAbsolute() ? "" : " (scene is resolved against the config file's folder, "
                         + folder + (at.line() > 0 ? ")" : "; the default is scenes/default.yaml)"))
                 + "; set scene in the config or use --scene FILE";

@@ -183,20 +183,20 @@ public final class SceneLoader {
     /** {@code views:} a list of camera mappings, each with an optional name; at most {@link #MAX_VIEWS}. */
     private List<View> views(Node node) throws InputException {
         List<View> views = new ArrayList<>();
-        Set<String> names = new LinkedHashSet<>();
+        ViewNames names = new ViewNames();
         for (Node item : yaml.sequence(node, "views")) {
             if (views.size() == MAX_VIEWS) {
                 throw yaml.error(item, "too many views: at most " + MAX_VIEWS + " (keys 1 to 9 go to them)");
             }
-            String what = "view " + (views.size() + 1);
+            String what = names.nextDefault();
             Map<String, Node> m = yaml.mapping(item, what, VIEW_KEYS);
-            String name = what;
-            if (m.containsKey("name")) {
-                name = yaml.string(m.get("name"), what);
-                if (!names.add(name)) {
-                    throw yaml.error(m.get("name"), "duplicate view name '" + name + "'");
-                }
+            boolean written = m.containsKey("name");
+            String name = written ? yaml.string(m.get("name"), what) : what;
+            String problem = written ? names.problemWithWritten(name) : names.problemWithDefault();
+            if (problem != null) {
+                throw yaml.error(written ? m.get("name") : item, problem);
             }
+            names.add(name, written);
             views.add(new View(name, camera(item, m)));
         }
         return views;
@@ -254,7 +254,7 @@ public final class SceneLoader {
             if (!seen.add(name)) {
                 throw yaml.error(tuple.getKeyNode(), "duplicate material name " + InputException.quote(name));
             }
-            materials.put(name, materialMap(tuple.getValueNode(), "material '" + name + "'"));
+            materials.put(name, materialMap(tuple.getValueNode(), "material " + InputException.quote(name)));
         }
     }
 

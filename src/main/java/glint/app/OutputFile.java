@@ -1,0 +1,158 @@
+package glint.app;
+
+import glint.image.ImageWriter;
+import glint.input.InputException;
+import java.io.IOException;
+import java.nio.file.AccessDeniedException;
+import java.nio.file.FileSystemException;
+import java.nio.file.Files;
+import java.nio.file.NoSuchFileException;
+import java.nio.file.Path;
+import java.nio.file.attribute.BasicFileAttributes;
+import java.nio.file.attribute.PosixFileAttributes;
+import java.util.List;
+
+/**
+ * The image file of a headless render, checked before any work: everything that would make the
+ * final rename fail or lose a file is refused up front, with one line and status 2. The image is
+ * then written to a temporary file beside it (made here, so that an unwritable folder is found now)
+ * and renamed over it when complete.
+ */
+final class OutputFile {
+
+    /** The sticky bit of a folder's mode: only a file's owner (or the folder's) may replace it. */
+    private static final int STICKY = 01000;
+
+    private OutputFile() {
+    }
+
+    /**
+     * Checks {@code output} against what it must never be (one of the {@code inputs}: the scene,
+     * the config) and what would fail only at the end, and makes its temporary file.
+     *
+     * @return the temporary file, empty, with the permissions the image will have
+     */
+    static Path prepare(Path output, List<Path> inputs) throws InputException {
+        if (!ImageWriter.isSupported(output)) {
+            throw refused("expected a file ending in .png or .pfm, got " + InputException.quotePath(output));
+        }
+        BasicFileAttributes existing = attributes(output);
+        if (existing != null && existing.isDirectory()) {
+            throw refused(InputException.quotePath(output) + " is a folder; expected an image file name such as out.png");
+        }
+        if (existing != null && !existing.isRegularFile()) {
+            throw refused(InputException.quotePath(output)
+                    + " is not a regular file (a pipe or device); expected an image file name such as out.png");
+        }
+        Path folder = output.toAbsolutePath().getParent();
+        if (folder != null && !Files.isDirectory(folder)) {
+            throw refused("no such folder " + InputException.quotePath(folder));
+        }
+        if (existing != null) {
+            for (Path input : inputs) {
+                if (sameFile(output, input)) {
+                    throw refused(InputException.quotePath(output) + " is the " + (input == inputs.get(0) ? "scene" : "config")
+                            + " file " + InputException.quotePath(input)
+                            + "; writing the image there would destroy it (choose another output name)");
+                }
+            }
+            if (!Files.isWritable(output)) {
+                throw refused(InputException.quotePath(output)
+                        + " is read-only; make it writable (chmod u+w) or choose another output name");
+            }
+        }
+        Path temp;
+        try {
+            temp = ImageWriter.temporaryBeside(output);
+        } catch (IOException e) {
+            throw refused("cannot write " + InputException.quotePath(output) + ": " + reason(e));
+        }
+        try {
+            if (existing != null) {
+                checkReplaceable(output, folder, temp);
+            }
+            return temp;
+        } catch (InputException | RuntimeException e) {
+            deleteQuietly(temp);
+            throw e;
+        }
+    }
+
+    /**
+     * In a sticky folder (mode 1777, such as /tmp) only the owner of a file, the owner of the folder
+     * or root may rename over it; anyone else would find out only at the end. The temporary file,
+     * just made, tells who this process is.
+     */
+    private static void checkReplaceable(Path output, Path folder, Path temp) throws InputException {
+        try {
+            int mode = (Integer) Files.getAttribute(folder, "unix:mode");
+            if ((mode & STICKY) == 0) {
+                return;
+            }
+            int me = (Integer) Files.getAttribute(temp, "unix:uid");
+            int owner = (Integer) Files.getAttribute(output, "unix:uid");
+            int folderOwner = (Integer) Files.getAttribute(folder, "unix:uid");
+            if (me != 0 && me != owner && me != folderOwner) {
+                throw refused(InputException.quotePath(output) + " belongs to another user, in a folder where only a file's "
+                        + "owner may replace it (sticky, like /tmp); choose another output name");
+            }
+        } catch (UnsupportedOperationException | IllegalArgumentException | IOException e) {
+            // no unix attributes here: the rename decides, and its failure keeps the old file
+        }
+    }
+
+    /**
+     * Keeps the permissions of an image being replaced, as the shell's {@code >} does (a file of
+     * mode 640 stays 640).
+     */
+    static void keepPermissions(Path output, Path temp) {
+        try {
+            PosixFileAttributes old = Files.readAttributes(output, PosixFileAttributes.class);
+            Files.setPosixFilePermissions(temp, old.permissions());
+        } catch (IOException | UnsupportedOperationException e) {
+            // a new file, or no POSIX permissions: the folder's defaults
+        }
+    }
+
+    /** Whether two names are one file: through a symlink, a hard link, {@code ..}, another case. */
+    private static boolean sameFile(Path a, Path b) {
+        try {
+            return b != null && Files.exists(b) && Files.isSameFile(a, b);
+        } catch (IOException | SecurityException e) {
+            return false;
+        }
+    }
+
+    /** The output's attributes (following a symlink), or null when there is no such file. */
+    private static BasicFileAttributes attributes(Path output) throws InputException {
+        try {
+            return Files.readAttributes(output, BasicFileAttributes.class);
+        } catch (NoSuchFileException e) {
+            return null; // no file, or a dangling link (which the image replaces)
+        } catch (IOException e) {
+            throw refused("cannot write " + InputException.quotePath(output) + ": " + reason(e));
+        }
+    }
+
+    static String reason(IOException e) {
+        if (e instanceof AccessDeniedException) {
+            return "Permission denied";
+        }
+        if (e instanceof FileSystemException fs && fs.getReason() != null) {
+            return fs.getReason();
+        }
+        return String.valueOf(e.getMessage());
+    }
+
+    private static InputException refused(String problem) {
+        return new InputException("glint", 0, 0, "--output: " + problem);
+    }
+
+    private static void deleteQuietly(Path p) {
+        try {
+            Files.deleteIfExists(p);
+        } catch (IOException e) {
+            // nothing was written to it
+        }
+    }
+}
