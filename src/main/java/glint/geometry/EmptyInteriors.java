@@ -54,9 +54,17 @@ public final class EmptyInteriors extends AggregateFilter {
      * Marks the closed primitives no other primitive reaches into: the unbounded ones are asked
      * for each; the bounded ones only where their boxes overlap along the axis the boxes spread
      * most on (a sweep over the boxes sorted by their low end), so a scene of many spheres is not
-     * checked pair by pair.
+     * checked pair by pair. A pair is asked only while one of the two may still be empty: once a
+     * primitive is reached, the sweep steps from it straight to the next one that may still be
+     * empty ({@link StillEmpty}), so coincident, nested or overlapping primitives, which reach
+     * into each other, take a number of tests that grows with their count, not its square.
      */
     static boolean[] findEmpty(Primitives p) {
+        return findEmpty(p, new long[1]);
+    }
+
+    /** As {@link #findEmpty(Primitives)}, adding to {@code pairs[0]} the number of pairs it looked at. */
+    static boolean[] findEmpty(Primitives p, long[] pairs) {
         int n = p.count();
         boolean[] empty = new boolean[n];
         double[] boxes = new double[6 * n];
@@ -72,35 +80,73 @@ public final class EmptyInteriors extends AggregateFilter {
         Integer[] sorted = Arrays.copyOf(boundedOnes, bounded);
         int axis = widestAxis(boxes, sorted);
         Arrays.sort(sorted, (a, b) -> Double.compare(boxes[6 * a + axis], boxes[6 * b + axis]));
+        StillEmpty still = new StillEmpty(sorted, empty);
         double[] ball = new double[4];
         for (int i = 0; i < bounded; i++) {
             int a = sorted[i];
-            for (int j = i + 1; j < bounded && boxes[6 * sorted[j] + axis] <= boxes[6 * a + 3 + axis]; j++) {
+            double end = boxes[6 * a + 3 + axis];
+            for (int j = empty[a] ? i + 1 : still.from(i + 1); j < bounded && boxes[6 * sorted[j] + axis] <= end;
+                 j = empty[a] ? j + 1 : still.from(j + 1)) {
                 int b = sorted[j];
+                pairs[0]++;
                 if (boxesOverlap(boxes, a, b)) {
-                    markIfReached(p, a, b, ball, empty);
-                    markIfReached(p, b, a, ball, empty);
+                    markIfReached(p, a, b, ball, empty, still);
+                    markIfReached(p, b, a, ball, empty, still);
                 }
             }
         }
-        for (int u = 0; u < n; u++) {
-            if (!p.bounded(u)) {
-                for (int q = 0; q < n; q++) {
-                    markIfReached(p, q, u, ball, empty);
-                }
+        for (int u : p.unbounded()) {
+            for (int j = still.from(0); j < bounded; j = still.from(j + 1)) {
+                pairs[0]++;
+                markIfReached(p, sorted[j], u, ball, empty, still);
             }
         }
         return empty;
     }
 
+    /**
+     * The positions in the sweep's order of the primitives that may still be empty, each found in
+     * nearly constant time: a position no longer empty points on to the next (with its path
+     * shortened as it is followed).
+     */
+    private static final class StillEmpty {
+        private final int[] next;
+        private final int[] position;
+
+        StillEmpty(Integer[] sorted, boolean[] empty) {
+            next = new int[sorted.length + 1];
+            position = new int[empty.length];
+            for (int i = 0; i < sorted.length; i++) {
+                position[sorted[i]] = i;
+                next[i] = empty[sorted[i]] ? i : i + 1;
+            }
+            next[sorted.length] = sorted.length;
+        }
+
+        /** The first position at or after i whose primitive may still be empty, or the count. */
+        int from(int i) {
+            while (next[i] != i) {
+                next[i] = next[next[i]];
+                i = next[i];
+            }
+            return i;
+        }
+
+        void reached(int primitive) {
+            int i = position[primitive];
+            next[i] = i + 1;
+        }
+    }
+
     /** Clears {@code empty[a]} if primitive {@code other} reaches into a's bounding ball. */
-    private static void markIfReached(Primitives p, int a, int other, double[] ball, boolean[] empty) {
+    private static void markIfReached(Primitives p, int a, int other, double[] ball, boolean[] empty, StillEmpty still) {
         if (!empty[a]) {
             return;
         }
         p.kind(p.kindOf(a)).boundingBall(p.indexOf(a), ball);
         if (p.kind(p.kindOf(other)).reachesInto(p.indexOf(other), ball[0], ball[1], ball[2], ball[3])) {
             empty[a] = false;
+            still.reached(a);
         }
     }
 

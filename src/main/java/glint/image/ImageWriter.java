@@ -2,6 +2,7 @@ package glint.image;
 
 import glint.render.FrameBuffer;
 import java.awt.image.BufferedImage;
+import java.awt.image.DataBufferInt;
 import java.io.BufferedOutputStream;
 import java.io.FilterOutputStream;
 import java.io.IOException;
@@ -185,13 +186,12 @@ public final class ImageWriter {
     private static BufferedImage toImage(FrameBuffer frame, Watcher watcher) throws InterruptedIOException {
         BufferedImage image = new BufferedImage(frame.width(), frame.height(), BufferedImage.TYPE_INT_RGB);
         float[] rgb = frame.rgb();
-        int[] row = new int[frame.width()];
+        int[] pixels = ((DataBufferInt) image.getRaster().getDataBuffer()).getData(); // row by row, 0xRRGGBB
         for (int y = 0; y < frame.height(); y++) {
-            for (int x = 0; x < frame.width(); x++) {
-                int i = 3 * (y * frame.width() + x);
-                row[x] = Srgb.to8Bit(rgb[i]) << 16 | Srgb.to8Bit(rgb[i + 1]) << 8 | Srgb.to8Bit(rgb[i + 2]);
+            for (int x = 0, p = y * frame.width(); x < frame.width(); x++, p++) {
+                int i = 3 * p;
+                pixels[p] = Srgb.to8Bit(rgb[i]) << 16 | Srgb.to8Bit(rgb[i + 1]) << 8 | Srgb.to8Bit(rgb[i + 2]);
             }
-            image.setRGB(0, y, frame.width(), 1, row, 0, frame.width());
             if ((y & 63) == 63) {
                 check(watcher);
                 watcher.progress(IMAGE_SHARE * y / frame.height());
