@@ -75,6 +75,7 @@ public final class Main implements Callable<Integer> {
         cli.setOut(out);
         cli.setErr(err);
         cli.registerConverter(Integer.class, Main::wholeNumber);
+        cli.registerConverter(Path.class, Main::fileName);
         cli.setParameterExceptionHandler((e, a) -> {
             err.println(InputException.printable(InputException.cutQuoted("glint: " + e.getMessage())));
             err.println("Try 'java -jar target/glint.jar --help' for the options.");
@@ -120,6 +121,15 @@ public final class Main implements Callable<Integer> {
             throw new CommandLine.TypeConversionException(InputException.quote(text) + " is too large");
         }
         return (int) n;
+    }
+
+    /** An option's file name; one the platform cannot take is refused in words. */
+    static Path fileName(String text) {
+        try {
+            return FileNames.path(text);
+        } catch (FileNames.InvalidNameException e) {
+            throw new CommandLine.TypeConversionException(e.getMessage());
+        }
     }
 
     @Override
@@ -171,9 +181,16 @@ public final class Main implements Callable<Integer> {
      * against which folder the path was resolved.
      */
     private Path sceneFromConfig(Config settings) throws InputException {
-        Path configured = Path.of(settings.scene());
         Path configFile = config != null ? config : Files.exists(Path.of("config.properties"))
                 ? Path.of("config.properties") : null;
+        Path configured;
+        try {
+            configured = FileNames.path(settings.scene());
+        } catch (FileNames.InvalidNameException e) {
+            InputException at = configFile != null ? ConfigLoader.errorAt(configFile, "scene", "")
+                    : new InputException("glint", 0, 0, "");
+            throw new InputException(at.file(), at.line(), at.column(), "scene: " + e.getMessage());
+        }
         Path resolved = configured.isAbsolute() || config == null || config.getParent() == null
                 ? configured : config.getParent().resolve(configured);
         if (configFile == null || Files.exists(resolved)) {
