@@ -7,12 +7,14 @@ import java.io.InterruptedIOException;
 import java.io.PrintWriter;
 import java.nio.file.Files;
 import java.nio.file.Path;
+import java.util.List;
 import java.util.concurrent.CountDownLatch;
 import java.util.concurrent.TimeUnit;
 import java.util.concurrent.atomic.AtomicBoolean;
 
 /**
- * A signal that ends the program (Ctrl-C's SIGINT, SIGTERM, SIGHUP) during a headless run: cancels
+ * A signal that ends the program (Ctrl-C's SIGINT, SIGTERM, SIGHUP, and the others of
+ * {@link #OTHER_ENDING_SIGNALS}) during a headless run: cancels
  * the render or the image's write at once, gives the main thread a moment to stop and clean up, and
  * deletes the image's temporary file, so that no partial image is left and no stack trace is
  * printed. The rename that puts a finished image in place and the decision to stop exclude each
@@ -50,6 +52,27 @@ final class Interrupts implements AutoCloseable, ImageWriter.Watcher {
         Interrupts interrupts = new Interrupts(err, message);
         Runtime.getRuntime().addShutdownHook(interrupts.hook);
         return interrupts;
+    }
+
+    /**
+     * Signals whose default action ends the JVM without running its shutdown hooks (which the JVM
+     * runs only for SIGINT, SIGTERM and SIGHUP): a run they stop would leave its temporary file.
+     */
+    static final List<String> OTHER_ENDING_SIGNALS = List.of("USR1", "USR2", "ALRM", "VTALRM", "PROF", "XCPU", "POLL", "PWR");
+
+    /**
+     * Makes the {@link #OTHER_ENDING_SIGNALS} end the program as SIGTERM does: hooks run, status
+     * 128 + the signal's number. Called once by the program's {@code main}; a signal this platform
+     * does not have, or the JVM keeps for itself, is left as it is.
+     */
+    static void handleOtherEndingSignals() {
+        for (String name : OTHER_ENDING_SIGNALS) {
+            try {
+                sun.misc.Signal.handle(new sun.misc.Signal(name), signal -> System.exit(128 + signal.getNumber()));
+            } catch (IllegalArgumentException | UnsupportedOperationException e) {
+                // not a signal here, or used by the JVM
+            }
+        }
     }
 
     /** The tracer to cancel and the temporary file to delete if the program is stopped. */

@@ -62,6 +62,7 @@ public final class Main implements Callable<Integer> {
     private PrintWriter err = new PrintWriter(System.err, true);
 
     public static void main(String[] args) {
+        Interrupts.handleOtherEndingSignals();
         System.exit(run(args, new PrintWriter(System.out, true), new PrintWriter(System.err, true)));
     }
 
