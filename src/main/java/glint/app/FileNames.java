@@ -18,6 +18,9 @@ import java.util.List;
  */
 final class FileNames {
 
+    /** How to change the locale, the end of every message about it. */
+    static final String FIX = "use a UTF-8 locale, for example: export LC_ALL=C.UTF-8";
+
     /** The replacement character Java puts for each byte it could not decode. */
     private static final char UNDECODED = '\uFFFD';
 
@@ -63,10 +66,10 @@ final class FileNames {
     static String localeProblem(String name) {
         if (!asciiLocale()) {
             return "the file name " + InputException.quotePath(name) + " cannot be used here: it has characters the locale ("
-                    + locale() + ") cannot encode; use a UTF-8 locale, for example: export LC_ALL=C.UTF-8";
+                    + locale() + ") cannot encode; " + FIX;
         }
         return "the file name " + InputException.quotePath(name) + " is not ASCII, and the locale (" + locale()
-                + ") allows only ASCII file names; use a UTF-8 locale, for example: export LC_ALL=C.UTF-8";
+                + ") allows only ASCII file names; " + FIX;
     }
 
     /** The locale setting in force, as the user would write it: {@code LC_ALL=C}, or that none is set. */

@@ -79,6 +79,9 @@ public final class Main implements Callable<Integer> {
         cli.registerConverter(Path.class, Main::fileName);
         cli.setParameterExceptionHandler((e, a) -> {
             err.println(InputException.printable(InputException.cutQuoted("glint: " + e.getMessage())));
+            if (String.valueOf(e.getMessage()).endsWith(FileNames.FIX)) {
+                return BAD_INPUT; // the options are right: the locale is not
+            }
             err.println("Try 'java -jar target/glint.jar --help' for the options.");
             return BAD_INPUT;
         });
