@@ -94,7 +94,16 @@ public final class ImageWriter {
         String name = path.getFileName().toString().toLowerCase(Locale.ROOT);
         Content content = name.endsWith(".pfm") ? out -> writePfm(frame, out, watcher)
                 : out -> writePng(toImage(frame, watcher), out, watcher);
-        writeAtomically(path, temp, out -> content.writeTo(new CancellableStream(out, watcher)), watcher);
+        try {
+            writeAtomically(path, temp, out -> content.writeTo(new CancellableStream(out, watcher)), watcher);
+        } catch (IOException e) {
+            if (watcher.cancelled() && !(e instanceof InterruptedIOException)) { // the encoder wraps what it met
+                InterruptedIOException stopped = new InterruptedIOException("interrupted");
+                stopped.initCause(e);
+                throw stopped;
+            }
+            throw e;
+        }
     }
 
     /** Stops a write at its next bytes once the watcher says so. */

@@ -63,6 +63,11 @@ class HeadlessTest {
     }
 
     @Test
+    void everyStepThatKnowsHowFarItIsHasTheSameLine() {
+        assertEquals("writing the image: 50% done, about 3 s left", Progress.line("writing the image", 0.5, 3_000_000_000L));
+    }
+
+    @Test
     void theBarFillsInProportion() {
         // 30 cells, half of them filled
         assertEquals("[###############               ]  50%, about 4 s left", Progress.bar(0.5, 4_000_000_000L));
