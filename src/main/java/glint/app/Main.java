@@ -78,7 +78,7 @@ public final class Main implements Callable<Integer> {
         cli.registerConverter(Integer.class, Main::wholeNumber);
         cli.registerConverter(Path.class, Main::fileName);
         cli.setParameterExceptionHandler((e, a) -> {
-            err.println(InputException.printable(InputException.cutQuoted("glint: " + e.getMessage())));
+            err.println(line("glint: " + e.getMessage()));
             if (String.valueOf(e.getMessage()).endsWith(FileNames.FIX)) {
                 return BAD_INPUT; // the options are right: the locale is not
             }
@@ -91,14 +91,18 @@ public final class Main implements Callable<Integer> {
                 return BAD_INPUT;
             }
             if (e instanceof Headless.WriteFailure failure) {
-                err.println(InputException.printable(InputException.cutQuoted("glint: " + failure.getMessage())));
+                err.println(line("glint: " + failure.getMessage()));
                 return FAILURE;
             }
             if (e.getCause() instanceof OutOfMemoryError) { // in a render thread
                 err.println(outOfMemory(e.getCause()));
                 return FAILURE;
             }
-            err.println(InputException.printable(InputException.cutQuoted("glint: " + e)));
+            if (e instanceof java.nio.file.FileSystemException fs && fs.getFile() != null) {
+                err.println(line("glint: " + InputException.cutPath(fs.getFile()) + ": " + OutputFile.reason(fs)));
+                return FAILURE;
+            }
+            err.println(line("glint: " + (e instanceof java.io.IOException && e.getMessage() != null ? e.getMessage() : e)));
             return FAILURE;
         });
         try {
@@ -107,6 +111,18 @@ public final class Main implements Callable<Integer> {
             err.println(outOfMemory(e));
             return FAILURE;
         }
+    }
+
+    /** The most characters a line of a message from elsewhere (the parser, the system) is given. */
+    static final int MAX_LINE = 1000;
+
+    /**
+     * A message made elsewhere as one printable line: quoted values cut as by
+     * {@link InputException#quote}, and the whole cut to {@link #MAX_LINE} characters.
+     */
+    static String line(String message) {
+        String text = InputException.printable(InputException.cutQuoted(message));
+        return text.length() <= MAX_LINE ? text : text.substring(0, MAX_LINE - 3) + "...";
     }
 
     private static String outOfMemory(Throwable e) {

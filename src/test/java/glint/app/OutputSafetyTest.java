@@ -129,6 +129,13 @@ class OutputSafetyTest {
     }
 
     @Test
+    void anUnmatchedLongArgumentIsCutInTheMessage() {
+        Result r = run("y".repeat(100_000));
+        assertEquals(2, r.status());
+        assertEquals("glint: Unmatched argument at index 0: '" + "y".repeat(60) + "...'", r.err().lines().findFirst().orElse(""));
+    }
+
+    @Test
     void aNameNearTheFoldersLimitIsWritten() throws Exception {
         Path scene = Files.writeString(dir.resolve("scene.yaml"), SCENE);
         String name = "n".repeat(251) + ".png"; // 255 bytes, the most a name may have: its temporary file's is shorter
