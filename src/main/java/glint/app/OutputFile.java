@@ -5,6 +5,7 @@ import glint.input.InputException;
 import java.io.IOException;
 import java.nio.file.AccessDeniedException;
 import java.nio.file.FileSystemException;
+import java.nio.file.LinkOption;
 import java.nio.file.Files;
 import java.nio.file.NoSuchFileException;
 import java.nio.file.Path;
@@ -90,7 +91,7 @@ final class OutputFile {
                 return;
             }
             int me = (Integer) Files.getAttribute(temp, "unix:uid");
-            int owner = (Integer) Files.getAttribute(output, "unix:uid");
+            int owner = (Integer) Files.getAttribute(output, "unix:uid", LinkOption.NOFOLLOW_LINKS); // a link's own
             int folderOwner = (Integer) Files.getAttribute(folder, "unix:uid");
             if (me != 0 && me != owner && me != folderOwner) {
                 throw refused(InputException.quotePath(output) + " belongs to another user, in a folder where only a file's "
