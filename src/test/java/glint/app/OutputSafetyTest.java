@@ -136,6 +136,14 @@ class OutputSafetyTest {
     }
 
     @Test
+    void aConfiguredSceneNameWithANulIsRefusedAtItsLine() throws Exception {
+        Path cfg = Files.writeString(dir.resolve("nul.properties"), "samples=1\nscene=a\\u0000b.yaml\n");
+        Result r = run("--config", cfg.toString(), "--output", dir.resolve("o.png").toString());
+        assertEquals(2, r.status());
+        assertEquals(cfg + ":2:1: scene: a file name cannot hold the character NUL, got 'a\\u0000b.yaml'\n", r.err());
+    }
+
+    @Test
     void aNameNearTheFoldersLimitIsWritten() throws Exception {
         Path scene = Files.writeString(dir.resolve("scene.yaml"), SCENE);
         String name = "n".repeat(251) + ".png"; // 255 bytes, the most a name may have: its temporary file's is shorter
