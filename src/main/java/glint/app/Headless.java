@@ -53,7 +53,7 @@ final class Headless {
         Path temp = null;
         try (Interrupts interrupts = Interrupts.install(err, "glint: interrupted; no image written");
              Progress progress = Progress.start(err)) {
-            temp = OutputFile.prepare(output, inputs);
+            temp = OutputFile.prepare(output, inputs, config.displayWidth(), config.displayHeight());
             interrupts.watch(null, temp);
             progress.step("reading the scene", null);
             Scene scene = SceneLoader.load(scenePath, config.limits().scene());

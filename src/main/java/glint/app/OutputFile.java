@@ -2,6 +2,7 @@ package glint.app;
 
 import glint.image.ImageWriter;
 import glint.input.InputException;
+import glint.input.TextFiles;
 import java.io.IOException;
 import java.nio.file.AccessDeniedException;
 import java.nio.file.FileSystemException;
@@ -12,6 +13,7 @@ import java.nio.file.Path;
 import java.nio.file.attribute.BasicFileAttributes;
 import java.nio.file.attribute.PosixFileAttributes;
 import java.util.List;
+import java.util.Locale;
 
 /**
  * The image file of a headless render, checked before any work: everything that would make the
@@ -33,9 +35,18 @@ final class OutputFile {
      *
      * @return the temporary file, empty, with the permissions the image will have
      */
-    static Path prepare(Path output, List<Path> inputs) throws InputException {
+    static Path prepare(Path output, List<Path> inputs, int width, int height) throws InputException {
         if (!ImageWriter.isSupported(output)) {
             throw refused("expected a file ending in .png or .pfm, got " + InputException.quotePath(output));
+        }
+        if (output.getFileName().toString().toLowerCase(Locale.ROOT).endsWith(".pfm")) {
+            long size = ImageWriter.pfmBytes(width, height);
+            long limit = fileSizeLimit(Path.of("/proc/self/limits"));
+            if (size > limit) {
+                throw refused(String.format(Locale.ROOT, "a %dx%d PFM is %s, more than the largest file this process may "
+                        + "write (%s, ulimit -f); render a smaller image, a PNG, or raise the limit",
+                        width, height, TextFiles.size(size), TextFiles.size(limit)));
+            }
         }
         BasicFileAttributes existing = attributes(output);
         if (existing != null && existing.isDirectory()) {
@@ -115,6 +126,25 @@ final class OutputFile {
         }
     }
 
+    /**
+     * The largest file this process may write (its soft {@code ulimit -f}, from a file in the form of
+     * Linux's /proc/self/limits), or Long.MAX_VALUE when unlimited or unknown. A larger write fails
+     * only when it gets there ({@code File too large}).
+     */
+    static long fileSizeLimit(Path limits) {
+        try {
+            for (String line : Files.readAllLines(limits)) {
+                if (line.startsWith("Max file size")) {
+                    String soft = line.substring("Max file size".length()).trim().split("\\s+")[0];
+                    return soft.equals("unlimited") ? Long.MAX_VALUE : Long.parseLong(soft);
+                }
+            }
+        } catch (IOException | RuntimeException e) {
+            // not Linux, or a form not known: no limit is assumed
+        }
+        return Long.MAX_VALUE;
+    }
+
     /** Whether two names are one file: through a symlink, a hard link, {@code ..}, another case. */
     private static boolean sameFile(Path a, Path b) {
         try {
@@ -135,14 +165,30 @@ final class OutputFile {
         }
     }
 
+    /** Why a file operation failed, in the system's words: {@code Permission denied}, never a Java class name. */
     static String reason(IOException e) {
-        if (e instanceof AccessDeniedException) {
-            return "Permission denied";
-        }
         if (e instanceof FileSystemException fs && fs.getReason() != null) {
             return fs.getReason();
         }
-        return String.valueOf(e.getMessage());
+        if (e instanceof AccessDeniedException) {
+            return "Permission denied";
+        }
+        if (e instanceof NoSuchFileException) {
+            return "No such file or directory";
+        }
+        if (e instanceof java.nio.file.NotDirectoryException) {
+            return "Not a directory";
+        }
+        if (e instanceof java.nio.file.DirectoryNotEmptyException) {
+            return "Is a folder";
+        }
+        if (e instanceof java.nio.file.FileAlreadyExistsException) {
+            return "File exists";
+        }
+        if (e instanceof FileSystemException || e.getMessage() == null) {
+            return "the system refused it";
+        }
+        return e.getMessage();
     }
 
     private static InputException refused(String problem) {

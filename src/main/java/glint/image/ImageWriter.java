@@ -102,6 +102,9 @@ public final class ImageWriter {
                 stopped.initCause(e);
                 throw stopped;
             }
+            if (e instanceof javax.imageio.IIOException && e.getCause() instanceof IOException cause) {
+                throw cause; // "I/O error writing PNG file!" says less than what the encoder met: "File too large"
+            }
             throw e;
         }
     }
@@ -273,6 +276,15 @@ public final class ImageWriter {
         writeAtomically(path, temporaryBeside(path), out -> writePfm(frame, out));
     }
 
+    /** The size in bytes of a PFM of this size, as {@link #writePfm(FrameBuffer, OutputStream)} writes it. */
+    public static long pfmBytes(int width, int height) {
+        return pfmHeader(width, height).length + 12L * width * height;
+    }
+
+    private static byte[] pfmHeader(int width, int height) {
+        return ("PF\n" + width + " " + height + "\n-1.0\n").getBytes(StandardCharsets.US_ASCII);
+    }
+
     /** Portable Float Map: "PF", little-endian (scale -1), rows bottom to top, linear RGB; row by row. */
     public static void writePfm(FrameBuffer frame, OutputStream out) throws IOException {
         writePfm(frame, out, new Watcher() { });
@@ -280,7 +292,7 @@ public final class ImageWriter {
 
     private static void writePfm(FrameBuffer frame, OutputStream out, Watcher watcher) throws IOException {
         int w = frame.width(), h = frame.height();
-        out.write(("PF\n" + w + " " + h + "\n-1.0\n").getBytes(StandardCharsets.US_ASCII));
+        out.write(pfmHeader(w, h));
         ByteBuffer row = ByteBuffer.allocate(12 * w).order(ByteOrder.LITTLE_ENDIAN);
         float[] rgb = frame.rgb();
         for (int y = h - 1; y >= 0; y--) {

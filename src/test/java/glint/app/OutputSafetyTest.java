@@ -152,6 +152,58 @@ class OutputSafetyTest {
         assertEquals(List.of("empty.properties", name, "scene.yaml"), files());
     }
 
+    // ---------------------------------------------------------------- under a file size limit (ulimit -f)
+
+    /**
+     * Under {@code ulimit -f}: a PFM, whose size is known, larger than the limit is refused before
+     * the work; a PNG, whose size is known only once encoded, fails at the end with the system's
+     * reason, the old image kept. Both in a real process that has the limit.
+     */
+    @Test
+    void aFileSizeLimitRefusesAPfmBeforeTheWorkAndAPngAtTheEndKeepingTheOldImage() throws Exception {
+        Files.writeString(dir.resolve("scene.yaml"), Files.readString(Path.of("scenes/default.yaml")));
+        Files.writeString(dir.resolve("old.pfm"), "old");
+        Files.writeString(dir.resolve("old.png"), "old");
+        List<String> common = List.of("--config", config.toString(), "--scene", "scene.yaml", "--spp", "1", "--threads", "1");
+        String script = "ulimit -f 8\n" // 4 KB or 8 KB, as the shell counts blocks
+                + "grep 'Max file size' /proc/self/limits\n"
+                + Child.line(concat(Child.java("-XX:-UsePerfData"), common, List.of("--output", "old.pfm", "--width", "200", "--height", "100")))
+                + "\necho \"status $?\"\n"
+                + Child.line(concat(Child.java("-XX:-UsePerfData"), common, List.of("--output", "old.png", "--width", "320", "--height", "240")))
+                + "\necho \"status $?\"\n";
+        Child.Result r = Child.sh(dir, script, Map.of());
+        List<String> out = r.out().lines().toList();
+        long limit = Long.parseLong(out.get(0).substring("Max file size".length()).trim().split("\\s+")[0]);
+        assertEquals(List.of("status 2", "status 1"), out.subList(1, 3), r.err());
+        assertEquals("glint: --output: a 200x100 PFM is 234.4 KB, more than the largest file this process may write ("
+                + glint.input.TextFiles.size(limit) + ", ulimit -f); render a smaller image, a PNG, or raise the limit\n"
+                + "glint: cannot write old.png: File too large\n", r.err());
+        assertEquals("old", Files.readString(dir.resolve("old.pfm")));
+        assertEquals("old", Files.readString(dir.resolve("old.png")));
+        assertEquals(List.of("empty.properties", "old.pfm", "old.png", "scene.yaml"), files(), "no temporary file left");
+    }
+
+    @SafeVarargs
+    private static List<String> concat(List<String>... parts) {
+        List<String> all = new ArrayList<>();
+        for (List<String> part : parts) {
+            all.addAll(part);
+        }
+        return all;
+    }
+
+    @Test
+    void theFileSizeLimitIsReadFromTheProcessLimits() throws Exception {
+        Path limits = dir.resolve("limits");
+        Files.writeString(limits, "Limit                     Soft Limit           Hard Limit           Units\n"
+                + "Max cpu time              unlimited            unlimited            seconds\n"
+                + "Max file size             51200                unlimited            bytes\n");
+        assertEquals(51200, OutputFile.fileSizeLimit(limits));
+        Files.writeString(limits, "Max file size             unlimited            unlimited            bytes\n");
+        assertEquals(Long.MAX_VALUE, OutputFile.fileSizeLimit(limits));
+        assertEquals(Long.MAX_VALUE, OutputFile.fileSizeLimit(dir.resolve("no such file")));
+    }
+
     // ---------------------------------------------------------------- as another user
 
     @Test
