@@ -27,6 +27,7 @@ class EmptyInteriorsTest {
             Primitives primitives = randomScene(random);
             boolean[] expected = PairSweepReference.findEmpty(primitives);
             assertArrayEquals(expected, EmptyInteriors.findEmpty(primitives), "scene " + scene);
+            assertArrayEquals(expected, EmptyInteriors.findEmpty(primitives, new long[1], 0), "scene " + scene + ", groups");
             for (int q = 0; q < expected.length; q++) {
                 if (primitives.closed(q)) {
                     if (expected[q]) {
@@ -38,6 +39,93 @@ class EmptyInteriorsTest {
             }
         }
         assertTrue(emptyFound > 1000 && reachedFound > 1000, emptyFound + " empty, " + reachedFound + " reached");
+    }
+
+    /**
+     * The planes asked of groups of spheres (as above 65,536 plane-sphere pairs) give the same
+     * answer, here for every scene: many planes, some of them touching a sphere to rounding.
+     */
+    @Test
+    void planesAskedOfGroupsGiveTheSameInteriors() {
+        SplittableRandom random = new SplittableRandom(SEED + 2);
+        int emptyFound = 0, reachedFound = 0;
+        for (int scene = 0; scene < 300; scene++) {
+            Primitives primitives = manyPlanes(random);
+            boolean[] expected = PairSweepReference.findEmpty(primitives);
+            assertArrayEquals(expected, EmptyInteriors.findEmpty(primitives, new long[1], 0), "scene " + scene);
+            for (int q = 0; q < primitives.kind(0).count(); q++) {
+                if (expected[q]) {
+                    emptyFound++;
+                } else {
+                    reachedFound++;
+                }
+            }
+        }
+        assertTrue(emptyFound > 1000 && reachedFound > 1000, emptyFound + " empty, " + reachedFound + " reached");
+    }
+
+    /**
+     * 50,000 planes and 50,000 separate spheres (the default max_objects): each plane is asked of
+     * groups, not of every sphere (that would be 2.5 billion pairs).
+     */
+    @Test
+    void fiftyThousandPlanesAndFiftyThousandSeparateSpheresTakeFarLessThanTheirProduct() {
+        int n = 50_000;
+        double[] s = new double[4 * n];
+        double[] planes = new double[4 * n];
+        for (int i = 0; i < n; i++) {
+            s[4 * i] = i; // in a row, so that the spheres' own sweep is linear too
+            s[4 * i + 3] = 0.3;
+            planes[4 * i + 1] = 1; // floors below them all
+            planes[4 * i + 3] = -1000 - i;
+        }
+        long[] pairs = new long[1];
+        boolean[] empty = EmptyInteriors.findEmpty(new Primitives(List.of(new Spheres(s), new Planes(planes))), pairs);
+        for (int q = 0; q < n; q++) {
+            assertTrue(empty[q], "sphere " + q);
+        }
+        assertTrue(pairs[0] <= 10L * n, pairs[0] + " pairs looked at"); // 238,016 here
+    }
+
+    /** Up to 300 spheres (some coincident or touching) and up to 60 planes, some tangent to a sphere. */
+    private static Primitives manyPlanes(SplittableRandom random) {
+        int count = 1 + random.nextInt(300);
+        double[] s = new double[4 * count];
+        for (int i = 0; i < count; i++) {
+            int k = 4 * i;
+            if (i > 0 && random.nextInt(6) == 0) {
+                System.arraycopy(s, 4 * random.nextInt(i), s, k, 4);
+            } else {
+                double scale = random.nextInt(10) == 0 ? 1e6 : 1;
+                s[k] = random.nextDouble(-30, 30) * scale;
+                s[k + 1] = random.nextDouble(-30, 30) * scale;
+                s[k + 2] = random.nextDouble(-30, 30) * scale;
+                s[k + 3] = random.nextDouble(0.01, 2) * (random.nextInt(30) == 0 ? 20 : 1);
+            }
+        }
+        int planes = random.nextInt(60);
+        double[] p = new double[4 * planes];
+        for (int i = 0; i < planes; i++) {
+            double x = random.nextDouble(-1, 1), y = random.nextDouble(-1, 1), z = random.nextDouble(-1, 1);
+            if (random.nextBoolean()) { // axis-aligned, as floors and walls are
+                x = 0;
+                z = 0;
+                y = 1;
+            }
+            double length = Math.max(1e-9, Math.sqrt(x * x + y * y + z * z));
+            double nx = x / length, ny = y / length, nz = z / length;
+            p[4 * i] = nx;
+            p[4 * i + 1] = ny;
+            p[4 * i + 2] = nz;
+            int o = 4 * random.nextInt(count);
+            double centre = nx * s[o] + ny * s[o + 1] + nz * s[o + 2];
+            p[4 * i + 3] = switch (random.nextInt(3)) {
+                case 0 -> centre + s[o + 3]; // tangent to a sphere, to rounding
+                case 1 -> centre + s[o + 3] * random.nextDouble(1, 1 + 1e-9); // just clear of it
+                default -> random.nextDouble(-40, 40);
+            };
+        }
+        return new Primitives(List.of(new Spheres(s), new Planes(p)));
     }
 
     @Test
