@@ -40,7 +40,6 @@ final class FileNames {
     /**
      * A file name given by the user as a path, or an error that says which locale is in the way and
      * how to change it.
-     *
      */
     static Path path(String name) throws InvalidNameException {
         if (name.indexOf(UNDECODED) >= 0 && asciiLocale()) {

@@ -33,7 +33,7 @@ final class OutputFile {
      * Checks {@code output} against what it must never be (one of the {@code inputs}: the scene,
      * the config) and what would fail only at the end, and makes its temporary file.
      *
-     * @return the temporary file, empty, with the permissions the image will have
+     * @return the temporary file beside the output, empty
      */
     static Path prepare(Path output, List<Path> inputs, int width, int height) throws InputException {
         if (!ImageWriter.isSupported(output)) {

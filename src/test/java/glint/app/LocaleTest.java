@@ -40,21 +40,25 @@ class LocaleTest {
         }
     }
 
-    /** A script that makes the files (names in UTF-8), then runs the program with the arguments. */
+    /**
+     * A script that makes the files (names in UTF-8), then runs the program with the arguments
+     * under the locale (none at all for null).
+     */
     private Child.Result run(String locale, String... args) throws Exception {
         Files.writeString(dir.resolve("scene.yaml"), SCENE);
         Files.writeString(dir.resolve("empty.properties"), "");
         List<String> command = new ArrayList<>(Child.java());
         command.addAll(List.of(args));
         command.addAll(List.of("--width", "8", "--height", "6", "--spp", "1", "--threads", "1"));
-        String script = "cp scene.yaml 'café.yaml'\n"
+        String script = (locale == null ? "unset LC_ALL LC_CTYPE LANG\n" : "")
+                + "cp scene.yaml 'café.yaml'\n"
                 + "printf 'scene=café.yaml\\n' > scene-cafe.properties\n"
                 + Child.line(command) + "\n"
                 + "status=$?\n"
                 + "for f in *.png; do [ -e \"$f\" ] && echo \"present: $f\"; done\n"
                 + "ls -a | grep -c part\n" // temporary files left: 0
                 + "exit $status\n";
-        Child.Result r = Child.sh(dir, script, Map.of("LC_ALL", locale));
+        Child.Result r = Child.sh(dir, script, locale == null ? Map.of() : Map.of("LC_ALL", locale));
         assertFalse(r.err().contains("java.") || r.err().contains("Exception"), r.err());
         return r;
     }
@@ -83,6 +87,14 @@ class LocaleTest {
         assertEquals(2, r.status());
         assertEquals("scene-cafe.properties:1:1: scene: the file name 'caf?.yaml' is not ASCII, and the locale "
                 + "(LC_ALL=C) allows only ASCII file names; " + FIX + "\n", r.err());
+    }
+
+    @Test
+    void withNoLocaleSetTheMessageSaysSo() throws Exception {
+        Child.Result r = run(null, "--config", "empty.properties", "--scene", "café.yaml", "--output", "out.png");
+        assertEquals(2, r.status());
+        assertEquals("glint: Invalid value for option '--scene': the file name 'caf??.yaml' is not ASCII, and the locale "
+                + "(none set, so POSIX) allows only ASCII file names; " + FIX + "\n", r.err());
     }
 
     @Test
