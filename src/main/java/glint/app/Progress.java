@@ -6,13 +6,14 @@ import java.util.concurrent.Executors;
 import java.util.concurrent.ScheduledExecutorService;
 import java.util.concurrent.TimeUnit;
 import java.util.function.DoubleSupplier;
+import java.util.function.LongSupplier;
 
 /**
  * Shows how far a long still is, on standard error, step by step (reading and preparing the scene,
  * rendering, writing the image): nothing for the first two seconds of the run, then each step as
  * it begins and, for a step that knows how far it is, percent done and time left, as a bar redrawn
- * in place on a terminal or as a plain line at every further tenth otherwise (a log, a pipe). Read
- * four times a second.
+ * in place on a terminal or as a plain line at every further tenth otherwise (a log, a pipe), and
+ * at least every 10 seconds while nothing changes. Read four times a second.
  */
 final class Progress implements AutoCloseable {
 
@@ -22,10 +23,15 @@ final class Progress implements AutoCloseable {
     /** The widest line a terminal shows, cleared before the next. */
     private static final int LINE_WIDTH = BAR_WIDTH + 60;
 
+    /** A plain line is printed at least this often while a step goes on, even with no new tenth. */
+    static final long HEARTBEAT_NANOS = 10_000_000_000L;
+
     private final PrintWriter err;
     private final boolean terminal;
-    private final long start = System.nanoTime();
+    private final LongSupplier clock;
+    private final long start;
     private final ScheduledExecutorService timer;
+    private long lastLine;
     private String step;
     private DoubleSupplier fraction;
     private long stepStart;
@@ -33,20 +39,29 @@ final class Progress implements AutoCloseable {
     private int tenthsShown = -1;
     private boolean barShown;
 
-    private Progress(PrintWriter err, boolean terminal) {
+    private Progress(PrintWriter err, boolean terminal, LongSupplier clock, boolean timed) {
         this.err = err;
         this.terminal = terminal;
-        this.timer = Executors.newSingleThreadScheduledExecutor(r -> {
+        this.clock = clock;
+        this.start = clock.getAsLong();
+        this.timer = timed ? Executors.newSingleThreadScheduledExecutor(r -> {
             Thread t = new Thread(r, "glint-progress");
             t.setDaemon(true);
             return t;
-        });
-        timer.scheduleAtFixedRate(this::show, 250, 250, TimeUnit.MILLISECONDS);
+        }) : null;
+        if (timer != null) {
+            timer.scheduleAtFixedRate(this::show, 250, 250, TimeUnit.MILLISECONDS);
+        }
     }
 
     /** Starts the clock of the run; a bar when standard error is a terminal. */
     static Progress start(PrintWriter err) {
-        return new Progress(err, System.console() != null);
+        return new Progress(err, System.console() != null, System::nanoTime, true);
+    }
+
+    /** Plain lines on the given clock, shown only when {@link #show} is called (for tests). */
+    static Progress onClock(PrintWriter err, LongSupplier clock) {
+        return new Progress(err, false, clock, false);
     }
 
     /**
@@ -57,22 +72,25 @@ final class Progress implements AutoCloseable {
     synchronized void step(String name, DoubleSupplier done) {
         step = name;
         fraction = done;
-        stepStart = System.nanoTime();
+        stepStart = clock.getAsLong();
         stepShown = false;
         tenthsShown = -1;
     }
 
-    private synchronized void show() {
-        long now = System.nanoTime();
+    /** Shows the step as it is now; called four times a second. */
+    synchronized void show() {
+        long now = clock.getAsLong();
         if (step == null || now - start < QUIET_NANOS) {
             return;
         }
         long elapsed = now - stepStart;
+        boolean heartbeat = stepShown && now - lastLine >= HEARTBEAT_NANOS; // a long stretch with nothing new
         if (fraction == null) {
             if (terminal) {
                 redraw(String.format(Locale.ROOT, "%s... %d s", step, elapsed / 1_000_000_000L));
-            } else if (!stepShown) {
-                err.println(step + "...");
+            } else if (!stepShown || heartbeat) {
+                print(stepShown ? String.format(Locale.ROOT, "%s... %d s so far", step, elapsed / 1_000_000_000L)
+                        : step + "...", now);
             }
             stepShown = true;
             return;
@@ -82,12 +100,17 @@ final class Progress implements AutoCloseable {
             redraw(step + " " + bar(f, elapsed));
         } else {
             int tenths = (int) (f * 10);
-            if (tenths > tenthsShown && f < 1) {
-                tenthsShown = tenths;
-                err.println(line(step, f, elapsed));
+            if ((tenths > tenthsShown || heartbeat) && f < 1) {
+                tenthsShown = Math.max(tenths, tenthsShown);
+                print(line(step, f, elapsed), now);
             }
         }
         stepShown = true;
+    }
+
+    private void print(String line, long now) {
+        err.println(line);
+        lastLine = now;
     }
 
     private void redraw(String text) {
@@ -100,7 +123,9 @@ final class Progress implements AutoCloseable {
     /** Stops showing; a bar on the terminal is cleared so the next line starts clean. */
     @Override
     public synchronized void close() {
-        timer.shutdownNow();
+        if (timer != null) {
+            timer.shutdownNow();
+        }
         step = null;
         if (barShown) {
             err.print("\r" + " ".repeat(LINE_WIDTH) + "\r");

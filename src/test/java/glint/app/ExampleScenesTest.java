@@ -62,7 +62,7 @@ class ExampleScenesTest {
         assertEquals(Main.OK, status, () -> "err: " + err);
         // a run over 2 s (a busy machine) shows its steps; nothing else may be printed
         assertEquals(List.of(), err.toString().lines().filter(l -> !l.matches(
-                "(reading|preparing) the scene\\.\\.\\.|(rendering|writing the image): [0-9]+% done, .*")).toList());
+                "(reading|preparing) the scene\\.\\.\\.( [0-9]+ s so far)?|(rendering|writing the image): [0-9]+% done, .*")).toList());
         BufferedImage image = ImageIO.read(png.toFile());
         assertEquals(64, image.getWidth());
         assertEquals(36, image.getHeight());

@@ -127,7 +127,7 @@ class InterruptTest {
     private static void assertStoppedWithOneLine(List<String> err) {
         assertEquals("glint: interrupted; no image written", err.get(err.size() - 1), err.toString());
         for (String line : err.subList(0, err.size() - 1)) {
-            assertTrue(line.matches("(reading|preparing) the scene\\.\\.\\.|(rendering|writing the image): [0-9]+% done, .*"),
+            assertTrue(line.matches("(reading|preparing) the scene\\.\\.\\.( [0-9]+ s so far)?|(rendering|writing the image): [0-9]+% done, .*"),
                     err.toString());
         }
     }
