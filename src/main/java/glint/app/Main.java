@@ -221,7 +221,7 @@ public final class Main implements Callable<Integer> {
         String problem = (at.line() > 0 ? "scene: no such file " : "no such scene file ")
                 + InputException.quotePath(resolved)
                 + (configured.isAbsolute() ? "" : " (scene is resolved against the config file's folder, "
-                        + folder + (at.line() > 0 ? ")" : "; the default is scenes/default.yaml)"))
+                        + InputException.cutPath(folder.toString()) + (at.line() > 0 ? ")" : "; the default is scenes/default.yaml)"))
                 + "; set scene in the config or use --scene FILE";
         throw new InputException(at.file(), at.line(), at.column(), problem);
     }
