@@ -69,8 +69,9 @@ final class OutputFile {
                 }
             }
             if (!Files.isWritable(output)) {
-                throw refused(InputException.quotePath(output)
-                        + " is read-only; make it writable (chmod u+w) or choose another output name");
+                throw refused(InputException.quotePath(output) + (ownedByAnother(output)
+                        ? " belongs to another user and is not writable for this one; choose another output name"
+                        : " is read-only; make it writable (chmod u+w) or choose another output name"));
             }
         }
         Path temp;
@@ -110,6 +111,15 @@ final class OutputFile {
             }
         } catch (UnsupportedOperationException | IllegalArgumentException | IOException e) {
             // no unix attributes here: the rename decides, and its failure keeps the old file
+        }
+    }
+
+    /** Whether the file's owner is not the user this program runs as (by name; false when unknown). */
+    private static boolean ownedByAnother(Path file) {
+        try {
+            return !Files.getOwner(file).getName().equals(System.getProperty("user.name"));
+        } catch (IOException | UnsupportedOperationException | SecurityException e) {
+            return false;
         }
     }
 

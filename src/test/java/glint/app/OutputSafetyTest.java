@@ -233,6 +233,22 @@ class OutputSafetyTest {
         assertEquals("r--r--r--", PosixFilePermissions.toString(Files.getPosixFilePermissions(image)));
     }
 
+    /** In a folder this user may write, another user's image it may not write is left alone, as > would. */
+    @Test
+    void anotherUsersImageThisUserCannotWriteIsRefusedBeforeRendering() throws Exception {
+        assumeTrue(isRoot(), "needs root to make a file of another user");
+        Path shared = sharedFolder();
+        Files.writeString(shared.resolve("scene.yaml"), SCENE);
+        Files.writeString(shared.resolve("empty.properties"), "");
+        Path image = Files.writeString(shared.resolve("out.png"), "root's"); // root's, mode 644, in nobody's folder
+        Files.setPosixFilePermissions(image, PosixFilePermissions.fromString("rw-r--r--"));
+        Child.Result r = asNobody(shared, "out.png");
+        assertEquals(2, r.status(), r.err());
+        assertEquals("glint: --output: 'out.png' belongs to another user and is not writable for this one; "
+                + "choose another output name\n", r.err());
+        assertEquals("root's", Files.readString(image));
+    }
+
     @Test
     void anotherUsersImageInAStickyFolderIsRefusedBeforeRendering() throws Exception {
         assumeTrue(isRoot(), "needs root to make a file of another user");
