@@ -91,11 +91,6 @@ final class Interrupts implements AutoCloseable, ImageWriter.Watcher {
         return stopping;
     }
 
-    /** True once the image is in place. */
-    boolean written() {
-        return written;
-    }
-
     @Override
     public boolean cancelled() {
         return stopping;
