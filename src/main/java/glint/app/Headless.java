@@ -3,7 +3,6 @@ package glint.app;
 import glint.config.Config;
 import glint.image.ImageWriter;
 import glint.input.InputException;
-import glint.input.TextFiles;
 import glint.render.FrameBuffer;
 import glint.render.RenderScene;
 import glint.render.RenderSettings;
@@ -11,17 +10,22 @@ import glint.render.Tracer;
 import glint.scene.Scene;
 import glint.scene.SceneLoader;
 import java.io.IOException;
+import java.io.InterruptedIOException;
 import java.io.PrintWriter;
 import java.nio.file.Files;
 import java.nio.file.Path;
 import java.util.Arrays;
+import java.util.List;
 import java.util.Locale;
 import java.util.concurrent.CancellationException;
 
 /** The modes without a window: render one still to a file, or time frames (--bench). */
 final class Headless {
 
-    /** Exit status of a run stopped by Ctrl-C (128 + SIGINT), as shells report it. */
+    /**
+     * Exit status of a run stopped by Ctrl-C (128 + SIGINT), as shells report it; the JVM itself
+     * exits with 128 + the number of the signal that stopped it (143 for SIGTERM).
+     */
     static final int INTERRUPTED = 130;
     /** The most frames --bench renders. */
     static final int MAX_BENCH_FRAMES = 100_000;
@@ -38,76 +42,62 @@ final class Headless {
     private Headless() {
     }
 
-    static int renderStill(Path scenePath, Config config, Path output, PrintWriter out, PrintWriter err)
+    /**
+     * Renders one still to {@code output}, which is checked first against everything that would
+     * otherwise fail only at the end or lose a file ({@link OutputFile}).
+     *
+     * @param inputs the scene file, then the config file if one was read: the output may be neither
+     */
+    static int renderStill(Path scenePath, List<Path> inputs, Config config, Path output, PrintWriter out, PrintWriter err)
             throws InputException, IOException {
-        checkOutput(output);
-        Scene scene = SceneLoader.load(scenePath, config.limits().scene());
-        RenderScene compiled = RenderScene.compile(scene, RenderSettings.of(config));
-        checkMemory(config, STILL_BYTES_PER_PIXEL, Runtime.getRuntime());
-        FrameBuffer frame = new FrameBuffer(config.displayWidth(), config.displayHeight());
-        Path temp = temporary(output); // made now: an unwritable folder is reported before rendering
-        long start = System.nanoTime();
+        Path temp = null;
         try (Interrupts interrupts = Interrupts.install(err, "glint: interrupted; no image written");
-             Tracer tracer = new Tracer(config.effectiveThreads())) {
-            interrupts.watch(tracer, temp);
-            try (Progress progress = Progress.start(tracer, err)) {
+             Progress progress = Progress.start(err)) {
+            temp = OutputFile.prepare(output, inputs, config.displayWidth(), config.displayHeight());
+            interrupts.watch(null, temp);
+            progress.step("reading the scene", null);
+            Scene scene = SceneLoader.load(scenePath, config.limits().scene());
+            progress.step("preparing the scene", null);
+            RenderScene compiled = RenderScene.compile(scene, RenderSettings.of(config));
+            checkMemory(config, STILL_BYTES_PER_PIXEL, Runtime.getRuntime());
+            FrameBuffer frame = new FrameBuffer(config.displayWidth(), config.displayHeight());
+            long start = System.nanoTime();
+            try (Tracer tracer = new Tracer(config.effectiveThreads())) {
+                interrupts.watch(tracer, temp);
+                progress.step("rendering", () -> tracer.tilesDone() / (double) tracer.frameTiles());
                 tracer.render(compiled, frame, config.samples(), 0, config.screenDivider());
             } catch (CancellationException e) {
-                Files.deleteIfExists(temp);
                 interrupts.report("glint: interrupted; no image written");
                 return INTERRUPTED;
             }
-            long elapsed = System.nanoTime() - start;
+            progress.step("writing the image", interrupts::writeProgress);
+            OutputFile.keepPermissions(output, temp);
             try {
-                ImageWriter.write(frame, output, temp);
+                ImageWriter.write(frame, output, temp, interrupts);
+            } catch (InterruptedIOException e) {
+                interrupts.report("glint: interrupted; no image written");
+                return INTERRUPTED;
             } catch (IOException e) {
                 throw new WriteFailure(output, e);
             }
+            long elapsed = System.nanoTime() - start;
+            progress.close(); // a bar on the terminal is cleared first
             out.printf(Locale.ROOT, "wrote %s (%dx%d, %d spp, %d threads, %s, depth %d) in %.1f ms%n",
                     InputException.printable(output.toString()), frame.width(), frame.height(), config.samples(), config.effectiveThreads(),
                     config.shading().key(), config.recursionMax(), elapsed / 1e6);
+            out.flush();
             return Main.OK;
         } finally {
-            Files.deleteIfExists(temp);
+            if (temp != null) {
+                Files.deleteIfExists(temp);
+            }
         }
     }
 
     /** Why an image could not be written, in one line: {@code cannot write out.png: No space left on device}. */
     static final class WriteFailure extends IOException {
         WriteFailure(Path output, IOException cause) {
-            super("cannot write " + output + ": " + reason(cause), cause);
-        }
-
-        private static String reason(IOException e) {
-            return TextFiles.unreadable("", e).problem().replaceFirst("^cannot read: ", "");
-        }
-    }
-
-    /** The output path is refused before any work if it cannot be an image file. */
-    private static void checkOutput(Path output) throws InputException {
-        if (!ImageWriter.isSupported(output)) {
-            throw new InputException("glint", 0, 0,
-                    "--output: expected a file ending in .png or .pfm, got " + "'" + output + "'");
-        }
-        if (Files.isDirectory(output)) {
-            throw new InputException("glint", 0, 0, "--output: " + "'" + output + "'"
-                    + " is a folder; expected an image file name such as out.png");
-        }
-        if (Files.exists(output) && !Files.isRegularFile(output)) {
-            throw new InputException("glint", 0, 0, "--output: " + "'" + output + "'"
-                    + " is not a regular file (a pipe or device); expected an image file name such as out.png");
-        }
-        Path folder = output.toAbsolutePath().getParent();
-        if (folder != null && !Files.isDirectory(folder)) {
-            throw new InputException("glint", 0, 0, "--output: no such folder " + "'" + folder + "'");
-        }
-    }
-
-    private static Path temporary(Path output) throws IOException {
-        try {
-            return ImageWriter.temporaryBeside(output);
-        } catch (IOException e) {
-            throw new WriteFailure(output, e);
+            super("cannot write " + InputException.cutPath(output.toString()) + ": " + OutputFile.reason(cause), cause);
         }
     }
 

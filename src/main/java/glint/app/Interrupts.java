@@ -1,32 +1,43 @@
 package glint.app;
 
+import glint.image.ImageWriter;
 import glint.render.Tracer;
 import java.io.IOException;
+import java.io.InterruptedIOException;
+import java.io.PrintWriter;
 import java.nio.file.Files;
 import java.nio.file.Path;
+import java.util.List;
 import java.util.concurrent.CountDownLatch;
 import java.util.concurrent.TimeUnit;
+import java.util.concurrent.atomic.AtomicBoolean;
 
 /**
- * Ctrl-C (SIGINT) or SIGTERM during a headless render: cancels the tracer at once, gives the main
- * thread a moment to stop and clean up, and deletes the image's temporary file, so that no partial
- * image is left and no stack trace is printed. Installed for the length of one run.
+ * A signal that ends the program (Ctrl-C's SIGINT, SIGTERM, SIGHUP, and the others of
+ * {@link #OTHER_ENDING_SIGNALS}) during a headless run: cancels
+ * the render or the image's write at once, gives the main thread a moment to stop and clean up, and
+ * deletes the image's temporary file, so that no partial image is left and no stack trace is
+ * printed. The rename that puts a finished image in place and the decision to stop exclude each
+ * other: either the image was written (and the program says so) or it was not (and an existing one
+ * is as it was). Installed for the length of one run; the JVM exits with 128 + the signal's number.
  */
-final class Interrupts implements AutoCloseable {
+final class Interrupts implements AutoCloseable, ImageWriter.Watcher {
 
     /** How long the JVM waits for the main thread to stop before it exits anyway. */
     static final long WAIT_MILLIS = 2000;
 
     private final Thread hook = new Thread(this::stop, "glint-interrupt");
     private final CountDownLatch finished = new CountDownLatch(1);
+    private final AtomicBoolean reported = new AtomicBoolean();
+    private final PrintWriter err;
+    private final String message;
     private volatile Tracer tracer;
     private volatile Path temp;
     private volatile boolean stopping;
-    private final java.util.concurrent.atomic.AtomicBoolean reported = new java.util.concurrent.atomic.AtomicBoolean();
-    private final java.io.PrintWriter err;
-    private final String message;
+    private volatile boolean written;
+    private volatile double writeProgress;
 
-    private Interrupts(java.io.PrintWriter err, String message) {
+    private Interrupts(PrintWriter err, String message) {
         this.err = err;
         this.message = message;
     }
@@ -34,20 +45,43 @@ final class Interrupts implements AutoCloseable {
     /**
      * Installs the hook for one run.
      *
-     * @param message what to print when stopped, by the main thread or, if it does not stop in
-     *                time (a tile that takes long), by the hook
+     * @param message what to print when stopped before anything was written, by the main thread or,
+     *                if it does not stop in time (a tile that takes long), by the hook
      */
-    static Interrupts install(java.io.PrintWriter err, String message) {
+    static Interrupts install(PrintWriter err, String message) {
         Interrupts interrupts = new Interrupts(err, message);
         Runtime.getRuntime().addShutdownHook(interrupts.hook);
         return interrupts;
     }
 
+    /**
+     * Signals whose default action ends the JVM without running its shutdown hooks (which the JVM
+     * runs only for SIGINT, SIGTERM and SIGHUP): a run they stop would leave its temporary file.
+     */
+    static final List<String> OTHER_ENDING_SIGNALS = List.of("USR1", "USR2", "ALRM", "VTALRM", "PROF", "XCPU", "POLL", "PWR");
+
+    /**
+     * Makes the {@link #OTHER_ENDING_SIGNALS} end the program as SIGTERM does: hooks run, status
+     * 128 + the signal's number. Called once by the program's {@code main}; a signal this platform
+     * does not have, or the JVM keeps for itself, is left as it is.
+     */
+    static void handleOtherEndingSignals() {
+        for (String name : OTHER_ENDING_SIGNALS) {
+            try {
+                sun.misc.Signal.handle(new sun.misc.Signal(name), signal -> System.exit(128 + signal.getNumber()));
+            } catch (IllegalArgumentException | UnsupportedOperationException e) {
+                // not a signal here, or used by the JVM
+            }
+        }
+    }
+
     /** The tracer to cancel and the temporary file to delete if the program is stopped. */
     void watch(Tracer renderer, Path temporaryFile) {
         this.tracer = renderer;
-        this.temp = temporaryFile;
-        if (stopping) {
+        if (temporaryFile != null) {
+            this.temp = temporaryFile;
+        }
+        if (stopping && renderer != null) {
             renderer.cancel();
         }
     }
@@ -57,9 +91,38 @@ final class Interrupts implements AutoCloseable {
         return stopping;
     }
 
+    @Override
+    public boolean cancelled() {
+        return stopping;
+    }
+
+    @Override
+    public void progress(double fraction) {
+        writeProgress = fraction;
+    }
+
+    /** How far the image's write is, from 0 to 1. */
+    double writeProgress() {
+        return writeProgress;
+    }
+
+    /** Renames the finished image into place, unless the program is being stopped. */
+    @Override
+    public void replace(ImageWriter.Rename rename) throws IOException {
+        synchronized (this) {
+            if (stopping) {
+                throw new InterruptedIOException("interrupted");
+            }
+            rename.run();
+            written = true;
+        }
+    }
+
     /** What the shutdown hook does; also callable directly. */
     void stop() {
-        stopping = true;
+        synchronized (this) { // after a rename under way, before any other
+            stopping = true;
+        }
         Tracer t = tracer;
         if (t != null) {
             t.cancel();
@@ -70,7 +133,9 @@ final class Interrupts implements AutoCloseable {
             Thread.currentThread().interrupt();
         }
         deleteTemp();
-        report(message);
+        if (!written) {
+            report(message);
+        }
     }
 
     /** Prints the line saying the run was stopped, once, whoever comes first. */

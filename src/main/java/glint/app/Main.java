@@ -9,6 +9,7 @@ import glint.render.RenderSettings;
 import java.io.PrintWriter;
 import java.nio.file.Files;
 import java.nio.file.Path;
+import java.util.ArrayList;
 import java.util.List;
 import java.util.concurrent.Callable;
 import picocli.CommandLine;
@@ -61,6 +62,7 @@ public final class Main implements Callable<Integer> {
     private PrintWriter err = new PrintWriter(System.err, true);
 
     public static void main(String[] args) {
+        Interrupts.handleOtherEndingSignals();
         System.exit(run(args, new PrintWriter(System.out, true), new PrintWriter(System.err, true)));
     }
 
@@ -74,8 +76,12 @@ public final class Main implements Callable<Integer> {
         cli.setOut(out);
         cli.setErr(err);
         cli.registerConverter(Integer.class, Main::wholeNumber);
+        cli.registerConverter(Path.class, Main::fileName);
         cli.setParameterExceptionHandler((e, a) -> {
-            err.println(InputException.printable("glint: " + e.getMessage()));
+            err.println(line("glint: " + e.getMessage()));
+            if (String.valueOf(e.getMessage()).endsWith(FileNames.FIX)) {
+                return BAD_INPUT; // the options are right: the locale is not
+            }
             err.println("Try 'java -jar target/glint.jar --help' for the options.");
             return BAD_INPUT;
         });
@@ -85,14 +91,18 @@ public final class Main implements Callable<Integer> {
                 return BAD_INPUT;
             }
             if (e instanceof Headless.WriteFailure failure) {
-                err.println(InputException.printable("glint: " + failure.getMessage()));
+                err.println(line("glint: " + failure.getMessage()));
                 return FAILURE;
             }
             if (e.getCause() instanceof OutOfMemoryError) { // in a render thread
                 err.println(outOfMemory(e.getCause()));
                 return FAILURE;
             }
-            err.println(InputException.printable("glint: " + e));
+            if (e instanceof java.nio.file.FileSystemException fs && fs.getFile() != null) {
+                err.println(line("glint: " + InputException.cutPath(fs.getFile()) + ": " + OutputFile.reason(fs)));
+                return FAILURE;
+            }
+            err.println(line("glint: " + (e instanceof java.io.IOException && e.getMessage() != null ? e.getMessage() : e)));
             return FAILURE;
         });
         try {
@@ -101,6 +111,18 @@ public final class Main implements Callable<Integer> {
             err.println(outOfMemory(e));
             return FAILURE;
         }
+    }
+
+    /** The most characters a line of a message from elsewhere (the parser, the system) is given. */
+    static final int MAX_LINE = 1000;
+
+    /**
+     * A message made elsewhere as one printable line: quoted values cut as by
+     * {@link InputException#quote}, and the whole cut to {@link #MAX_LINE} characters.
+     */
+    static String line(String message) {
+        String text = InputException.printable(InputException.cutQuoted(message));
+        return text.length() <= MAX_LINE ? text : text.substring(0, MAX_LINE - 3) + "...";
     }
 
     private static String outOfMemory(Throwable e) {
@@ -121,6 +143,15 @@ public final class Main implements Callable<Integer> {
         return (int) n;
     }
 
+    /** An option's file name; one the platform cannot take is refused in words. */
+    static Path fileName(String text) {
+        try {
+            return FileNames.path(text);
+        } catch (FileNames.InvalidNameException e) {
+            throw new CommandLine.TypeConversionException(e.getMessage());
+        }
+    }
+
     @Override
     public Integer call() throws Exception {
         notEmpty("--scene", scene);
@@ -132,7 +163,12 @@ public final class Main implements Callable<Integer> {
             throw new InputException("glint", 0, 0, "--output and --bench cannot be used together");
         }
         if (output != null) {
-            return Headless.renderStill(scenePath, settings, output, out, err);
+            List<Path> inputs = new ArrayList<>(List.of(scenePath));
+            Path configFile = config != null ? config : Path.of("config.properties");
+            if (Files.exists(configFile)) {
+                inputs.add(configFile);
+            }
+            return Headless.renderStill(scenePath, inputs, settings, output, out, err);
         }
         if (bench != null) {
             if (bench < 1 || bench > Headless.MAX_BENCH_FRAMES) {
@@ -165,9 +201,16 @@ public final class Main implements Callable<Integer> {
      * against which folder the path was resolved.
      */
     private Path sceneFromConfig(Config settings) throws InputException {
-        Path configured = Path.of(settings.scene());
         Path configFile = config != null ? config : Files.exists(Path.of("config.properties"))
                 ? Path.of("config.properties") : null;
+        Path configured;
+        try {
+            configured = FileNames.path(settings.scene());
+        } catch (FileNames.InvalidNameException e) {
+            InputException at = configFile != null ? ConfigLoader.errorAt(configFile, "scene", "")
+                    : new InputException("glint", 0, 0, "");
+            throw new InputException(at.file(), at.line(), at.column(), "scene: " + e.getMessage());
+        }
         Path resolved = configured.isAbsolute() || config == null || config.getParent() == null
                 ? configured : config.getParent().resolve(configured);
         if (configFile == null || Files.exists(resolved)) {
@@ -176,9 +219,9 @@ public final class Main implements Callable<Integer> {
         Path folder = configFile.toAbsolutePath().getParent();
         InputException at = ConfigLoader.errorAt(configFile, "scene", "");
         String problem = (at.line() > 0 ? "scene: no such file " : "no such scene file ")
-                + "'" + resolved + "'"
+                + InputException.quotePath(resolved)
                 + (configured.isAbsolute() ? "" : " (scene is resolved against the config file's folder, "
-                        + folder + (at.line() > 0 ? ")" : "; the default is scenes/default.yaml)"))
+                        + InputException.cutPath(folder.toString()) + (at.line() > 0 ? ")" : "; the default is scenes/default.yaml)"))
                 + "; set scene in the config or use --scene FILE";
         throw new InputException(at.file(), at.line(), at.column(), problem);
     }

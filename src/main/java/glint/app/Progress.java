@@ -1,81 +1,147 @@
 package glint.app;
 
-import glint.render.Tracer;
 import java.io.PrintWriter;
 import java.util.Locale;
 import java.util.concurrent.Executors;
 import java.util.concurrent.ScheduledExecutorService;
 import java.util.concurrent.TimeUnit;
+import java.util.function.DoubleSupplier;
+import java.util.function.LongSupplier;
 
 /**
- * Shows how far a long still render is, on standard error: nothing for the first two seconds, then
- * percent done and time left, as a bar redrawn in place on a terminal or as a plain line at every
- * further tenth otherwise (a log, a pipe). Read from the tracer's tile count four times a second.
+ * Shows how far a long still is, on standard error, step by step (reading and preparing the scene,
+ * rendering, writing the image): nothing for the first two seconds of the run, then each step as
+ * it begins and, for a step that knows how far it is, percent done and time left, as a bar redrawn
+ * in place on a terminal or as a plain line at every further tenth otherwise (a log, a pipe), and
+ * at least every 10 seconds while nothing changes. Read four times a second.
  */
 final class Progress implements AutoCloseable {
 
-    /** Renders shorter than this show nothing. */
+    /** Runs shorter than this show nothing. */
     static final long QUIET_NANOS = 2_000_000_000L;
     private static final int BAR_WIDTH = 30;
+    /** The widest line a terminal shows, cleared before the next. */
+    private static final int LINE_WIDTH = BAR_WIDTH + 60;
 
-    private final Tracer tracer;
+    /** A plain line is printed at least this often while a step goes on, even with no new tenth. */
+    static final long HEARTBEAT_NANOS = 10_000_000_000L;
+
     private final PrintWriter err;
     private final boolean terminal;
-    private final long start = System.nanoTime();
+    private final LongSupplier clock;
+    private final long start;
     private final ScheduledExecutorService timer;
+    private long lastLine;
+    private String step;
+    private DoubleSupplier fraction;
+    private long stepStart;
+    private boolean stepShown;
     private int tenthsShown = -1;
     private boolean barShown;
 
-    private Progress(Tracer tracer, PrintWriter err, boolean terminal) {
-        this.tracer = tracer;
+    private Progress(PrintWriter err, boolean terminal, LongSupplier clock, boolean timed) {
         this.err = err;
         this.terminal = terminal;
-        this.timer = Executors.newSingleThreadScheduledExecutor(r -> {
+        this.clock = clock;
+        this.start = clock.getAsLong();
+        this.timer = timed ? Executors.newSingleThreadScheduledExecutor(r -> {
             Thread t = new Thread(r, "glint-progress");
             t.setDaemon(true);
             return t;
-        });
-        timer.scheduleAtFixedRate(this::show, 250, 250, TimeUnit.MILLISECONDS);
+        }) : null;
+        if (timer != null) {
+            timer.scheduleAtFixedRate(this::show, 250, 250, TimeUnit.MILLISECONDS);
+        }
     }
 
-    /** Starts showing the progress of the tracer's frame; a bar when standard error is a terminal. */
-    static Progress start(Tracer tracer, PrintWriter err) {
-        return new Progress(tracer, err, System.console() != null);
+    /** Starts the clock of the run; a bar when standard error is a terminal. */
+    static Progress start(PrintWriter err) {
+        return new Progress(err, System.console() != null, System::nanoTime, true);
     }
 
-    private synchronized void show() {
-        long elapsed = System.nanoTime() - start;
-        if (elapsed < QUIET_NANOS) {
+    /** Plain lines on the given clock, shown only when {@link #show} is called (for tests). */
+    static Progress onClock(PrintWriter err, LongSupplier clock) {
+        return new Progress(err, false, clock, false);
+    }
+
+    /**
+     * The run goes on to the next step.
+     *
+     * @param done the fraction of the step done, from 0 to 1, or null when the step cannot tell
+     */
+    synchronized void step(String name, DoubleSupplier done) {
+        step = name;
+        fraction = done;
+        stepStart = clock.getAsLong();
+        stepShown = false;
+        tenthsShown = -1;
+    }
+
+    /** Shows the step as it is now; called four times a second. */
+    synchronized void show() {
+        long now = clock.getAsLong();
+        if (step == null || now - start < QUIET_NANOS) {
             return;
         }
-        double fraction = Math.min(1, tracer.tilesDone() / (double) tracer.frameTiles());
+        long elapsed = now - stepStart;
+        boolean heartbeat = stepShown && now - lastLine >= HEARTBEAT_NANOS; // a long stretch with nothing new
+        if (fraction == null) {
+            if (terminal) {
+                redraw(String.format(Locale.ROOT, "%s... %d s", step, elapsed / 1_000_000_000L));
+            } else if (!stepShown || heartbeat) {
+                print(stepShown ? String.format(Locale.ROOT, "%s... %d s so far", step, elapsed / 1_000_000_000L)
+                        : step + "...", now);
+            }
+            stepShown = true;
+            return;
+        }
+        double f = Math.max(0, Math.min(1, fraction.getAsDouble()));
         if (terminal) {
-            err.print("\r" + bar(fraction, elapsed));
-            err.flush();
-            barShown = true;
+            redraw(step + " " + bar(f, elapsed));
         } else {
-            int tenths = (int) (fraction * 10);
-            if (tenths > tenthsShown && fraction < 1) {
-                tenthsShown = tenths;
-                err.println(line(fraction, elapsed));
+            int tenths = (int) (f * 10);
+            if ((tenths > tenthsShown || heartbeat) && f < 1) {
+                tenthsShown = Math.max(tenths, tenthsShown);
+                print(line(step, f, elapsed), now);
             }
         }
+        stepShown = true;
+    }
+
+    private void print(String line, long now) {
+        err.println(line);
+        lastLine = now;
+    }
+
+    private void redraw(String text) {
+        String shown = text.length() > LINE_WIDTH ? text.substring(0, LINE_WIDTH) : text;
+        err.print("\r" + shown + " ".repeat(LINE_WIDTH - shown.length()));
+        err.flush();
+        barShown = true;
     }
 
     /** Stops showing; a bar on the terminal is cleared so the next line starts clean. */
     @Override
     public synchronized void close() {
-        timer.shutdownNow();
+        if (timer != null) {
+            timer.shutdownNow();
+        }
+        step = null;
         if (barShown) {
-            err.print("\r" + " ".repeat(BAR_WIDTH + 32) + "\r");
+            err.print("\r" + " ".repeat(LINE_WIDTH) + "\r");
             err.flush();
             barShown = false;
         }
     }
 
-    /** A plain progress line: {@code rendering: 25% done, about 30 s left}. */
+    /** A plain progress line of the render: {@code rendering: 25% done, about 30 s left}. */
     static String line(double fraction, long elapsedNanos) {
-        return String.format(Locale.ROOT, "rendering: %d%% done, %s", (int) (fraction * 100), left(fraction, elapsedNanos));
+        return line("rendering", fraction, elapsedNanos);
+    }
+
+    /** A plain progress line of a step: {@code writing the image: 25% done, about 30 s left}. */
+    static String line(String step, double fraction, long elapsedNanos) {
+        return String.format(Locale.ROOT, "%s: %d%% done, %s", step, (int) (fraction * 100), left(fraction, elapsedNanos));
     }
 
     /** A progress bar: {@code [#######                       ] 25%, about 30 s left}. */

@@ -2,8 +2,11 @@ package glint.image;
 
 import glint.render.FrameBuffer;
 import java.awt.image.BufferedImage;
+import java.awt.image.DataBufferInt;
 import java.io.BufferedOutputStream;
+import java.io.FilterOutputStream;
 import java.io.IOException;
+import java.io.InterruptedIOException;
 import java.io.OutputStream;
 import java.nio.ByteBuffer;
 import java.nio.ByteOrder;
@@ -15,6 +18,7 @@ import java.nio.file.StandardCopyOption;
 import java.util.Iterator;
 import java.util.Locale;
 import javax.imageio.ImageIO;
+import javax.imageio.event.IIOWriteProgressListener;
 import javax.imageio.stream.ImageOutputStream;
 import javax.imageio.stream.MemoryCacheImageOutputStream;
 
@@ -30,6 +34,9 @@ public final class ImageWriter {
     public interface Content {
         void writeTo(OutputStream out) throws IOException;
     }
+
+    /** The most characters of the image's name a temporary file's name repeats. */
+    static final int MAX_TEMP_STEM = 60;
 
     private ImageWriter() {
     }
@@ -49,9 +56,85 @@ public final class ImageWriter {
      * {@code path}; {@code temp} is gone afterwards, whether the write succeeded or not.
      */
     public static void write(FrameBuffer frame, Path path, Path temp) throws IOException {
+        write(frame, path, temp, new Watcher() { });
+    }
+
+    /**
+     * What the caller of a long write sees and decides: how far it is, whether to give up (the
+     * program is being stopped), and the rename that puts the image in place, which a watcher runs
+     * under its own lock so that "written" and "not written" can never both be said.
+     */
+    public interface Watcher {
+        /** The fraction of the write done, from 0 to 1. */
+        default void progress(double fraction) {
+        }
+
+        /** True when the write should stop; it then fails with an {@link InterruptedIOException}. */
+        default boolean cancelled() {
+            return false;
+        }
+
+        /** Runs the rename, or throws {@link InterruptedIOException} without running it when cancelled. */
+        default void replace(Rename rename) throws IOException {
+            rename.run();
+        }
+    }
+
+    /** The rename of the complete temporary file to the image's name. */
+    @FunctionalInterface
+    public interface Rename {
+        void run() throws IOException;
+    }
+
+    /**
+     * As {@link #write(FrameBuffer, Path, Path)}, reporting progress to the watcher and stopping
+     * (temporary file deleted, the image as it was) when it says so.
+     */
+    public static void write(FrameBuffer frame, Path path, Path temp, Watcher watcher) throws IOException {
         String name = path.getFileName().toString().toLowerCase(Locale.ROOT);
-        Content content = name.endsWith(".pfm") ? out -> writePfm(frame, out) : out -> writePng(toImage(frame), out);
-        writeAtomically(path, temp, content);
+        Content content = name.endsWith(".pfm") ? out -> writePfm(frame, out, watcher)
+                : out -> writePng(toImage(frame, watcher), out, watcher);
+        try {
+            writeAtomically(path, temp, out -> content.writeTo(new CancellableStream(out, watcher)), watcher);
+        } catch (IOException e) {
+            if (watcher.cancelled() && !(e instanceof InterruptedIOException)) { // the encoder wraps what it met
+                InterruptedIOException stopped = new InterruptedIOException("interrupted");
+                stopped.initCause(e);
+                throw stopped;
+            }
+            if (e instanceof javax.imageio.IIOException && e.getCause() instanceof IOException cause) {
+                throw cause; // "I/O error writing PNG file!" says less than what the encoder met: "File too large"
+            }
+            throw e;
+        }
+    }
+
+    /** Stops a write at its next bytes once the watcher says so. */
+    private static final class CancellableStream extends FilterOutputStream {
+        private final Watcher watcher;
+
+        CancellableStream(OutputStream out, Watcher watcher) {
+            super(out);
+            this.watcher = watcher;
+        }
+
+        @Override
+        public void write(int b) throws IOException {
+            check(watcher);
+            out.write(b);
+        }
+
+        @Override
+        public void write(byte[] b, int off, int len) throws IOException {
+            check(watcher);
+            out.write(b, off, len);
+        }
+    }
+
+    private static void check(Watcher watcher) throws InterruptedIOException {
+        if (watcher.cancelled()) {
+            throw new InterruptedIOException("interrupted");
+        }
     }
 
     /**
@@ -62,7 +145,11 @@ public final class ImageWriter {
         Path folder = path.toAbsolutePath().getParent();
         // not Files.createTempFile: its file is private (0600), and the image would keep that mode
         for (int attempt = 0; ; attempt++) {
-            Path temp = folder.resolve("." + path.getFileName() + "." + Long.toHexString(System.nanoTime()) + ".part");
+            String name = path.getFileName().toString();
+            if (name.length() > MAX_TEMP_STEM) { // the suffix must not push a long name past the folder's limit
+                name = name.substring(0, Character.isHighSurrogate(name.charAt(MAX_TEMP_STEM - 1)) ? MAX_TEMP_STEM - 1 : MAX_TEMP_STEM);
+            }
+            Path temp = folder.resolve("." + name + "." + Long.toHexString(System.nanoTime()) + ".part");
             try {
                 return Files.createFile(temp);
             } catch (java.nio.file.FileAlreadyExistsException e) {
@@ -75,15 +162,22 @@ public final class ImageWriter {
 
     /** Writes {@code content} to {@code temp}, then renames it to {@code path}; deletes temp on failure. */
     public static void writeAtomically(Path path, Path temp, Content content) throws IOException {
+        writeAtomically(path, temp, content, new Watcher() { });
+    }
+
+    /** As {@link #writeAtomically(Path, Path, Content)}, the rename run by the watcher. */
+    public static void writeAtomically(Path path, Path temp, Content content, Watcher watcher) throws IOException {
         try {
             try (OutputStream out = new BufferedOutputStream(Files.newOutputStream(temp), 1 << 16)) {
                 content.writeTo(out);
             }
-            try {
-                Files.move(temp, path, StandardCopyOption.ATOMIC_MOVE, StandardCopyOption.REPLACE_EXISTING);
-            } catch (AtomicMoveNotSupportedException e) {
-                Files.move(temp, path, StandardCopyOption.REPLACE_EXISTING);
-            }
+            watcher.replace(() -> {
+                try {
+                    Files.move(temp, path, StandardCopyOption.ATOMIC_MOVE, StandardCopyOption.REPLACE_EXISTING);
+                } catch (AtomicMoveNotSupportedException e) {
+                    Files.move(temp, path, StandardCopyOption.REPLACE_EXISTING);
+                }
+            });
         } finally {
             Files.deleteIfExists(temp);
         }
@@ -91,15 +185,29 @@ public final class ImageWriter {
 
     /** The frame as an 8-bit sRGB image. */
     public static BufferedImage toImage(FrameBuffer frame) {
+        try {
+            return toImage(frame, new Watcher() { });
+        } catch (InterruptedIOException e) {
+            throw new IllegalStateException(e); // a watcher that never cancels
+        }
+    }
+
+    /** The share of a PNG's write spent making its 8-bit image; the encoding is the rest. */
+    private static final double IMAGE_SHARE = 0.2;
+
+    private static BufferedImage toImage(FrameBuffer frame, Watcher watcher) throws InterruptedIOException {
         BufferedImage image = new BufferedImage(frame.width(), frame.height(), BufferedImage.TYPE_INT_RGB);
         float[] rgb = frame.rgb();
-        int[] row = new int[frame.width()];
+        int[] pixels = ((DataBufferInt) image.getRaster().getDataBuffer()).getData(); // row by row, 0xRRGGBB
         for (int y = 0; y < frame.height(); y++) {
-            for (int x = 0; x < frame.width(); x++) {
-                int i = 3 * (y * frame.width() + x);
-                row[x] = Srgb.to8Bit(rgb[i]) << 16 | Srgb.to8Bit(rgb[i + 1]) << 8 | Srgb.to8Bit(rgb[i + 2]);
+            for (int x = 0, p = y * frame.width(); x < frame.width(); x++, p++) {
+                int i = 3 * p;
+                pixels[p] = Srgb.to8Bit(rgb[i]) << 16 | Srgb.to8Bit(rgb[i + 1]) << 8 | Srgb.to8Bit(rgb[i + 2]);
             }
-            image.setRGB(0, y, frame.width(), 1, row, 0, frame.width());
+            if ((y & 63) == 63) {
+                check(watcher);
+                watcher.progress(IMAGE_SHARE * y / frame.height());
+            }
         }
         return image;
     }
@@ -109,17 +217,55 @@ public final class ImageWriter {
      * file cache, whose clean-up thread prints a stack trace when a write fails).
      */
     public static void writePng(BufferedImage image, OutputStream out) throws IOException {
+        writePng(image, out, new Watcher() { });
+    }
+
+    private static void writePng(BufferedImage image, OutputStream out, Watcher watcher) throws IOException {
         Iterator<javax.imageio.ImageWriter> writers = ImageIO.getImageWritersByFormatName("png");
         if (!writers.hasNext()) {
             throw new IOException("no PNG writer available");
         }
         javax.imageio.ImageWriter writer = writers.next();
+        writer.addIIOWriteProgressListener(new IIOWriteProgressListener() {
+            @Override
+            public void imageProgress(javax.imageio.ImageWriter source, float percentageDone) {
+                watcher.progress(IMAGE_SHARE + (1 - IMAGE_SHARE) * percentageDone / 100);
+                if (watcher.cancelled()) {
+                    source.abort();
+                }
+            }
+
+            @Override
+            public void imageStarted(javax.imageio.ImageWriter source, int imageIndex) {
+            }
+
+            @Override
+            public void imageComplete(javax.imageio.ImageWriter source) {
+            }
+
+            @Override
+            public void thumbnailStarted(javax.imageio.ImageWriter source, int imageIndex, int thumbnailIndex) {
+            }
+
+            @Override
+            public void thumbnailProgress(javax.imageio.ImageWriter source, float percentageDone) {
+            }
+
+            @Override
+            public void thumbnailComplete(javax.imageio.ImageWriter source) {
+            }
+
+            @Override
+            public void writeAborted(javax.imageio.ImageWriter source) {
+            }
+        });
         try (ImageOutputStream stream = new MemoryCacheImageOutputStream(out)) {
             writer.setOutput(stream);
             writer.write(image);
         } finally {
             writer.dispose();
         }
+        check(watcher); // an aborted encoding returns early, its file incomplete
     }
 
     public static void writePng(FrameBuffer frame, Path path) throws IOException {
@@ -130,10 +276,23 @@ public final class ImageWriter {
         writeAtomically(path, temporaryBeside(path), out -> writePfm(frame, out));
     }
 
+    /** The size in bytes of a PFM of this size, as {@link #writePfm(FrameBuffer, OutputStream)} writes it. */
+    public static long pfmBytes(int width, int height) {
+        return pfmHeader(width, height).length + 12L * width * height;
+    }
+
+    private static byte[] pfmHeader(int width, int height) {
+        return ("PF\n" + width + " " + height + "\n-1.0\n").getBytes(StandardCharsets.US_ASCII);
+    }
+
     /** Portable Float Map: "PF", little-endian (scale -1), rows bottom to top, linear RGB; row by row. */
     public static void writePfm(FrameBuffer frame, OutputStream out) throws IOException {
+        writePfm(frame, out, new Watcher() { });
+    }
+
+    private static void writePfm(FrameBuffer frame, OutputStream out, Watcher watcher) throws IOException {
         int w = frame.width(), h = frame.height();
-        out.write(("PF\n" + w + " " + h + "\n-1.0\n").getBytes(StandardCharsets.US_ASCII));
+        out.write(pfmHeader(w, h));
         ByteBuffer row = ByteBuffer.allocate(12 * w).order(ByteOrder.LITTLE_ENDIAN);
         float[] rgb = frame.rgb();
         for (int y = h - 1; y >= 0; y--) {
@@ -142,6 +301,9 @@ public final class ImageWriter {
                 row.putFloat(rgb[(int) i]);
             }
             out.write(row.array(), 0, row.position());
+            if ((y & 63) == 0) {
+                watcher.progress((h - y) / (double) h);
+            }
         }
     }
 }

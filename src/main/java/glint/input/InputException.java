@@ -20,7 +20,7 @@ public final class InputException extends Exception {
     }
 
     private static String format(String file, int line, int column, String problem) {
-        StringBuilder sb = new StringBuilder(file);
+        StringBuilder sb = new StringBuilder(cutPath(file));
         if (line > 0) {
             sb.append(':').append(line);
             if (column > 0) {
@@ -60,16 +60,54 @@ public final class InputException extends Exception {
                 || c == 0x200e || c == 0x200f || c == 0x2028 || c == 0x2029;
     }
 
+    /** The most characters of a value the user wrote that a message shows. */
+    public static final int MAX_QUOTED = 60;
+    /** The most characters of a file name a message shows: its first and last 60. */
+    public static final int MAX_PATH = 2 * MAX_QUOTED;
+
     /** What the user wrote, in quotes, cut to its first 60 characters: {@code 'text'} or {@code 'text...'}. */
     public static String quote(String text) {
-        int cut = 60;
-        if (text.length() <= cut) {
-            return "'" + text + "'";
+        return "'" + head(text, MAX_QUOTED) + (text.length() > MAX_QUOTED ? "...'" : "'");
+    }
+
+    /**
+     * A file name for a message: as it is up to 120 characters, else its first and last 60 around
+     * {@code ...} (the end names the file, the start where it is).
+     */
+    public static String cutPath(String path) {
+        if (path.length() <= MAX_PATH) {
+            return path;
         }
-        if (Character.isHighSurrogate(text.charAt(cut - 1))) {
-            cut--;
+        int from = path.length() - MAX_QUOTED;
+        if (Character.isLowSurrogate(path.charAt(from))) {
+            from++;
         }
-        return "'" + text.substring(0, cut) + "...'";
+        return head(path, MAX_QUOTED) + "..." + path.substring(from);
+    }
+
+    /** A file name in quotes, cut as by {@link #cutPath}. */
+    public static String quotePath(Object path) {
+        return "'" + cutPath(String.valueOf(path)) + "'";
+    }
+
+    /**
+     * The message with every quoted part longer than 60 characters cut as by {@link #quote}: for
+     * messages made elsewhere (the argument parser's) that echo what the user typed.
+     */
+    public static String cutQuoted(String message) {
+        java.util.regex.Matcher m = java.util.regex.Pattern.compile("'([^']{" + (MAX_QUOTED + 1) + ",})'").matcher(message);
+        StringBuilder sb = new StringBuilder();
+        while (m.find()) {
+            m.appendReplacement(sb, java.util.regex.Matcher.quoteReplacement(quote(m.group(1))));
+        }
+        return m.appendTail(sb).toString();
+    }
+
+    private static String head(String text, int max) {
+        if (text.length() <= max) {
+            return text;
+        }
+        return text.substring(0, Character.isHighSurrogate(text.charAt(max - 1)) ? max - 1 : max);
     }
 
     public String file() {

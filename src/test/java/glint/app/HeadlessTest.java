@@ -63,6 +63,48 @@ class HeadlessTest {
     }
 
     @Test
+    void everyStepThatKnowsHowFarItIsHasTheSameLine() {
+        assertEquals("writing the image: 50% done, about 3 s left", Progress.line("writing the image", 0.5, 3_000_000_000L));
+    }
+
+    /**
+     * Plain lines on a clock the test moves: nothing for 2 s, each step as it begins, a line at every
+     * further tenth, and one at least every 10 s while nothing changes (a stretch of slow tiles, a
+     * long compile), so that a log never falls silent.
+     */
+    @Test
+    void aStepShowsItselfAtEveryTenthAndAtLeastEveryTenSeconds() {
+        long[] now = {0};
+        double[] done = {0};
+        java.io.StringWriter text = new java.io.StringWriter();
+        Progress progress = Progress.onClock(new java.io.PrintWriter(text, true), () -> now[0]);
+        progress.step("preparing the scene", null);
+        at(progress, now, 1.0);             // quiet for the first 2 s
+        at(progress, now, 2.5);             // preparing the scene...
+        at(progress, now, 8.0);
+        at(progress, now, 12.5);            // preparing the scene... 12 s so far
+        progress.step("rendering", () -> done[0]);
+        done[0] = 0.05;
+        at(progress, now, 13.0);            // rendering: 5% done
+        done[0] = 0.06;
+        at(progress, now, 18.0);            // no new tenth, not 10 s yet
+        at(progress, now, 23.0);            // 10 s since the last line
+        done[0] = 0.12;
+        at(progress, now, 24.0);            // a new tenth
+        done[0] = 1;
+        at(progress, now, 40.0);            // done: the step's end is the report line, not a progress line
+        progress.close();
+        assertEquals(java.util.List.of("preparing the scene...", "preparing the scene... 12 s so far",
+                "rendering: 5% done, about 9 s left", "rendering: 6% done, about 2 min 45 s left",
+                "rendering: 12% done, about 1 min 24 s left"), text.toString().lines().toList());
+    }
+
+    private static void at(Progress progress, long[] now, double seconds) {
+        now[0] = (long) (seconds * 1e9);
+        progress.show();
+    }
+
+    @Test
     void theBarFillsInProportion() {
         // 30 cells, half of them filled
         assertEquals("[###############               ]  50%, about 4 s left", Progress.bar(0.5, 4_000_000_000L));

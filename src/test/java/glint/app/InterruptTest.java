@@ -1,5 +1,6 @@
 package glint.app;
 
+import static org.junit.jupiter.api.Assertions.assertArrayEquals;
 import static org.junit.jupiter.api.Assertions.assertEquals;
 import static org.junit.jupiter.api.Assertions.assertFalse;
 import static org.junit.jupiter.api.Assertions.assertTimeoutPreemptively;
@@ -20,8 +21,9 @@ import org.junit.jupiter.api.Test;
 import org.junit.jupiter.api.io.TempDir;
 
 /**
- * Ctrl-C during a long still: the real program in its own JVM, sent SIGINT once it shows progress,
- * stops with status 130, one line, no stack trace, and no image or temporary file left.
+ * Signals during a long still: the real program in its own JVM, sent SIGINT, SIGTERM or SIGHUP once
+ * it shows progress, stops with status 128 + the signal's number, one line, no stack trace, and no
+ * image or temporary file left; stopped while writing, it keeps the image that was there.
  */
 class InterruptTest {
 
@@ -39,13 +41,18 @@ class InterruptTest {
 
     /** True when this JVM was started with SIGINT ignored (a background job of a script): its child would be too. */
     private static boolean sigintIgnored() throws Exception {
+        return ignored(2);
+    }
+
+    /** True when this JVM was started with the signal ignored (SIGHUP under nohup): its child would be too. */
+    private static boolean ignored(int signal) throws Exception {
         Path status = Path.of("/proc/self/status");
         if (!Files.exists(status)) {
             return false;
         }
         for (String line : Files.readAllLines(status)) {
             if (line.startsWith("SigIgn:")) {
-                return (Long.parseLong(line.substring(7).trim(), 16) & (1L << 1)) != 0; // bit of signal 2
+                return (Long.parseLong(line.substring(7).trim(), 16) & (1L << (signal - 1))) != 0;
             }
         }
         return false;
@@ -54,35 +61,106 @@ class InterruptTest {
     @Test
     void ctrlCStopsALongStillAtOnceWithNoImageLeft() throws Exception {
         assumeFalse(sigintIgnored(), "SIGINT is ignored in this process and so in its children");
+        stopWhileRendering("INT", 130);
+    }
+
+    /** SIGTERM (kill, timeout, a service manager) exits with the conventional 128 + 15. */
+    @Test
+    void sigtermStopsALongStillTheSameWayWithStatus143() throws Exception {
+        stopWhileRendering("TERM", 143);
+    }
+
+    /** SIGHUP (the terminal closed, an ssh session lost) exits with 128 + 1. */
+    @Test
+    void sighupStopsALongStillTheSameWayWithStatus129() throws Exception {
+        assumeFalse(ignored(1), "SIGHUP is ignored in this process (nohup) and so in its children");
+        stopWhileRendering("HUP", 129);
+    }
+
+    /** SIGUSR1 (or SIGALRM, ...), which would end the JVM without its hooks, stops it the same way: 128 + 10. */
+    @Test
+    void sigusr1StopsALongStillTheSameWayWithStatus138() throws Exception {
+        assumeFalse(ignored(10), "SIGUSR1 is ignored in this process and so in its children");
+        stopWhileRendering("USR1", 138);
+    }
+
+    private void stopWhileRendering(String signal, int status) throws Exception {
         Path output = dir.resolve("long.png");
         Path config = Files.writeString(dir.resolve("empty.properties"), "");
         // 1 thread, 400 x 300 at 1,024 samples: minutes of work, so it is still rendering when stopped
-        ProcessBuilder builder = new ProcessBuilder(Path.of(System.getProperty("java.home"), "bin", "java").toString(),
-                "-cp", classPath(), "glint.app.Main", "--config", config.toString(), "--scene",
+        List<String> err = stop(signal, "rendering: ", "--config", config.toString(), "--scene",
                 Path.of("scenes/default.yaml").toAbsolutePath().toString(), "--output", output.toString(),
                 "--width", "400", "--height", "300", "--spp", "1024", "--threads", "1");
+        assertEquals(status, Integer.parseInt(err.remove(err.size() - 1)), err.toString());
+        assertStoppedWithOneLine(err);
+        assertEquals("", Files.readString(dir.resolve("out.txt")));
+        try (Stream<Path> files = Files.list(dir)) {
+            assertEquals(List.of("empty.properties", "out.txt"),
+                    files.map(p -> p.getFileName().toString()).sorted().toList(), "no image, no temporary file");
+        }
+    }
+
+    /**
+     * SIGTERM while a 7680 x 4320 PNG is being encoded (seconds of work after the render): the
+     * write stops, the image there before is kept byte for byte, and nothing says it was written.
+     */
+    @Test
+    void sigtermWhileTheImageIsWrittenKeepsTheOldImageAndSaysSo() throws Exception {
+        Path output = dir.resolve("big.png");
+        byte[] old = {(byte) 0x89, 'P', 'N', 'G', 1, 2, 3};
+        Files.write(output, old);
+        Path config = Files.writeString(dir.resolve("empty.properties"), "");
+        Path scene = Files.writeString(dir.resolve("sky.yaml"), "camera: {position: [0, 1, -4], look_at: [0, 1, 0]}\n");
+        List<String> err = stop("TERM", "writing the image: ", "--config", config.toString(), "--scene", scene.toString(),
+                "--output", output.toString(), "--width", "7680", "--height", "4320", "--spp", "1");
+        assertEquals(143, Integer.parseInt(err.remove(err.size() - 1)), err.toString());
+        assertStoppedWithOneLine(err);
+        assertEquals("", Files.readString(dir.resolve("out.txt")), "no 'wrote' line");
+        assertArrayEquals(old, Files.readAllBytes(output));
+        try (Stream<Path> files = Files.list(dir)) {
+            assertEquals(List.of("big.png", "empty.properties", "out.txt", "sky.yaml"),
+                    files.map(p -> p.getFileName().toString()).sorted().toList(), "no temporary file");
+        }
+    }
+
+    /** Progress lines, then the one line that says the run was stopped: nothing else (no write failure, no trace). */
+    private static void assertStoppedWithOneLine(List<String> err) {
+        assertEquals("glint: interrupted; no image written", err.get(err.size() - 1), err.toString());
+        for (String line : err.subList(0, err.size() - 1)) {
+            assertTrue(line.matches("(reading|preparing) the scene\\.\\.\\.( [0-9]+ s so far)?|(rendering|writing the image): [0-9]+% done, .*"),
+                    err.toString());
+        }
+    }
+
+    /**
+     * Starts the program, sends it the signal when a line of standard error starts with
+     * {@code when}, and returns the lines of standard error followed by the exit status.
+     */
+    private List<String> stop(String signal, String when, String... args) throws Exception {
+        List<String> command = new ArrayList<>(List.of(Path.of(System.getProperty("java.home"), "bin", "java").toString(),
+                "-Xmx1g", "-cp", classPath(), "glint.app.Main"));
+        command.addAll(List.of(args));
+        ProcessBuilder builder = new ProcessBuilder(command);
         builder.redirectOutput(dir.resolve("out.txt").toFile());
         Process process = builder.start();
         List<String> err = new ArrayList<>();
         assertTimeoutPreemptively(Duration.ofSeconds(120), () -> {
             try (BufferedReader lines = new BufferedReader(
                     new InputStreamReader(process.getErrorStream(), StandardCharsets.UTF_8))) {
-                String line = lines.readLine(); // blocks until the first progress line, after about 2 s
-                err.add(line);
-                assertTrue(line != null && line.startsWith("rendering: "), String.valueOf(line));
-                Process kill = new ProcessBuilder("kill", "-INT", Long.toString(process.pid())).start();
+                String line;
+                do { // blocks until the step's first progress line, 2 s or more after the start
+                    line = lines.readLine();
+                    err.add(line);
+                } while (line != null && !line.startsWith(when));
+                assertTrue(line != null, err.toString());
+                Process kill = new ProcessBuilder("kill", "-" + signal, Long.toString(process.pid())).start();
                 assertEquals(0, kill.waitFor());
                 for (line = lines.readLine(); line != null; line = lines.readLine()) {
                     err.add(line);
                 }
             }
-            assertEquals(130, process.waitFor(), err.toString());
+            err.add(Integer.toString(process.waitFor()));
         });
-        assertEquals("glint: interrupted; no image written", err.get(err.size() - 1), err.toString());
-        assertFalse(err.stream().anyMatch(l -> l.contains("Exception") || l.contains("\tat ")), err.toString());
-        try (Stream<Path> files = Files.list(dir)) {
-            assertEquals(List.of("empty.properties", "out.txt"),
-                    files.map(p -> p.getFileName().toString()).sorted().toList(), "no image, no temporary file");
-        }
+        return err;
     }
 }

@@ -100,4 +100,95 @@ class ImageWriterTest {
         Path plain = Files.createFile(dir.resolve("plain.txt")); // made with the process's umask
         assertEquals(Files.getPosixFilePermissions(plain), Files.getPosixFilePermissions(image));
     }
+
+    /** A watcher that stops the write once it has seen the given fraction done, and records what it saw. */
+    private static final class Stopping implements ImageWriter.Watcher {
+        final double stopAt;
+        double seen = -1;
+        boolean renameAsked;
+
+        Stopping(double stopAt) {
+            this.stopAt = stopAt;
+        }
+
+        @Override
+        public void progress(double fraction) {
+            seen = Math.max(seen, fraction);
+        }
+
+        @Override
+        public boolean cancelled() {
+            return seen >= stopAt;
+        }
+
+        @Override
+        public void replace(ImageWriter.Rename rename) throws java.io.IOException {
+            renameAsked = true;
+            if (cancelled()) {
+                throw new java.io.InterruptedIOException("interrupted");
+            }
+            rename.run();
+        }
+    }
+
+    private static FrameBuffer large() {
+        FrameBuffer frame = new FrameBuffer(640, 480);
+        for (int y = 0; y < 480; y++) {
+            for (int x = 0; x < 640; x++) {
+                frame.set(x, y, (x * 7 % 255) / 255.0, (y * 13 % 255) / 255.0, ((x ^ y) % 255) / 255.0);
+            }
+        }
+        return frame;
+    }
+
+    @Test
+    void aCancelledWriteStopsKeepsTheOldImageAndLeavesNoTemporaryFile() throws Exception {
+        for (String name : java.util.List.of("out.png", "out.pfm")) {
+            Path image = dir.resolve(name);
+            byte[] old = "the image of the last run".getBytes(StandardCharsets.US_ASCII);
+            Files.write(image, old);
+            Stopping watcher = new Stopping(0.3);
+            org.junit.jupiter.api.Assertions.assertThrows(java.io.InterruptedIOException.class,
+                    () -> ImageWriter.write(large(), image, ImageWriter.temporaryBeside(image), watcher));
+            org.junit.jupiter.api.Assertions.assertTrue(watcher.seen >= 0.3 && watcher.seen < 1, name + ": " + watcher.seen);
+            org.junit.jupiter.api.Assertions.assertFalse(watcher.renameAsked, name + ": stopped before its end");
+            assertArrayEquals(old, Files.readAllBytes(image), name + ": the old image is untouched");
+            try (var files = Files.list(dir)) {
+                assertEquals(java.util.List.of(image), files.toList(), name + ": no temporary file left");
+            }
+            Files.delete(image);
+        }
+    }
+
+    @Test
+    void aWriteStoppedAtTheRenameKeepsTheOldImage() throws Exception {
+        Path image = dir.resolve("out.png");
+        Files.writeString(image, "old");
+        boolean[] renameAsked = {false};
+        ImageWriter.Watcher stopsAtTheRename = new ImageWriter.Watcher() {
+            @Override
+            public void replace(ImageWriter.Rename rename) throws java.io.IOException {
+                renameAsked[0] = true; // the program was stopped just now: the rename is not run
+                throw new java.io.InterruptedIOException("interrupted");
+            }
+        };
+        org.junit.jupiter.api.Assertions.assertThrows(java.io.InterruptedIOException.class,
+                () -> ImageWriter.write(large(), image, ImageWriter.temporaryBeside(image), stopsAtTheRename));
+        org.junit.jupiter.api.Assertions.assertTrue(renameAsked[0]);
+        assertEquals("old", Files.readString(image));
+        try (var files = Files.list(dir)) {
+            assertEquals(java.util.List.of(image), files.toList(), "no temporary file left");
+        }
+    }
+
+    @Test
+    void aTemporaryFilesNameIsShortEvenForALongImageName() throws Exception {
+        Path image = dir.resolve("n".repeat(251) + ".png"); // 255 bytes: the longest name a folder takes
+        Path temp = ImageWriter.temporaryBeside(image);
+        org.junit.jupiter.api.Assertions.assertTrue(temp.getFileName().toString().startsWith("." + "n".repeat(60) + "."),
+                temp.getFileName().toString());
+        org.junit.jupiter.api.Assertions.assertTrue(temp.getFileName().toString().length() < 100);
+        ImageWriter.write(sample(), image, temp);
+        assertEquals(3, ImageIO.read(image.toFile()).getWidth());
+    }
 }

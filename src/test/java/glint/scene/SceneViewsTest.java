@@ -67,7 +67,7 @@ class SceneViewsTest {
 
     @Test
     void namesAreTextAndDifferent() {
-        assertEquals("scenes/v.yaml:3:12: duplicate view name 'a'", error("""
+        assertEquals("scenes/v.yaml:3:12: duplicate view name 'a', already the name of view 1; each view needs a name of its own", error("""
                 views:
                   - {name: a}
                   - {name: a, fov: 40}
@@ -76,6 +76,44 @@ class SceneViewsTest {
                 views:
                   - {name: [a]}
                 """));
+    }
+
+    @Test
+    void aDefaultNameCountsAsTaken() {
+        assertEquals("scenes/v.yaml:3:5: view 2 has no name, and its default name 'view 2' is already the name of view 1; "
+                + "give view 2 a name of its own", error("""
+                views:
+                  - {name: view 2}
+                  - {}
+                """));
+        assertEquals("scenes/v.yaml:3:12: duplicate view name 'view 1', already the default name of view 1; "
+                + "each view needs a name of its own", error("""
+                views:
+                  - {fov: 40}
+                  - {name: view 1}
+                """));
+    }
+
+    @Test
+    void aNameIsNotEmpty() {
+        assertEquals("scenes/v.yaml:3:12: the name of view 2 is empty; expected a name such as 'front', or no name for 'view 2'",
+                error("""
+                views:
+                  - {name: a}
+                  - {name: ""}
+                """));
+        assertEquals("scenes/v.yaml:2:12: the name of view 1 is empty; expected a name such as 'front', or no name for 'view 1'",
+                error("""
+                views:
+                  - {name: "   "}
+                """));
+    }
+
+    @Test
+    void aLongDuplicateNameIsCutInTheMessage() {
+        String name = "n".repeat(5000);
+        assertEquals("scenes/v.yaml:3:12: duplicate view name '" + "n".repeat(60) + "...', already the name of view 1; "
+                + "each view needs a name of its own", error("views:\n  - {name: " + name + "}\n  - {name: " + name + "}\n"));
     }
 
     @Test
