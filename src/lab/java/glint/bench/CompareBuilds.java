@@ -129,17 +129,22 @@ public final class CompareBuilds {
 
     /** The least render CPU of a {@code --bench} run's frames after the first. */
     static double leastCpu(Method main, String[] bench) throws Exception {
+        return leastAfterFirst(run(main, bench));
+    }
+
+    /** Runs {@code glint.app.Main.run} of a build with these arguments; returns its standard output. */
+    static String run(Method main, String[] args) throws Exception {
         StringWriter out = new StringWriter(), err = new StringWriter();
         int status;
         try {
-            status = (Integer) main.invoke(null, bench, new PrintWriter(out, true), new PrintWriter(err, true));
+            status = (Integer) main.invoke(null, args, new PrintWriter(out, true), new PrintWriter(err, true));
         } catch (InvocationTargetException e) {
             throw new IllegalStateException("the build failed: " + e.getCause(), e.getCause());
         }
         if (status != 0) {
             throw new IllegalStateException("the build exited with " + status + ": " + err.toString().strip());
         }
-        return leastAfterFirst(out.toString());
+        return out.toString();
     }
 
     /** The least render CPU of the frame lines of {@code --bench} output, the first frame left out. */
@@ -183,7 +188,8 @@ public final class CompareBuilds {
                 PrintWriter.class);
     }
 
-    private static String option(List<String> args, String name, String fallback) {
+    /** Removes option {@code name} and its value from {@code args}; returns the value, or {@code fallback}. */
+    static String option(List<String> args, String name, String fallback) {
         int i = args.indexOf(name);
         if (i < 0) {
             return fallback;
