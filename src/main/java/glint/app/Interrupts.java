@@ -57,8 +57,10 @@ final class Interrupts implements AutoCloseable, ImageWriter.Watcher {
     /**
      * Signals whose default action ends the JVM without running its shutdown hooks (which the JVM
      * runs only for SIGINT, SIGTERM and SIGHUP): a run they stop would leave its temporary file.
+     * SIGPROF and SIGVTALRM are left alone: sampling profilers (async-profiler, perf's JVM agents)
+     * tick with them.
      */
-    static final List<String> OTHER_ENDING_SIGNALS = List.of("USR1", "USR2", "ALRM", "VTALRM", "PROF", "XCPU", "POLL", "PWR");
+    static final List<String> OTHER_ENDING_SIGNALS = List.of("USR1", "USR2", "ALRM", "XCPU", "POLL", "PWR");
 
     /**
      * Makes the {@link #OTHER_ENDING_SIGNALS} end the program as SIGTERM does: hooks run, status

@@ -110,9 +110,9 @@ public final class Primitives {
 
     /** {@link Shape#nearestFromOrigin} of a primitive given by its number. */
     public void nearestFromOrigin(int primitive, double ox, double oy, double oz, double[] dx, double[] dy,
-                                  double[] dz, int n, double[] nearestT, int[] nearestPrimitive) {
-        kinds[kindOf[primitive]].nearestFromOrigin(indexOf[primitive], primitive, ox, oy, oz, dx, dy, dz, n, nearestT,
-                nearestPrimitive);
+                                  double[] dz, int first, int end, double[] nearestT, int[] nearestPrimitive) {
+        kinds[kindOf[primitive]].nearestFromOrigin(indexOf[primitive], primitive, ox, oy, oz, dx, dy, dz, first, end,
+                nearestT, nearestPrimitive);
     }
 
     /** Whether a ray leaving the primitive into its inside can meet it again ({@link Shape#closed}). */

@@ -28,14 +28,14 @@ public interface Shape {
     double intersect(int i, double ox, double oy, double oz, double dx, double dy, double dz, double tMax);
 
     /**
-     * For the rays r in [0, n) from the common origin o along unit (dx[r], dy[r], dz[r]): where
+     * For the rays r in [first, end) from the common origin o along unit (dx[r], dy[r], dz[r]): where
      * primitive i is met before nearestT[r], sets nearestT[r] to that distance and
      * nearestPrimitive[r] to {@code number}. The same distances as {@link #intersect} ray by ray; a
      * kind may override it to work out what depends on the origin alone once.
      */
     default void nearestFromOrigin(int i, int number, double ox, double oy, double oz, double[] dx, double[] dy,
-                                   double[] dz, int n, double[] nearestT, int[] nearestPrimitive) {
-        for (int r = 0; r < n; r++) {
+                                   double[] dz, int first, int end, double[] nearestT, int[] nearestPrimitive) {
+        for (int r = first; r < end; r++) {
             double t = intersect(i, ox, oy, oz, dx[r], dy[r], dz[r], nearestT[r]);
             if (t < nearestT[r]) {
                 nearestT[r] = t;

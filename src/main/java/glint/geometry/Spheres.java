@@ -65,12 +65,12 @@ public final class Spheres implements Shape {
     /** The origin's offset from the centre and its square less r^2, once for all the rays. */
     @Override
     public void nearestFromOrigin(int i, int number, double ox, double oy, double oz, double[] dx, double[] dy,
-                                  double[] dz, int n, double[] nearestT, int[] nearestPrimitive) {
+                                  double[] dz, int first, int end, double[] nearestT, int[] nearestPrimitive) {
         int k = 4 * i;
         double radius = data[k + 3];
         double fx = ox - data[k], fy = oy - data[k + 1], fz = oz - data[k + 2];
         double c = fx * fx + fy * fy + fz * fz - radius * radius;
-        for (int r = 0; r < n; r++) {
+        for (int r = first; r < end; r++) {
             double t = Intersect.sphereFrom(fx, fy, fz, c, radius, dx[r], dy[r], dz[r], nearestT[r]);
             if (t < nearestT[r]) {
                 nearestT[r] = t;

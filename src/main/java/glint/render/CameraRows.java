@@ -1,6 +1,8 @@
 package glint.render;
 
+import glint.geometry.Candidates;
 import glint.geometry.Frustum;
+import glint.geometry.Primitives;
 
 /**
  * The camera rays of one tile row, per worker: their unit directions (world space), aimed for the
@@ -91,6 +93,45 @@ final class CameraRows {
         edges[3 * e] = c.forwardX + sx * c.rightX + sy * c.upX;
         edges[3 * e + 1] = c.forwardY + sx * c.rightY + sy * c.upY;
         edges[3 * e + 2] = c.forwardZ + sx * c.rightZ + sy * c.upZ;
+    }
+
+    private final double[] box = new double[6];
+
+    /**
+     * Narrows each bounded primitive of a row's {@code candidates} to the row's rays that can meet
+     * it. A ray from the eye meets a box wholly in front of the eye only where its screen x lies
+     * between the screen x of the box's corners (the box is convex, and screen x is v.right / v.forward
+     * of a point v from the eye), so only the rays of the pixels over that span, and one more pixel on
+     * each side, are searched for it. A box reaching behind the eye keeps every ray. The same for
+     * every row of the tile, as screen x does not depend on the row.
+     */
+    void narrow(Candidates candidates, Primitives primitives) {
+        CameraBasis c = camera;
+        for (int i = 0; i < candidates.count(); i++) {
+            int p = candidates.primitive(i);
+            if (!primitives.bounded(p)) {
+                continue;
+            }
+            primitives.bounds(p, box, 0);
+            double lo = Double.POSITIVE_INFINITY, hi = Double.NEGATIVE_INFINITY;
+            boolean inFront = true;
+            for (int corner = 0; corner < 8 && inFront; corner++) {
+                double vx = box[(corner & 1) * 3] - c.eyeX;
+                double vy = box[1 + (corner >> 1 & 1) * 3] - c.eyeY;
+                double vz = box[2 + (corner >> 2) * 3] - c.eyeZ;
+                double depth = vx * c.forwardX + vy * c.forwardY + vz * c.forwardZ;
+                inFront = depth > 0;
+                double sx = (vx * c.rightX + vy * c.rightY + vz * c.rightZ) / depth;
+                lo = Math.min(lo, sx);
+                hi = Math.max(hi, sx);
+            }
+            if (inFront) {
+                double left = Math.floor((lo - offsetX) / scaleX) - 1, right = Math.floor((hi - offsetX) / scaleX) + 2;
+                int firstPixel = (int) Math.max(x0, Math.min(x1, left));
+                int endPixel = (int) Math.max(x0, Math.min(x1, right));
+                candidates.narrow(i, (firstPixel - x0) * sampleCount, (endPixel - x0) * sampleCount);
+            }
+        }
     }
 
     /** Screen x of image x (pixels from the left). */

@@ -44,7 +44,11 @@ final class TracerWorker {
             rowStart = y * frame.width();
             rows.frustum(y, rowFrustum);
             integrator.gather(rowFrustum, rowCandidates);
-            traceRow(scene, rays, rowCandidates.count() <= AggregatePolicy.MOST_ROW_CANDIDATES ? rowCandidates : null);
+            boolean searchCandidates = rowCandidates.count() <= AggregatePolicy.MOST_ROW_CANDIDATES;
+            if (searchCandidates) {
+                rows.narrow(rowCandidates, scene.primitives);
+            }
+            traceRow(scene, rays, searchCandidates ? rowCandidates : null);
             rows.writeRow(frame, y);
         }
     }
