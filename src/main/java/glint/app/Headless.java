@@ -1,6 +1,7 @@
 package glint.app;
 
 import glint.config.Config;
+import glint.config.Flags;
 import glint.image.ImageWriter;
 import glint.input.InputException;
 import glint.input.TextFiles;
@@ -38,10 +39,11 @@ final class Headless {
     private Headless() {
     }
 
-    static int renderStill(Path scenePath, Config config, Path output, PrintWriter out, PrintWriter err)
-            throws InputException, IOException {
+    static int renderStill(Path scenePath, Config settings, Flags flags, Path output, PrintWriter out,
+                           PrintWriter err) throws InputException, IOException {
         checkOutput(output);
-        Scene scene = SceneLoader.load(scenePath, config.limits().scene());
+        Scene scene = SceneLoader.load(scenePath, settings.limits().scene());
+        Config config = flags.effective(settings, scene.render());
         RenderScene compiled = RenderScene.compile(scene, RenderSettings.of(config));
         checkMemory(config, STILL_BYTES_PER_PIXEL, Runtime.getRuntime());
         FrameBuffer frame = new FrameBuffer(config.displayWidth(), config.displayHeight());
@@ -146,9 +148,10 @@ final class Headless {
         return String.format(Locale.ROOT, "%,d MB", (bytes + (1 << 20) - 1) >> 20);
     }
 
-    static int bench(Path scenePath, Config config, int frames, PrintWriter out, PrintWriter err)
+    static int bench(Path scenePath, Config settings, Flags flags, int frames, PrintWriter out, PrintWriter err)
             throws InputException {
-        Scene scene = SceneLoader.load(scenePath, config.limits().scene());
+        Scene scene = SceneLoader.load(scenePath, settings.limits().scene());
+        Config config = flags.effective(settings, scene.render());
         RenderScene compiled = RenderScene.compile(scene, RenderSettings.of(config));
         checkMemory(config, 12, Runtime.getRuntime());
         FrameBuffer frame = new FrameBuffer(config.displayWidth(), config.displayHeight());

@@ -2,14 +2,12 @@ package glint.app;
 
 import glint.config.Config;
 import glint.config.ConfigLoader;
-import glint.config.Shading;
+import glint.config.Flags;
 import glint.input.InputException;
-import glint.input.Suggestions;
 import glint.render.RenderSettings;
 import java.io.PrintWriter;
 import java.nio.file.Files;
 import java.nio.file.Path;
-import java.util.List;
 import java.util.concurrent.Callable;
 import picocli.CommandLine;
 import picocli.CommandLine.Command;
@@ -132,16 +130,16 @@ public final class Main implements Callable<Integer> {
             throw new InputException("glint", 0, 0, "--output and --bench cannot be used together");
         }
         if (output != null) {
-            return Headless.renderStill(scenePath, settings, output, out, err);
+            return Headless.renderStill(scenePath, settings, flags(), output, out, err);
         }
         if (bench != null) {
             if (bench < 1 || bench > Headless.MAX_BENCH_FRAMES) {
                 throw new InputException("glint", 0, 0, "--bench: expected a number of frames from 1 to "
                         + Headless.MAX_BENCH_FRAMES + ", got " + bench);
             }
-            return Headless.bench(scenePath, settings, bench, out, err);
+            return Headless.bench(scenePath, settings, flags(), bench, out, err);
         }
-        return WindowLauncher.open(scenePath, settings, () -> overrides(loadConfig()), err);
+        return WindowLauncher.open(scenePath, settings, flags(), () -> overrides(loadConfig()), err);
     }
 
     private Config loadConfig() throws InputException {
@@ -183,48 +181,12 @@ public final class Main implements Callable<Integer> {
         throw new InputException(at.file(), at.line(), at.column(), problem);
     }
 
-    private Config overrides(Config c) throws InputException {
-        if (width != null || height != null) {
-            int w = width != null ? width : c.displayWidth();
-            int h = height != null ? height : c.displayHeight();
-            checkRange("--width", w, 1, 65536);
-            checkRange("--height", h, 1, 65536);
-            String sizeProblem = c.limits().imageSizeProblem(w, h);
-            if (sizeProblem != null) {
-                throw new InputException("glint", 0, 0, "--width x --height: " + sizeProblem);
-            }
-            c = c.withSize(w, h);
-        }
-        if (spp != null) {
-            if (!Config.isPerfectSquare(spp) || spp > 4096) {
-                throw new InputException("glint", 0, 0,
-                        "--spp: expected a perfect square from 1 to 4096 (1, 4, 9, 16, ...), got " + spp);
-            }
-            c = c.withSamples(spp);
-        }
-        if (threads != null) {
-            checkRange("--threads", threads, 0, 1024);
-            c = c.withThreads(threads);
-        }
-        if (depth != null) {
-            checkRange("--depth", depth, 1, c.limits().maxRecursion());
-            c = c.withRecursionMax(depth);
-        }
-        if (shading != null) {
-            Shading model = Shading.byKey(shading);
-            if (model == null) {
-                throw new InputException("glint", 0, 0, "--shading: unknown model " + InputException.quote(shading)
-                        + Suggestions.hint(shading, List.of("cook-torrance", "phong")));
-            }
-            c = c.withShading(model);
-        }
-        return c;
+    /** The command line's settings, which rank above the scene's render: block and the config. */
+    private Flags flags() {
+        return new Flags(width, height, spp, threads, depth, shading);
     }
 
-    private static void checkRange(String option, int value, int min, int max) throws InputException {
-        if (value < min || value > max) {
-            throw new InputException("glint", 0, 0,
-                    option + ": expected a whole number from " + min + " to " + max + ", got " + value);
-        }
+    private Config overrides(Config c) throws InputException {
+        return flags().apply(c);
     }
 }

@@ -12,10 +12,8 @@ import java.awt.image.BufferedImage;
 import java.io.IOException;
 import java.io.PrintWriter;
 import java.nio.file.Path;
-import java.nio.file.Files;
 import java.util.List;
 import java.util.Locale;
-import java.util.stream.Stream;
 import java.util.concurrent.CountDownLatch;
 import java.util.concurrent.TimeUnit;
 import java.util.concurrent.atomic.AtomicReference;
@@ -57,7 +55,8 @@ public final class Engine implements Runnable, SceneWatcher.Listener {
     private final AtomicReference<Object> pendingScene = new AtomicReference<>(); // Scene or InputException
     private final CountDownLatch finished = new CountDownLatch(1);
 
-    private Config config;
+    private Config base; // config.properties with the command line's flags
+    private Config config; // what the scene is seen with: base under its render: block, under the flags
     private Scene scene;
     private Camera fileCamera;
     private Shading shading;
@@ -75,6 +74,7 @@ public final class Engine implements Runnable, SceneWatcher.Listener {
     private long serial;
     private String message = "";
     private String error = "";
+    private String blockError = ""; // why the scene's render: block is left out, or empty
     private boolean statusChanged;
     private FrameBudget budget;
     private String sizeLimit = ""; // why frames are smaller than the window, or empty
@@ -95,6 +95,7 @@ public final class Engine implements Runnable, SceneWatcher.Listener {
     /** An engine whose frames are traced by {@code trace} (tests: injected faults, stamped frames). */
     Engine(Config config, Scene scene, SceneSource source, InputState input, Presenter presenter,
            Screenshots screenshots, Clock clock, PrintWriter err, FrameRenderer.TraceCall trace) {
+        this.base = config;
         this.config = config;
         this.source = source;
         this.input = input;
@@ -481,31 +482,23 @@ public final class Engine implements Runnable, SceneWatcher.Listener {
      * not load says why and leaves the view as it was.
      */
     private void openNeighbour(int step) {
-        Path current = source.scenePath().toAbsolutePath().normalize();
-        Path folder = current.getParent();
-        List<Path> scenes;
-        try (Stream<Path> files = Files.list(folder)) {
-            scenes = files.filter(f -> {
-                String name = f.getFileName().toString().toLowerCase(Locale.ROOT);
-                return (name.endsWith(".yaml") || name.endsWith(".yml")) && Files.isRegularFile(f);
-            }).map(f -> f.toAbsolutePath().normalize()).sorted().toList();
+        SceneFolder.Neighbour found;
+        try {
+            found = SceneFolder.neighbour(source.scenePath(), step);
         } catch (IOException | RuntimeException e) {
-            note("cannot list " + folder + ": " + e.getMessage());
+            note("cannot list " + source.scenePath().toAbsolutePath().getParent() + ": " + e.getMessage());
             return;
         }
-        int at = scenes.indexOf(current);
-        if (scenes.isEmpty() || at >= 0 && scenes.size() == 1) {
-            note("no other scene in " + folder);
+        if (found == null) {
+            note("no other scene in " + source.scenePath().toAbsolutePath().normalize().getParent());
             return;
         }
-        int next = at < 0 ? (step > 0 ? 0 : scenes.size() - 1) : Math.floorMod(at + step, scenes.size());
-        Path target = source.scenePath().resolveSibling(scenes.get(next).getFileName());
+        Path target = found.path();
         source.scenePath(target);
         pendingScene.set(null); // a change the watcher saw in the old file is no longer wanted
         try {
             setScene(source.loadScene(), true);
-            setError("");
-            note("opened " + target + " (" + (next + 1) + " of " + scenes.size() + ")");
+            note("opened " + target + " (" + found.number() + " of " + found.of() + ")");
         } catch (InputException e) {
             setError(e.getMessage());
             note("opened " + target + ": it does not load");
@@ -543,14 +536,17 @@ public final class Engine implements Runnable, SceneWatcher.Listener {
         } catch (InputException e) {
             problem = problem.isEmpty() ? e.getMessage() : problem;
         }
-        setError(problem);
+        if (!problem.isEmpty()) { // else the scene's, which may be a render: block beyond the limits
+            setError(problem);
+        }
         note(problem.isEmpty() ? "reloaded " + source.scenePath() : "reload failed");
     }
 
     private void applyConfig(Config c) {
-        config = c;
-        shading = c.shading();
-        depth = c.recursionMax(); // at most max_recursion: the config loader refuses more
+        base = c;
+        config = seenWith(scene);
+        shading = config.shading();
+        depth = config.recursionMax(); // at most max_recursion: the config loader refuses more
         controller.setSpeeds(c.moveSpeed(), c.turnSpeed());
         controller.setFreeFlight(c.freeFlight());
         governor.setLimits(c.targetFps(), c.displayScale());
@@ -565,7 +561,6 @@ public final class Engine implements Runnable, SceneWatcher.Listener {
         Object pending = pendingScene.getAndSet(null);
         if (pending instanceof Scene loadedScene) {
             setScene(loadedScene, false);
-            setError("");
             note("reloaded " + source.scenePath());
         } else if (pending instanceof InputException problem) {
             setError(problem.getMessage());
@@ -581,10 +576,30 @@ public final class Engine implements Runnable, SceneWatcher.Listener {
             controller.reset(newScene.camera());
         }
         fileCamera = newScene.camera();
+        Config seen = seenWith(newScene); // the user's M, + and - hold until the scene's settings change
+        if (seen.shading() != config.shading()) {
+            shading = seen.shading();
+        }
+        if (seen.recursionMax() != config.recursionMax()) {
+            depth = seen.recursionMax();
+        }
+        config = seen;
+        setError(blockError);
         scene = newScene;
         sceneNow = newScene;
         cameraNow = controller.camera();
         invalidate();
+    }
+
+    /** The settings a scene is seen with; a render: block beyond the config's limits is shown and left out. */
+    private Config seenWith(Scene s) {
+        try {
+            blockError = "";
+            return source.flags().effective(base, s.render());
+        } catch (InputException e) {
+            blockError = e.getMessage();
+            return base;
+        }
     }
 
     private void setError(String problem) {
