@@ -235,6 +235,10 @@ public final class Engine implements Runnable, SceneWatcher.Listener {
         if (in.wheelNotches() != 0) {
             statusChanged = true;
         }
+        if (in.orbitStarted()) { // the point under the mouse, with the camera the user saw it from
+            controller.orbitAround(OrbitPivot.pick(compiled(), controller.camera(), in.orbitFromX(), in.orbitFromY(),
+                    viewWidth, viewHeight));
+        }
         boolean moved = controller.apply(in);
         if (moved) {
             lastMotion = start;
@@ -437,7 +441,7 @@ public final class Engine implements Runnable, SceneWatcher.Listener {
             }
             case VIEW -> view(in.view());
             case PRINT_CAMERA -> {
-                String block = CameraBlock.yaml(controller.camera());
+                String block = CameraBlock.blocks(controller.camera());
                 out.print(block);
                 out.flush();
                 note(block.strip());
