@@ -49,6 +49,11 @@ public enum Action {
         return kind;
     }
 
+    /** L, Home and the views put the camera somewhere: they act after the motion of the same interval. */
+    public boolean jumpsCamera() {
+        return this == LEVEL || this == HOME || this == VIEW;
+    }
+
     public boolean isHeld() {
         return kind == Kind.MOTION || kind == Kind.MODIFIER;
     }

@@ -25,6 +25,14 @@ final class CameraBlock {
         return yaml(camera) + "views:\n" + viewItem(camera) + "\n";
     }
 
+    /** Prints {@link #blocks} (key C) and returns it for the overlay. */
+    static String print(Camera camera, java.io.PrintWriter out) {
+        String text = blocks(camera);
+        out.print(text);
+        out.flush();
+        return text.strip();
+    }
+
     /** The camera as an item of a scene's {@code views:} list, indented as under the key: {@code - {...}}. */
     static String viewItem(Camera camera) {
         Vector3d p = camera.position();

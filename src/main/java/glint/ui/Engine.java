@@ -1,15 +1,12 @@
 package glint.ui;
 
 import glint.config.Config;
-import glint.config.Shading;
 import glint.input.InputException;
 import glint.render.RenderScene;
-import glint.render.RenderSettings;
 import glint.scene.Camera;
 import glint.scene.Scene;
 import glint.scene.View;
 import java.awt.image.BufferedImage;
-import java.io.IOException;
 import java.io.PrintWriter;
 import java.nio.file.Path;
 import java.util.List;
@@ -51,16 +48,14 @@ public final class Engine implements Runnable, SceneWatcher.Listener {
     private final CameraController controller;
     private final ResolutionGovernor governor;
     private final FrameRenderer renderer;
+    private final StillRender stills;
     private final FrameRateMeter meter = new FrameRateMeter();
     private final AtomicReference<Object> pendingScene = new AtomicReference<>(); // Scene or InputException
     private final CountDownLatch finished = new CountDownLatch(1);
 
-    private Config base; // config.properties with the command line's flags
-    private Config config; // what the scene is seen with: base under its render: block, under the flags
+    private final ViewSettings seen; // the scene's settings, the user's shading and depth
     private Scene scene;
     private Camera fileCamera;
-    private Shading shading;
-    private int depth;
 
     private int viewWidth;
     private int viewHeight;
@@ -74,7 +69,6 @@ public final class Engine implements Runnable, SceneWatcher.Listener {
     private long serial;
     private String message = "";
     private String error = "";
-    private String blockError = ""; // why the scene's render: block is left out, or empty
     private boolean statusChanged;
     private FrameBudget budget;
     private String sizeLimit = ""; // why frames are smaller than the window, or empty
@@ -95,20 +89,18 @@ public final class Engine implements Runnable, SceneWatcher.Listener {
     /** An engine whose frames are traced by {@code trace} (tests: injected faults, stamped frames). */
     Engine(Config config, Scene scene, SceneSource source, InputState input, Presenter presenter,
            Screenshots screenshots, Clock clock, PrintWriter err, FrameRenderer.TraceCall trace) {
-        this.base = config;
-        this.config = config;
+        this.seen = new ViewSettings(config, source.flags());
         this.source = source;
         this.input = input;
         this.presenter = presenter;
         this.screenshots = screenshots;
         this.clock = clock;
         this.err = err;
-        this.shading = config.shading();
-        this.depth = config.recursionMax();
         this.controller = new CameraController(scene.camera(), config.moveSpeed(), config.turnSpeed());
         controller.setFreeFlight(config.freeFlight());
         this.governor = new ResolutionGovernor(config.targetFps(), config.displayScale());
         this.renderer = new FrameRenderer(config.effectiveThreads(), config.screenDivider(), trace);
+        this.stills = new StillRender(input::signal);
         this.viewWidth = input.viewWidth();
         this.viewHeight = input.viewHeight();
         this.lastMotion = clock.nanoTime() - MOTION_HOLD_NANOS - 1;
@@ -166,6 +158,7 @@ public final class Engine implements Runnable, SceneWatcher.Listener {
 
     /** Frees the render threads when the loop was driven by {@link #step} alone (tests). */
     public void close() {
+        stills.close();
         renderer.close();
     }
 
@@ -205,6 +198,7 @@ public final class Engine implements Runnable, SceneWatcher.Listener {
             err.println("glint: the window's engine stopped: " + e);
         } finally {
             running = false;
+            stills.close(); // a still under way is cancelled, and its hidden file deleted, before the end
             renderer.close();
             finished.countDown();
         }
@@ -215,10 +209,19 @@ public final class Engine implements Runnable, SceneWatcher.Listener {
      * once, {@link #IDLE}: until something happens).
      */
     public long step() {
+        String still = stills.news();
+        if (still != null) {
+            note(still);
+        }
+        long wait = stepOnce();
+        return stills.running() ? Math.min(wait, StillRender.POLL_NANOS) : wait; // its progress is shown
+    }
+
+    private long stepOnce() {
         long start = clock.nanoTime();
         InputFrame in = input.drain();
         for (Action command : in.commands()) {
-            if (!isCameraJump(command)) {
+            if (!command.jumpsCamera()) {
                 command(command, in);
             }
         }
@@ -246,12 +249,12 @@ public final class Engine implements Runnable, SceneWatcher.Listener {
             invalidate();
         }
         for (Action command : in.commands()) {
-            if (isCameraJump(command)) { // after the interval's motion: the key came after it
+            if (command.jumpsCamera()) { // after the interval's motion: the key came after it
                 command(command, in);
             }
         }
         boolean moving = moved || in.motionHeld() || start - lastMotion < MOTION_HOLD_NANOS;
-        boolean frameDue = moving ? needFrame : passesDone < config.samples();
+        boolean frameDue = moving ? needFrame : passesDone < seen.config.samples();
         if (frameDue && start < faults.retryAt()) { // the last try failed: the next one comes when the pause is over
             if (statusChanged) {
                 presentStatus();
@@ -261,7 +264,7 @@ public final class Engine implements Runnable, SceneWatcher.Listener {
         if (moving && needFrame) {
             return renderMoving(start) ? 0 : faults.retryAt() - clock.nanoTime();
         }
-        if (!moving && passesDone < config.samples()) {
+        if (!moving && passesDone < seen.config.samples()) {
             return renderPass(start) ? 0 : faults.retryAt() - clock.nanoTime();
         }
         if (moving) { // nothing new to draw yet: wait for input, or for the end of the motion hold
@@ -303,7 +306,7 @@ public final class Engine implements Runnable, SceneWatcher.Listener {
         ResolutionGovernor.Size size = budget.fit(viewWidth, viewHeight, 1);
         BufferedImage image;
         try {
-            image = renderer.renderPass(compiled(), size.width(), size.height(), config.samples(), passesDone);
+            image = renderer.renderPass(compiled(), size.width(), size.height(), seen.config.samples(), passesDone);
         } catch (RuntimeException | OutOfMemoryError e) {
             frameFailed(e);
             presentStatus();
@@ -323,10 +326,11 @@ public final class Engine implements Runnable, SceneWatcher.Listener {
         lastStats = stats(meter.fps(), nanos / 1e6, image.getWidth(), image.getHeight(), viewWidth, viewHeight,
                 samples, moving);
         publish();
-        if (config.debug() && meter.windowClosed()) {
+        if (seen.config.debug() && meter.windowClosed()) {
             err.println(String.format(Locale.ROOT, "glint: window %.1f fps, %.1f ms/frame, %dx%d of %dx%d, %s",
                     lastStats.fps(), lastStats.msPerFrame(), lastStats.renderWidth(), lastStats.renderHeight(),
-                    viewWidth, viewHeight, moving ? "moving" : "still, samples " + samples + "/" + config.samples()));
+                    viewWidth, viewHeight, moving ? "moving" : "still, samples " + samples + "/"
+                            + seen.config.samples()));
         }
     }
 
@@ -344,7 +348,8 @@ public final class Engine implements Runnable, SceneWatcher.Listener {
     private FrameStats stats(double fps, double msPerFrame, int renderWidth, int renderHeight, int frameViewWidth,
                              int frameViewHeight, int samplesDone, boolean moving) {
         return new FrameStats(fps, msPerFrame, renderWidth, renderHeight, frameViewWidth, frameViewHeight,
-                samplesDone, config.samples(), moving, renderer.threads(), shading, depth, controller.speed(),
+                samplesDone, seen.config.samples(), moving, renderer.threads(), seen.shading, seen.depth,
+                controller.speed(),
                 source.scenePath().toString(), message, error, sizeLimit, faults.overlayLine());
     }
 
@@ -380,7 +385,7 @@ public final class Engine implements Runnable, SceneWatcher.Listener {
 
     /** The frame size budget for the window's size now; says once when it starts to bind. */
     private void checkSize() {
-        budget = FrameBudget.of(config.limits(), Runtime.getRuntime().maxMemory());
+        budget = FrameBudget.of(seen.config.limits(), Runtime.getRuntime().maxMemory());
         boolean over = budget.binds(viewWidth, viewHeight);
         if (over && sizeLimit.isEmpty()) {
             ResolutionGovernor.Size size = budget.fit(viewWidth, viewHeight, 1);
@@ -396,8 +401,7 @@ public final class Engine implements Runnable, SceneWatcher.Listener {
 
     private RenderScene compiled() {
         if (compiled == null) {
-            RenderSettings settings = RenderSettings.of(config.withShading(shading).withRecursionMax(depth));
-            compiled = compiledScenes.of(scene, settings, controller.camera());
+            compiled = compiledScenes.of(scene, seen.render(), controller.camera());
         }
         return compiled;
     }
@@ -412,17 +416,17 @@ public final class Engine implements Runnable, SceneWatcher.Listener {
     private void command(Action action, InputFrame in) {
         switch (action) {
             case TOGGLE_SHADING -> {
-                shading = shading.other();
-                note("shading " + shading.key());
+                seen.shading = seen.shading.other();
+                note("shading " + seen.shading.key());
                 invalidate();
             }
             case DEPTH_UP, DEPTH_DOWN -> {
-                int max = config.limits().maxRecursion();
-                int next = Math.max(1, Math.min(max, depth + (action == Action.DEPTH_UP ? 1 : -1)));
-                note(next == depth ? "depth stays " + depth + " (from 1 to " + max + ", max_recursion)"
+                int max = seen.config.limits().maxRecursion();
+                int next = Math.max(1, Math.min(max, seen.depth + (action == Action.DEPTH_UP ? 1 : -1)));
+                note(next == seen.depth ? "depth stays " + seen.depth + " (from 1 to " + max + ", max_recursion)"
                         : "depth " + next);
-                if (next != depth) {
-                    depth = next;
+                if (next != seen.depth) {
+                    seen.depth = next;
                     invalidate();
                 }
             }
@@ -441,23 +445,23 @@ public final class Engine implements Runnable, SceneWatcher.Listener {
             }
             case VIEW -> view(in.view());
             case PRINT_CAMERA -> {
-                String block = CameraBlock.blocks(controller.camera());
-                out.print(block);
-                out.flush();
-                note(block.strip());
+                note(CameraBlock.print(controller.camera(), out));
             }
             case NEXT_SCENE -> openNeighbour(1);
             case PREVIOUS_SCENE -> openNeighbour(-1);
-            case QUIT -> running = false;
+            case RENDER_STILL, RENDER_STILL_PFM -> note(stills.running() ? stills.cancel()
+                    : startStill(action == Action.RENDER_STILL_PFM));
+            case QUIT -> {
+                if (stills.running()) { // Esc stops the still first; the next one quits
+                    note(stills.cancel());
+                } else {
+                    running = false;
+                }
+            }
             default -> {
                 // overlay and help are the display's
             }
         }
-    }
-
-    /** L, Home and the views put the camera somewhere: they act after the motion of the same interval. */
-    private static boolean isCameraJump(Action action) {
-        return action == Action.LEVEL || action == Action.HOME || action == Action.VIEW;
     }
 
     /** The camera jumped (Home, a view, L): the view is drawn anew. */
@@ -486,15 +490,9 @@ public final class Engine implements Runnable, SceneWatcher.Listener {
      * not load says why and leaves the view as it was.
      */
     private void openNeighbour(int step) {
-        SceneFolder.Neighbour found;
-        try {
-            found = SceneFolder.neighbour(source.scenePath(), step);
-        } catch (IOException | RuntimeException e) {
-            note("cannot list " + source.scenePath().toAbsolutePath().getParent() + ": " + e.getMessage());
-            return;
-        }
-        if (found == null) {
-            note("no other scene in " + source.scenePath().toAbsolutePath().normalize().getParent());
+        SceneFolder.Neighbour found = SceneFolder.neighbour(source.scenePath(), step);
+        if (found.path() == null) {
+            note(found.problem());
             return;
         }
         Path target = found.path();
@@ -515,16 +513,18 @@ public final class Engine implements Runnable, SceneWatcher.Listener {
             return;
         }
         // the window's size, or at most the frame size budget (a huge window: the largest frame allowed)
+        note(screenshots.saveView(lastImage, budget.fit(viewWidth, viewHeight, 1), sizeLimit, err));
+    }
+
+    /** The render key: the view as a still at the still's settings, in the background. */
+    private String startStill(boolean pfm) {
+        boolean sized = source.flags().setsSize() || scene.render().width() != null; // else the window's size
         ResolutionGovernor.Size size = budget.fit(viewWidth, viewHeight, 1);
-        try {
-            Path file = screenshots.save(WindowImages.scaled(lastImage, size.width(), size.height()));
-            note("saved " + file + (sizeLimit.isEmpty() ? ""
-                    : " at " + size.width() + "x" + size.height() + " (at most " + sizeLimit + ")"));
-        } catch (IOException | RuntimeException | OutOfMemoryError e) {
-            String why = "screenshot not saved: " + (e instanceof Exception x ? screenshots.why(x) : "out of memory");
-            err.println("glint: " + why);
-            note(why);
-        }
+        Camera printed = CameraBlock.asPrinted(controller.camera()); // the camera a pasted block gives
+        Config still = seen.still().withSize(sized ? seen.config.displayWidth() : size.width(),
+                sized ? seen.config.displayHeight() : size.height());
+        return stills.startOrCancel(StillRender.job(compiled().withCamera(printed), printed, still, source.scenePath(),
+                screenshots, pfm), out, err);
     }
 
     /** F5: the config and the scene again; the camera goes back to the scene's. */
@@ -547,10 +547,7 @@ public final class Engine implements Runnable, SceneWatcher.Listener {
     }
 
     private void applyConfig(Config c) {
-        base = c;
-        config = seenWith(scene);
-        shading = config.shading();
-        depth = config.recursionMax(); // at most max_recursion: the config loader refuses more
+        seen.configFile(c, scene);
         controller.setSpeeds(c.moveSpeed(), c.turnSpeed());
         controller.setFreeFlight(c.freeFlight());
         governor.setLimits(c.targetFps(), c.displayScale());
@@ -580,30 +577,12 @@ public final class Engine implements Runnable, SceneWatcher.Listener {
             controller.reset(newScene.camera());
         }
         fileCamera = newScene.camera();
-        Config seen = seenWith(newScene); // the user's M, + and - hold until the scene's settings change
-        if (seen.shading() != config.shading()) {
-            shading = seen.shading();
-        }
-        if (seen.recursionMax() != config.recursionMax()) {
-            depth = seen.recursionMax();
-        }
-        config = seen;
-        setError(blockError);
+        seen.scene(newScene);
+        setError(seen.blockError());
         scene = newScene;
         sceneNow = newScene;
         cameraNow = controller.camera();
         invalidate();
-    }
-
-    /** The settings a scene is seen with; a render: block beyond the config's limits is shown and left out. */
-    private Config seenWith(Scene s) {
-        try {
-            blockError = "";
-            return source.flags().effective(base, s.render());
-        } catch (InputException e) {
-            blockError = e.getMessage();
-            return base;
-        }
     }
 
     private void setError(String problem) {

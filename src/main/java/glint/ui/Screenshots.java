@@ -3,6 +3,7 @@ package glint.ui;
 import glint.image.ImageWriter;
 import java.awt.image.BufferedImage;
 import java.io.IOException;
+import java.io.PrintWriter;
 import java.io.OutputStream;
 import java.nio.file.AccessDeniedException;
 import java.nio.file.FileSystemException;
@@ -46,6 +47,22 @@ public final class Screenshots {
                 ImageWriter.writePng(image, out);
             }
         });
+    }
+
+    /**
+     * Saves the view's image at {@code size} (scaled as shown) and returns what the overlay says: where it
+     * went, or why not (also on {@code err}). {@code sizeLimit} says why the size is below the window's.
+     */
+    String saveView(BufferedImage view, ResolutionGovernor.Size size, String sizeLimit, PrintWriter err) {
+        try {
+            Path file = save(WindowImages.scaled(view, size.width(), size.height()));
+            return "saved " + file + (sizeLimit.isEmpty() ? ""
+                    : " at " + size.width() + "x" + size.height() + " (at most " + sizeLimit + ")");
+        } catch (IOException | RuntimeException | OutOfMemoryError e) {
+            String why = "screenshot not saved: " + (e instanceof Exception x ? why(x) : "out of memory");
+            err.println("glint: " + why);
+            return why;
+        }
     }
 
     /** Writes a file's content to a temporary file. */
