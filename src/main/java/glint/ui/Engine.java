@@ -49,6 +49,7 @@ public final class Engine implements Runnable, SceneWatcher.Listener {
     private final ResolutionGovernor governor;
     private final FrameRenderer renderer;
     private final StillRender stills;
+    private final RefinePacing pacing = new RefinePacing();
     private final FrameRateMeter meter = new FrameRateMeter();
     private final AtomicReference<Object> pendingScene = new AtomicReference<>(); // Scene or InputException
     private final CountDownLatch finished = new CountDownLatch(1);
@@ -149,6 +150,11 @@ public final class Engine implements Runnable, SceneWatcher.Listener {
     /** Where key C prints the camera block (standard output unless a test says otherwise). */
     void printTo(PrintWriter printer) {
         this.out = printer;
+    }
+
+    /** Traces about {@code nanos} of still passes in one go while passes are quicker ({@link RefinePacing}). */
+    void paceRefinement(long nanos) {
+        pacing.interval(nanos);
     }
 
     /** Waits until {@link #run} has returned. */
@@ -304,18 +310,21 @@ public final class Engine implements Runnable, SceneWatcher.Listener {
     /** Renders and shows the next still pass; false if it failed (shown, and tried again later). */
     private boolean renderPass(long start) {
         ResolutionGovernor.Size size = budget.fit(viewWidth, viewHeight, 1);
+        int samples = seen.config.samples();
+        int count = pacing.passes(passesDone, samples, start); // quick passes: several in one go
         BufferedImage image;
         try {
-            image = renderer.renderPass(compiled(), size.width(), size.height(), seen.config.samples(), passesDone);
+            image = renderer.renderPasses(compiled(), size.width(), size.height(), samples, passesDone, count);
         } catch (RuntimeException | OutOfMemoryError e) {
             frameFailed(e);
             presentStatus();
             return false;
         }
         needFrame = false;
-        passesDone++;
+        passesDone += count;
         long end = clock.nanoTime();
         rendered();
+        pacing.passesDone(passesDone, count, samples, start, end, size, seen.config.debug() ? err : null);
         show(image, end, end - start, passesDone, false);
         return true;
     }
