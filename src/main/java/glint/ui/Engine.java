@@ -215,10 +215,7 @@ public final class Engine implements Runnable, SceneWatcher.Listener {
      * once, {@link #IDLE}: until something happens).
      */
     public long step() {
-        String still = stills.news();
-        if (still != null) {
-            note(still);
-        }
+        stills.news().ifPresent(this::note); // a still's progress, or its end
         long wait = stepOnce();
         return stills.running() ? Math.min(wait, StillRender.POLL_NANOS) : wait; // its progress is shown
     }
@@ -245,8 +242,7 @@ public final class Engine implements Runnable, SceneWatcher.Listener {
             statusChanged = true;
         }
         if (in.orbitStarted()) { // the point under the mouse, with the camera the user saw it from
-            controller.orbitAround(OrbitPivot.pick(compiled(), controller.camera(), in.orbitFromX(), in.orbitFromY(),
-                    viewWidth, viewHeight));
+            controller.orbitAround(OrbitPivot.pick(compiled(), controller.camera(), in, viewWidth, viewHeight));
         }
         boolean moved = controller.apply(in);
         if (moved) {
@@ -527,13 +523,9 @@ public final class Engine implements Runnable, SceneWatcher.Listener {
 
     /** The render key: the view as a still at the still's settings, in the background. */
     private String startStill(boolean pfm) {
-        boolean sized = source.flags().setsSize() || scene.render().width() != null; // else the window's size
-        ResolutionGovernor.Size size = budget.fit(viewWidth, viewHeight, 1);
         Camera printed = CameraBlock.asPrinted(controller.camera()); // the camera a pasted block gives
-        Config still = seen.still().withSize(sized ? seen.config.displayWidth() : size.width(),
-                sized ? seen.config.displayHeight() : size.height());
-        return stills.startOrCancel(StillRender.job(compiled().withCamera(printed), printed, still, source.scenePath(),
-                screenshots, pfm), out, err);
+        return stills.startOrCancel(StillRender.job(compiled().withCamera(printed), printed,
+                seen.still(scene, budget.fit(viewWidth, viewHeight, 1)), source.scenePath(), screenshots, pfm), out, err);
     }
 
     /** F5: the config and the scene again; the camera goes back to the scene's. */

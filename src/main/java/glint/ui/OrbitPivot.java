@@ -12,6 +12,11 @@ final class OrbitPivot {
     private OrbitPivot() {
     }
 
+    /** The point under the pixel where the orbit drag of {@code in} started. */
+    static Vector3d pick(RenderScene scene, Camera camera, InputFrame in, int width, int height) {
+        return pick(scene, camera, in.orbitFromX(), in.orbitFromY(), width, height);
+    }
+
     /**
      * The nearest point of the scene on the ray through pixel (x, y) of a width x height view (the mapping
      * of the tracer's pixel centres); when the ray meets nothing, the point

@@ -11,6 +11,7 @@ import java.io.PrintWriter;
 import java.nio.file.Files;
 import java.nio.file.Path;
 import java.util.Locale;
+import java.util.Optional;
 import java.util.concurrent.CancellationException;
 import java.util.concurrent.TimeUnit;
 
@@ -104,14 +105,14 @@ final class StillRender implements AutoCloseable {
         return "still: cancelling";
     }
 
-    /** What changed since the last call (progress, written, cancelled, failed), or null. */
-    String news() {
+    /** What changed since the last call (progress, written, cancelled, failed), if anything. */
+    Optional<String> news() {
         String n = news;
         news = null;
         if (n == null && running()) {
-            return progressLine();
+            return Optional.of(progressLine());
         }
-        return n;
+        return Optional.ofNullable(n);
     }
 
     private String progressLine() {

@@ -61,9 +61,19 @@ final class ViewSettings {
         return RenderSettings.of(still());
     }
 
-    /** The settings of a still of the view: the scene's, with the shading and depth on screen. */
+    /** The scene's settings with the shading and depth on screen. */
     Config still() {
         return config.withShading(shading).withRecursionMax(depth);
+    }
+
+    /**
+     * The settings of a still of the view (the render key): {@link #still()} at the size of --width and
+     * --height, else of the scene's render: block, else of the {@code window}.
+     */
+    Config still(Scene scene, ResolutionGovernor.Size window) {
+        boolean sized = flags.setsSize() || scene.render().width() != null;
+        return still().withSize(sized ? config.displayWidth() : window.width(),
+                sized ? config.displayHeight() : window.height());
     }
 
     private Config seenWith(Scene scene) {
