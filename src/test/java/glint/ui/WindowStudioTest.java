@@ -131,6 +131,38 @@ class WindowStudioTest {
     }
 
     @Test
+    void shiftEnterWritesAPfmBesideThePng() throws Exception {
+        open(1);
+        robot.keyPress(KeyEvent.VK_SHIFT);
+        tap(KeyEvent.VK_ENTER);
+        robot.keyRelease(KeyEvent.VK_SHIFT);
+        awaitMessage("still: wrote ", 60_000);
+        List<Path> written = files();
+        assertEquals(2, written.size(), written::toString);
+        Path png = written.get(1);
+        assertTrue(png.toString().endsWith(".png") && written.get(0).toString().equals(
+                png.toString().replace(".png", ".pfm")), written::toString);
+        assertEquals(W, glint.image.PfmReader.read(written.get(0)).width());
+        assertTrue(message().endsWith(png + " and " + written.get(0)), message());
+    }
+
+    @Test
+    void aMiddleButtonDragOrbitsToo() throws Exception {
+        open(1);
+        Camera before = window.engine().camera();
+        Point start = onScreen(W / 2, H / 2);
+        robot.mouseMove(start.x, start.y);
+        robot.mousePress(InputEvent.BUTTON2_DOWN_MASK);
+        for (int dx = 10; dx <= 60; dx += 10) {
+            robot.mouseMove(start.x - dx, start.y);
+        }
+        robot.mouseRelease(InputEvent.BUTTON2_DOWN_MASK);
+        Poll.until(() -> window.engine().camera().position().x() > before.position().x() + 0.3, 10_000,
+                () -> "a drag left circles the camera to the right: " + window.engine().camera() + "; err: " + err);
+        assertEquals(0, CameraController.roll(window.engine().camera().orientation()), 1e-12);
+    }
+
+    @Test
     void enterOrEscCancelsAndClosingTheWindowDuringAStillLeavesNoFile() throws Exception {
         open(4096); // a still that takes long enough to stop
         tap(KeyEvent.VK_ENTER);
