@@ -1,16 +1,16 @@
 #!/bin/sh
-# Renders the pictures of docs/gallery.md: every scene of scenes/ (not scenes/bench) at 640x360 with
-# 16 samples per pixel into docs/images/gallery/NAME.png. phong-classic.yaml is shown in phong shading,
-# the others in the default cook-torrance. Run from anywhere after `mvn -q package -DskipTests`.
+# Renders the pictures of docs/gallery.md: every scene of scenes/ (not scenes/bench) into
+# docs/images/gallery/NAME.png, at 640x360 with 16 samples per pixel unless the scene's render: block
+# says otherwise (phong-classic.yaml asks for phong shading there). The gallery's settings are a config
+# file, which a scene's render: block ranks above (docs/scene-format.md#render). Run from anywhere after
+# `mvn -q package -DskipTests`.
 set -e
 cd "$(dirname "$0")/.."
 mkdir -p docs/images/gallery
+config=$(mktemp)
+trap 'rm -f "$config"' EXIT
+printf 'display_width=640\ndisplay_height=360\nsamples=16\n' >"$config"
 for scene in scenes/*.yaml; do
     name=$(basename "$scene" .yaml)
-    shading=cook-torrance
-    if [ "$name" = phong-classic ]; then
-        shading=phong
-    fi
-    java -jar target/glint.jar --scene "$scene" --shading "$shading" --width 640 --height 360 --spp 16 \
-        --output "docs/images/gallery/$name.png"
+    java -jar target/glint.jar --config "$config" --scene "$scene" --output "docs/images/gallery/$name.png"
 done

@@ -1,6 +1,7 @@
 package glint.app;
 
 import glint.config.Config;
+import glint.config.Flags;
 import glint.image.ImageWriter;
 import glint.input.InputException;
 import glint.render.FrameBuffer;
@@ -43,20 +44,24 @@ final class Headless {
     }
 
     /**
-     * Renders one still to {@code output}, which is checked first against everything that would
-     * otherwise fail only at the end or lose a file ({@link OutputFile}).
+     * Renders one still to {@code output}, at the settings the flags, the scene's render block and
+     * the config give, in that order. The output is checked first (its size once the scene is read),
+     * before any work, against everything that would otherwise fail only at the end or lose a file
+     * ({@link OutputFile}).
      *
      * @param inputs the scene file, then the config file if one was read: the output may be neither
      */
-    static int renderStill(Path scenePath, List<Path> inputs, Config config, Path output, PrintWriter out, PrintWriter err)
-            throws InputException, IOException {
+    static int renderStill(Path scenePath, List<Path> inputs, Config settings, Flags flags, Path output,
+                           PrintWriter out, PrintWriter err) throws InputException, IOException {
         Path temp = null;
         try (Interrupts interrupts = Interrupts.install(err, "glint: interrupted; no image written");
              Progress progress = Progress.start(err)) {
-            temp = OutputFile.prepare(output, inputs, config.displayWidth(), config.displayHeight());
+            temp = OutputFile.prepare(output, inputs);
             interrupts.watch(null, temp);
             progress.step("reading the scene", null);
-            Scene scene = SceneLoader.load(scenePath, config.limits().scene());
+            Scene scene = SceneLoader.load(scenePath, settings.limits().scene());
+            Config config = flags.effective(settings, scene.render());
+            OutputFile.checkSize(output, config.displayWidth(), config.displayHeight());
             progress.step("preparing the scene", null);
             RenderScene compiled = RenderScene.compile(scene, RenderSettings.of(config));
             checkMemory(config, STILL_BYTES_PER_PIXEL, Runtime.getRuntime());
@@ -136,9 +141,10 @@ final class Headless {
         return String.format(Locale.ROOT, "%,d MB", (bytes + (1 << 20) - 1) >> 20);
     }
 
-    static int bench(Path scenePath, Config config, int frames, PrintWriter out, PrintWriter err)
+    static int bench(Path scenePath, Config settings, Flags flags, int frames, PrintWriter out, PrintWriter err)
             throws InputException {
-        Scene scene = SceneLoader.load(scenePath, config.limits().scene());
+        Scene scene = SceneLoader.load(scenePath, settings.limits().scene());
+        Config config = flags.effective(settings, scene.render());
         RenderScene compiled = RenderScene.compile(scene, RenderSettings.of(config));
         checkMemory(config, 12, Runtime.getRuntime());
         FrameBuffer frame = new FrameBuffer(config.displayWidth(), config.displayHeight());

@@ -2,9 +2,8 @@ package glint.app;
 
 import glint.config.Config;
 import glint.config.ConfigLoader;
-import glint.config.Shading;
+import glint.config.Flags;
 import glint.input.InputException;
-import glint.input.Suggestions;
 import glint.render.RenderSettings;
 import java.io.PrintWriter;
 import java.nio.file.Files;
@@ -168,16 +167,16 @@ public final class Main implements Callable<Integer> {
             if (Files.exists(configFile)) {
                 inputs.add(configFile);
             }
-            return Headless.renderStill(scenePath, inputs, settings, output, out, err);
+            return Headless.renderStill(scenePath, inputs, settings, flags(), output, out, err);
         }
         if (bench != null) {
             if (bench < 1 || bench > Headless.MAX_BENCH_FRAMES) {
                 throw new InputException("glint", 0, 0, "--bench: expected a number of frames from 1 to "
                         + Headless.MAX_BENCH_FRAMES + ", got " + bench);
             }
-            return Headless.bench(scenePath, settings, bench, out, err);
+            return Headless.bench(scenePath, settings, flags(), bench, out, err);
         }
-        return WindowLauncher.open(scenePath, settings, () -> overrides(loadConfig()), err);
+        return WindowLauncher.open(scenePath, settings, flags(), () -> overrides(loadConfig()), err);
     }
 
     private Config loadConfig() throws InputException {
@@ -226,48 +225,12 @@ public final class Main implements Callable<Integer> {
         throw new InputException(at.file(), at.line(), at.column(), problem);
     }
 
-    private Config overrides(Config c) throws InputException {
-        if (width != null || height != null) {
-            int w = width != null ? width : c.displayWidth();
-            int h = height != null ? height : c.displayHeight();
-            checkRange("--width", w, 1, 65536);
-            checkRange("--height", h, 1, 65536);
-            String sizeProblem = c.limits().imageSizeProblem(w, h);
-            if (sizeProblem != null) {
-                throw new InputException("glint", 0, 0, "--width x --height: " + sizeProblem);
-            }
-            c = c.withSize(w, h);
-        }
-        if (spp != null) {
-            if (!Config.isPerfectSquare(spp) || spp > 4096) {
-                throw new InputException("glint", 0, 0,
-                        "--spp: expected a perfect square from 1 to 4096 (1, 4, 9, 16, ...), got " + spp);
-            }
-            c = c.withSamples(spp);
-        }
-        if (threads != null) {
-            checkRange("--threads", threads, 0, 1024);
-            c = c.withThreads(threads);
-        }
-        if (depth != null) {
-            checkRange("--depth", depth, 1, c.limits().maxRecursion());
-            c = c.withRecursionMax(depth);
-        }
-        if (shading != null) {
-            Shading model = Shading.byKey(shading);
-            if (model == null) {
-                throw new InputException("glint", 0, 0, "--shading: unknown model " + InputException.quote(shading)
-                        + Suggestions.hint(shading, List.of("cook-torrance", "phong")));
-            }
-            c = c.withShading(model);
-        }
-        return c;
+    /** The command line's settings, which rank above the scene's render: block and the config. */
+    private Flags flags() {
+        return new Flags(width, height, spp, threads, depth, shading);
     }
 
-    private static void checkRange(String option, int value, int min, int max) throws InputException {
-        if (value < min || value > max) {
-            throw new InputException("glint", 0, 0,
-                    option + ": expected a whole number from " + min + " to " + max + ", got " + value);
-        }
+    private Config overrides(Config c) throws InputException {
+        return flags().apply(c);
     }
 }

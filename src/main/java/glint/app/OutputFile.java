@@ -23,22 +23,8 @@ import java.util.Locale;
  */
 final class OutputFile {
 
-    /** The sticky bit of a folder's mode: only a file's owner (or the folder's) may replace it. */
-    private static final int STICKY = 01000;
-
-    private OutputFile() {
-    }
-
-    /**
-     * Checks {@code output} against what it must never be (one of the {@code inputs}: the scene,
-     * the config) and what would fail only at the end, and makes its temporary file.
-     *
-     * @return the temporary file beside the output, empty
-     */
-    static Path prepare(Path output, List<Path> inputs, int width, int height) throws InputException {
-        if (!ImageWriter.isSupported(output)) {
-            throw refused("expected a file ending in .png or .pfm, got " + InputException.quotePath(output));
-        }
+    /** Refuses a PFM output of this size that would be larger than this process may write (ulimit -f). */
+    static void checkSize(Path output, int width, int height) throws InputException {
         if (output.getFileName().toString().toLowerCase(Locale.ROOT).endsWith(".pfm")) {
             long size = ImageWriter.pfmBytes(width, height);
             long limit = fileSizeLimit(Path.of("/proc/self/limits"));
@@ -47,6 +33,25 @@ final class OutputFile {
                         + "write (%s, ulimit -f); render a smaller image, a PNG, or raise the limit",
                         width, height, TextFiles.size(size), TextFiles.size(limit)));
             }
+        }
+    }
+
+    /** The sticky bit of a folder's mode: only a file's owner (or the folder's) may replace it. */
+    private static final int STICKY = 01000;
+
+    private OutputFile() {
+    }
+
+    /**
+     * Checks {@code output} against what it must never be (one of the {@code inputs}: the scene,
+     * the config) and what would fail only at the end, and makes its temporary file. What depends
+     * on the image's size, known once the scene is read, is {@link #checkSize}'s.
+     *
+     * @return the temporary file beside the output, empty
+     */
+    static Path prepare(Path output, List<Path> inputs) throws InputException {
+        if (!ImageWriter.isSupported(output)) {
+            throw refused("expected a file ending in .png or .pfm, got " + InputException.quotePath(output));
         }
         BasicFileAttributes existing = attributes(output);
         if (existing != null && existing.isDirectory()) {

@@ -1,6 +1,7 @@
 package glint.app;
 
 import glint.config.Config;
+import glint.config.Flags;
 import glint.input.InputException;
 import glint.ui.ConfigSource;
 import glint.ui.GlintWindow;
@@ -20,22 +21,24 @@ final class WindowLauncher {
 
     /** The window on a scene whose config cannot be read again (F5 reloads the scene only). */
     static int open(Path scenePath, Config config, PrintWriter err) throws InputException {
-        return open(scenePath, config, () -> config, err);
+        return open(scenePath, config, Flags.NONE, () -> config, err);
     }
 
     /**
      * Opens the window and returns the exit status when it is closed: 0 when the user quits, 1 when
      * there is no display. A scene that does not load throws before any window opens.
      *
+     * @param flags  the command line's settings, above each scene's render: block
      * @param reload reads the config again for F5
      */
-    static int open(Path scenePath, Config config, ConfigSource reload, PrintWriter err) throws InputException {
+    static int open(Path scenePath, Config config, Flags flags, ConfigSource reload, PrintWriter err)
+            throws InputException {
         if (GraphicsEnvironment.isHeadless()) {
             return noDisplay(err, "no display available for the window");
         }
         GlintWindow window;
         try {
-            window = GlintWindow.open(config, new SceneSource(scenePath, reload),
+            window = GlintWindow.open(config, new SceneSource(scenePath, reload, flags),
                     new Screenshots(Path.of("").toAbsolutePath()), err);
         } catch (GlintWindow.UnavailableException e) {
             return noDisplay(err, "cannot open the window (" + e.getMessage() + ")");

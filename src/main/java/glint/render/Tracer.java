@@ -124,6 +124,14 @@ public final class Tracer implements AutoCloseable {
         run(renderScene, target, samples, pass, 1, 0, divider);
     }
 
+    /** Passes {@code first} .. {@code first + count - 1} in one go: their average (the window, when passes are quick). */
+    public void renderPasses(RenderScene renderScene, FrameBuffer target, int samples, int first, int count, int divider) {
+        if (first < 0 || count < 1 || first + count > samples) {
+            throw new IllegalArgumentException("passes " + first + " + " + count + " outside 0.." + (samples - 1));
+        }
+        run(renderScene, target, samples, first, count, 0, divider);
+    }
+
     private void run(RenderScene renderScene, FrameBuffer target, int samples, int first, int count,
                      int frameIndex, int divider) {
         this.scene = renderScene;

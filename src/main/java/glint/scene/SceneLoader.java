@@ -29,7 +29,7 @@ import org.snakeyaml.engine.v2.nodes.ScalarNode;
 public final class SceneLoader {
 
     private static final Set<String> TOP_KEYS =
-            ordered("camera", "background", "ambient", "lights", "materials", "objects", "views");
+            ordered("camera", "background", "ambient", "lights", "materials", "objects", "views", "render");
     /** Keys 1 to 9 of the window go to the views. */
     public static final int MAX_VIEWS = 9;
 
@@ -48,12 +48,14 @@ public final class SceneLoader {
     private static final Set<String> LIGHT_TYPES = ordered("point", "directional");
     private static final Set<String> MATERIAL_TYPES = ordered("matte", "metal", "glass");
 
+    private final String file;
     private final YamlTree yaml;
     private final CameraReader cameras;
     private final SceneLimits limits;
     private final Map<String, Material> materials = new LinkedHashMap<>(); // presets first, for hints
 
     private SceneLoader(String file, SceneLimits limits) {
+        this.file = file;
         this.yaml = new YamlTree(file);
         this.cameras = new CameraReader(yaml);
         this.limits = limits;
@@ -177,7 +179,9 @@ public final class SceneLoader {
             }
         }
         List<View> views = top.containsKey("views") ? cameras.views(top.get("views")) : List.of();
-        return new Scene(camera, background, ambient, lights, objects, views);
+        RenderBlock render = top.containsKey("render")
+                ? new RenderBlockReader(yaml, file).read(top.get("render")) : RenderBlock.NONE;
+        return new Scene(camera, background, ambient, lights, objects, views, render);
     }
 
     private void namedMaterials(Node node) throws InputException {

@@ -14,6 +14,7 @@ final class Accumulator {
     private int height;
     private double[] sum;
     private int passes;
+    private int weight = 1; // passes in the frame being added
 
     /** Starts over for a width x height view. */
     void reset(int newWidth, int newHeight) {
@@ -35,7 +36,13 @@ final class Accumulator {
 
     /** Counts one more pass; its pixels are then added by {@link #addAndEncode}, range by range. */
     void beginPass() {
-        passes++;
+        beginPasses(1);
+    }
+
+    /** Counts {@code count} more passes, traced in one go: their average is added with weight {@code count}. */
+    void beginPasses(int count) {
+        passes += count;
+        weight = count;
     }
 
     /**
@@ -47,10 +54,11 @@ final class Accumulator {
         float[] in = pass.rgb();
         double[] s = sum;
         double inverse = 1.0 / passes;
+        double w = weight;
         for (int p = from, i = 3 * from; p < to; p++, i += 3) {
-            double r = s[i] + in[i];
-            double g = s[i + 1] + in[i + 1];
-            double b = s[i + 2] + in[i + 2];
+            double r = s[i] + w * in[i];
+            double g = s[i + 1] + w * in[i + 1];
+            double b = s[i + 2] + w * in[i + 2];
             s[i] = r;
             s[i + 1] = g;
             s[i + 2] = b;

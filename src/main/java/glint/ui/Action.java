@@ -9,10 +9,14 @@ public enum Action {
     UP(Kind.MOTION), DOWN(Kind.MOTION),
     YAW_LEFT(Kind.MOTION), YAW_RIGHT(Kind.MOTION), PITCH_UP(Kind.MOTION), PITCH_DOWN(Kind.MOTION),
     ROLL_LEFT(Kind.MOTION), ROLL_RIGHT(Kind.MOTION),
+    /** Narrow / widen the field of view while held. */
+    ZOOM_IN(Kind.MOTION), ZOOM_OUT(Kind.MOTION),
     /** Held with motion keys: fly and turn faster. */
     FAST(Kind.MODIFIER),
     /** Not a key: dragging with the mouse looks around. */
     LOOK(Kind.POINTER),
+    /** Not a key: dragging with Ctrl or the middle button orbits around the point under the mouse. */
+    ORBIT(Kind.POINTER),
     /** Not a key: the mouse wheel changes the flying speed. */
     SPEED(Kind.POINTER),
     TOGGLE_SHADING(Kind.COMMAND), DEPTH_UP(Kind.COMMAND), DEPTH_DOWN(Kind.COMMAND),
@@ -26,7 +30,11 @@ public enum Action {
     VIEW(Kind.COMMAND),
     /** Prints the camera as a scene's camera block. */
     PRINT_CAMERA(Kind.COMMAND),
-    NEXT_SCENE(Kind.COMMAND), PREVIOUS_SCENE(Kind.COMMAND);
+    NEXT_SCENE(Kind.COMMAND), PREVIOUS_SCENE(Kind.COMMAND),
+    /** Renders the view as a still image in the background, or cancels that render. */
+    RENDER_STILL(Kind.COMMAND),
+    /** The same, writing a linear PFM beside the PNG (Shift with the render key). */
+    RENDER_STILL_PFM(Kind.COMMAND);
 
     /** How an action is triggered. */
     public enum Kind { MOTION, MODIFIER, POINTER, COMMAND }
@@ -39,6 +47,11 @@ public enum Action {
 
     public Kind kind() {
         return kind;
+    }
+
+    /** L, Home and the views put the camera somewhere: they act after the motion of the same interval. */
+    public boolean jumpsCamera() {
+        return this == LEVEL || this == HOME || this == VIEW;
     }
 
     public boolean isHeld() {

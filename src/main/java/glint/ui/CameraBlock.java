@@ -1,7 +1,9 @@
 package glint.ui;
 
+import glint.input.InputException;
 import glint.math.Vector3d;
 import glint.scene.Camera;
+import glint.scene.SceneLoader;
 import java.math.BigDecimal;
 import java.math.RoundingMode;
 
@@ -13,6 +15,38 @@ import java.math.RoundingMode;
 final class CameraBlock {
 
     private CameraBlock() {
+    }
+
+    /**
+     * What key C prints: the {@code camera:} block and the same camera as a one-line item of {@code views:},
+     * ready to paste under a scene's {@code views:}; the whole is a scene of its own, too.
+     */
+    static String blocks(Camera camera) {
+        return yaml(camera) + "views:\n" + viewItem(camera) + "\n";
+    }
+
+    /** Prints {@link #blocks} (key C) and returns it for the overlay. */
+    static String print(Camera camera, java.io.PrintWriter out) {
+        String text = blocks(camera);
+        out.print(text);
+        out.flush();
+        return text.strip();
+    }
+
+    /** The camera as an item of a scene's {@code views:} list, indented as under the key: {@code - {...}}. */
+    static String viewItem(Camera camera) {
+        Vector3d p = camera.position();
+        return "  - {position: " + vector(p) + ", look_at: " + vector(p.add(camera.orientation().forward()))
+                + ", up: " + vector(camera.orientation().up()) + ", fov: " + number(camera.fovDegrees()) + "}";
+    }
+
+    /** The camera a scene holding the printed block has: the block read back as the scene loader reads it. */
+    static Camera asPrinted(Camera camera) {
+        try {
+            return SceneLoader.parse("camera", yaml(camera)).camera();
+        } catch (InputException e) { // cannot happen: the block of a camera is a valid scene
+            throw new IllegalStateException(e.getMessage(), e);
+        }
     }
 
     /** The block, four lines under {@code camera:}, each ending in a newline. */

@@ -30,6 +30,13 @@ public final class CameraController {
     /** A level camera's view stays this many degrees below straight up and above straight down. */
     public static final double PITCH_LIMIT_DEGREES = 1;
 
+    /** The field of view the zoom keys keep to, in degrees. */
+    public static final double MIN_FOV = 1, MAX_FOV = 150;
+    /** Holding a zoom key halves or doubles the field of view each second. */
+    public static final double ZOOM_FACTOR_PER_SECOND = 2;
+    /** Where the orbit's point is when the ray under the mouse meets nothing: this far ahead, in scene units. */
+    public static final double ORBIT_MISS_DISTANCE = 5;
+
     private static final double MAX_ELEVATION_SIN = Math.cos(Math.toRadians(PITCH_LIMIT_DEGREES));
 
     private Vector3d position;
@@ -39,6 +46,7 @@ public final class CameraController {
     private double turnSpeedDegrees;
     private double speedFactor = 1;
     private boolean freeFlight;
+    private Vector3d pivot; // what an orbit drag turns around, or null before the first
 
     /**
      * @param start            the initial pose and field of view
@@ -128,7 +136,50 @@ public final class CameraController {
         }
         boolean turned = turn(in);
         boolean moved = move(in);
-        return turned || moved;
+        boolean zoomed = zoom(in);
+        boolean orbited = orbit(in);
+        return turned || moved || zoomed || orbited;
+    }
+
+    /** An orbit drag turns around {@code point} from now on (picked where the drag began). */
+    public void orbitAround(Vector3d point) {
+        this.pivot = point;
+    }
+
+    private boolean zoom(InputFrame in) {
+        double seconds = in.seconds(Action.ZOOM_IN) - in.seconds(Action.ZOOM_OUT);
+        if (seconds == 0) {
+            return false;
+        }
+        double fov = Math.max(MIN_FOV, Math.min(MAX_FOV, fovDegrees * Math.pow(ZOOM_FACTOR_PER_SECOND, -seconds)));
+        boolean changed = fov != fovDegrees;
+        fovDegrees = fov;
+        return changed;
+    }
+
+    /**
+     * Orbits the camera around the pivot: a drag right circles it to the left about the world's up axis (the
+     * scene turns with the mouse, as on a turntable), a drag up lowers it about its own right axis, pitch
+     * bounded as when turning; camera and view turn together, so the pivot stays where it is on the screen
+     * and the horizon stays level.
+     */
+    private boolean orbit(InputFrame in) {
+        if (pivot == null || in.orbitX() == 0 && in.orbitY() == 0) {
+            return false;
+        }
+        double perPixel = Math.toRadians(DRAG_DEGREES_PER_PIXEL);
+        double yaw = perPixel * in.orbitX();
+        double pitch = boundedPitch(orientation, -perPixel * in.orbitY());
+        Quaternion turn = Quaternion.fromAxisAngle(Vector3d.UNIT_Y, yaw);
+        if (pitch != 0) {
+            turn = turn.multiply(Quaternion.fromAxisAngle(orientation.right(), -pitch));
+        }
+        if (yaw == 0 && pitch == 0) {
+            return false;
+        }
+        position = pivot.add(turn.rotate(position.sub(pivot)));
+        orientation = turn.multiply(orientation).normalize();
+        return true;
     }
 
     private boolean turn(InputFrame in) {
@@ -208,7 +259,12 @@ public final class CameraController {
         if (local.x() == 0 && local.y() == 0 && local.z() == 0) {
             return false;
         }
-        position = position.add(orientation.rotate(local));
+        if (freeFlight) {
+            position = position.add(orientation.rotate(local));
+        } else { // R and F along the world's up: a pitched camera does not drift forwards or back
+            position = position.add(orientation.rotate(new Vector3d(local.x(), 0, local.z())))
+                    .add(new Vector3d(0, local.y(), 0));
+        }
         return true;
     }
 }

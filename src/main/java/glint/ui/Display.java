@@ -98,7 +98,11 @@ public final class Display extends JPanel implements Presenter {
                 y = box(g, stats, y) + PAD;
             }
         }
-        if (help) {
+        if (help) { // in a smaller font where the window is too low for all of it
+            for (float size = font.getSize2D(); size > 8 && (keys.size() * g.getFontMetrics().getHeight() + 3 * PAD
+                    > getHeight() - y); size -= 0.5f) {
+                g.setFont(font.deriveFont(size - 0.5f));
+            }
             box(g, keys, y);
         }
         // X11 buffers drawing requests; without a flush a frame can sit unseen until other traffic comes

@@ -1,21 +1,16 @@
 package glint.ui;
 
 import glint.config.Config;
-import glint.config.Shading;
 import glint.input.InputException;
 import glint.render.RenderScene;
-import glint.render.RenderSettings;
 import glint.scene.Camera;
 import glint.scene.Scene;
 import glint.scene.View;
 import java.awt.image.BufferedImage;
-import java.io.IOException;
 import java.io.PrintWriter;
 import java.nio.file.Path;
-import java.nio.file.Files;
 import java.util.List;
 import java.util.Locale;
-import java.util.stream.Stream;
 import java.util.concurrent.CountDownLatch;
 import java.util.concurrent.TimeUnit;
 import java.util.concurrent.atomic.AtomicReference;
@@ -53,15 +48,15 @@ public final class Engine implements Runnable, SceneWatcher.Listener {
     private final CameraController controller;
     private final ResolutionGovernor governor;
     private final FrameRenderer renderer;
+    private final StillRender stills;
+    private final RefinePacing pacing = new RefinePacing();
     private final FrameRateMeter meter = new FrameRateMeter();
     private final AtomicReference<Object> pendingScene = new AtomicReference<>(); // Scene or InputException
     private final CountDownLatch finished = new CountDownLatch(1);
 
-    private Config config;
+    private final ViewSettings seen; // the scene's settings, the user's shading and depth
     private Scene scene;
     private Camera fileCamera;
-    private Shading shading;
-    private int depth;
 
     private int viewWidth;
     private int viewHeight;
@@ -95,19 +90,18 @@ public final class Engine implements Runnable, SceneWatcher.Listener {
     /** An engine whose frames are traced by {@code trace} (tests: injected faults, stamped frames). */
     Engine(Config config, Scene scene, SceneSource source, InputState input, Presenter presenter,
            Screenshots screenshots, Clock clock, PrintWriter err, FrameRenderer.TraceCall trace) {
-        this.config = config;
+        this.seen = new ViewSettings(config, source.flags());
         this.source = source;
         this.input = input;
         this.presenter = presenter;
         this.screenshots = screenshots;
         this.clock = clock;
         this.err = err;
-        this.shading = config.shading();
-        this.depth = config.recursionMax();
         this.controller = new CameraController(scene.camera(), config.moveSpeed(), config.turnSpeed());
         controller.setFreeFlight(config.freeFlight());
         this.governor = new ResolutionGovernor(config.targetFps(), config.displayScale());
         this.renderer = new FrameRenderer(config.effectiveThreads(), config.screenDivider(), trace);
+        this.stills = new StillRender(input::signal);
         this.viewWidth = input.viewWidth();
         this.viewHeight = input.viewHeight();
         this.lastMotion = clock.nanoTime() - MOTION_HOLD_NANOS - 1;
@@ -158,6 +152,11 @@ public final class Engine implements Runnable, SceneWatcher.Listener {
         this.out = printer;
     }
 
+    /** Traces about {@code nanos} of still passes in one go while passes are quicker ({@link RefinePacing}). */
+    void paceRefinement(long nanos) {
+        pacing.interval(nanos);
+    }
+
     /** Waits until {@link #run} has returned. */
     public boolean awaitFinished(long timeout, TimeUnit unit) throws InterruptedException {
         return finished.await(timeout, unit);
@@ -165,6 +164,7 @@ public final class Engine implements Runnable, SceneWatcher.Listener {
 
     /** Frees the render threads when the loop was driven by {@link #step} alone (tests). */
     public void close() {
+        stills.close();
         renderer.close();
     }
 
@@ -204,6 +204,7 @@ public final class Engine implements Runnable, SceneWatcher.Listener {
             err.println("glint: the window's engine stopped: " + e);
         } finally {
             running = false;
+            stills.close(); // a still under way is cancelled, and its hidden file deleted, before the end
             renderer.close();
             finished.countDown();
         }
@@ -214,10 +215,16 @@ public final class Engine implements Runnable, SceneWatcher.Listener {
      * once, {@link #IDLE}: until something happens).
      */
     public long step() {
+        stills.news().ifPresent(this::note); // a still's progress, or its end
+        long wait = stepOnce();
+        return stills.running() ? Math.min(wait, StillRender.POLL_NANOS) : wait; // its progress is shown
+    }
+
+    private long stepOnce() {
         long start = clock.nanoTime();
         InputFrame in = input.drain();
         for (Action command : in.commands()) {
-            if (!isCameraJump(command)) {
+            if (!command.jumpsCamera()) {
                 command(command, in);
             }
         }
@@ -234,6 +241,9 @@ public final class Engine implements Runnable, SceneWatcher.Listener {
         if (in.wheelNotches() != 0) {
             statusChanged = true;
         }
+        if (in.orbitStarted()) { // the point under the mouse, with the camera the user saw it from
+            controller.orbitAround(OrbitPivot.pick(compiled(), controller.camera(), in, viewWidth, viewHeight));
+        }
         boolean moved = controller.apply(in);
         if (moved) {
             lastMotion = start;
@@ -241,12 +251,12 @@ public final class Engine implements Runnable, SceneWatcher.Listener {
             invalidate();
         }
         for (Action command : in.commands()) {
-            if (isCameraJump(command)) { // after the interval's motion: the key came after it
+            if (command.jumpsCamera()) { // after the interval's motion: the key came after it
                 command(command, in);
             }
         }
         boolean moving = moved || in.motionHeld() || start - lastMotion < MOTION_HOLD_NANOS;
-        boolean frameDue = moving ? needFrame : passesDone < config.samples();
+        boolean frameDue = moving ? needFrame : passesDone < seen.config.samples();
         if (frameDue && start < faults.retryAt()) { // the last try failed: the next one comes when the pause is over
             if (statusChanged) {
                 presentStatus();
@@ -256,7 +266,7 @@ public final class Engine implements Runnable, SceneWatcher.Listener {
         if (moving && needFrame) {
             return renderMoving(start) ? 0 : faults.retryAt() - clock.nanoTime();
         }
-        if (!moving && passesDone < config.samples()) {
+        if (!moving && passesDone < seen.config.samples()) {
             return renderPass(start) ? 0 : faults.retryAt() - clock.nanoTime();
         }
         if (moving) { // nothing new to draw yet: wait for input, or for the end of the motion hold
@@ -296,18 +306,21 @@ public final class Engine implements Runnable, SceneWatcher.Listener {
     /** Renders and shows the next still pass; false if it failed (shown, and tried again later). */
     private boolean renderPass(long start) {
         ResolutionGovernor.Size size = budget.fit(viewWidth, viewHeight, 1);
+        int samples = seen.config.samples();
+        int count = pacing.passes(passesDone, samples, start); // quick passes: several in one go
         BufferedImage image;
         try {
-            image = renderer.renderPass(compiled(), size.width(), size.height(), config.samples(), passesDone);
+            image = renderer.renderPasses(compiled(), size.width(), size.height(), samples, passesDone, count);
         } catch (RuntimeException | OutOfMemoryError e) {
             frameFailed(e);
             presentStatus();
             return false;
         }
         needFrame = false;
-        passesDone++;
+        passesDone += count;
         long end = clock.nanoTime();
         rendered();
+        pacing.passesDone(passesDone, count, samples, start, end, size, seen.config.debug() ? err : null);
         show(image, end, end - start, passesDone, false);
         return true;
     }
@@ -318,10 +331,11 @@ public final class Engine implements Runnable, SceneWatcher.Listener {
         lastStats = stats(meter.fps(), nanos / 1e6, image.getWidth(), image.getHeight(), viewWidth, viewHeight,
                 samples, moving);
         publish();
-        if (config.debug() && meter.windowClosed()) {
+        if (seen.config.debug() && meter.windowClosed()) {
             err.println(String.format(Locale.ROOT, "glint: window %.1f fps, %.1f ms/frame, %dx%d of %dx%d, %s",
                     lastStats.fps(), lastStats.msPerFrame(), lastStats.renderWidth(), lastStats.renderHeight(),
-                    viewWidth, viewHeight, moving ? "moving" : "still, samples " + samples + "/" + config.samples()));
+                    viewWidth, viewHeight, moving ? "moving" : "still, samples " + samples + "/"
+                            + seen.config.samples()));
         }
     }
 
@@ -339,7 +353,8 @@ public final class Engine implements Runnable, SceneWatcher.Listener {
     private FrameStats stats(double fps, double msPerFrame, int renderWidth, int renderHeight, int frameViewWidth,
                              int frameViewHeight, int samplesDone, boolean moving) {
         return new FrameStats(fps, msPerFrame, renderWidth, renderHeight, frameViewWidth, frameViewHeight,
-                samplesDone, config.samples(), moving, renderer.threads(), shading, depth, controller.speed(),
+                samplesDone, seen.config.samples(), moving, renderer.threads(), seen.shading, seen.depth,
+                controller.speed(),
                 source.scenePath().toString(), message, error, sizeLimit, faults.overlayLine());
     }
 
@@ -375,7 +390,7 @@ public final class Engine implements Runnable, SceneWatcher.Listener {
 
     /** The frame size budget for the window's size now; says once when it starts to bind. */
     private void checkSize() {
-        budget = FrameBudget.of(config.limits(), Runtime.getRuntime().maxMemory());
+        budget = FrameBudget.of(seen.config.limits(), Runtime.getRuntime().maxMemory());
         boolean over = budget.binds(viewWidth, viewHeight);
         if (over && sizeLimit.isEmpty()) {
             ResolutionGovernor.Size size = budget.fit(viewWidth, viewHeight, 1);
@@ -391,8 +406,7 @@ public final class Engine implements Runnable, SceneWatcher.Listener {
 
     private RenderScene compiled() {
         if (compiled == null) {
-            RenderSettings settings = RenderSettings.of(config.withShading(shading).withRecursionMax(depth));
-            compiled = compiledScenes.of(scene, settings, controller.camera());
+            compiled = compiledScenes.of(scene, seen.render(), controller.camera());
         }
         return compiled;
     }
@@ -407,17 +421,17 @@ public final class Engine implements Runnable, SceneWatcher.Listener {
     private void command(Action action, InputFrame in) {
         switch (action) {
             case TOGGLE_SHADING -> {
-                shading = shading.other();
-                note("shading " + shading.key());
+                seen.shading = seen.shading.other();
+                note("shading " + seen.shading.key());
                 invalidate();
             }
             case DEPTH_UP, DEPTH_DOWN -> {
-                int max = config.limits().maxRecursion();
-                int next = Math.max(1, Math.min(max, depth + (action == Action.DEPTH_UP ? 1 : -1)));
-                note(next == depth ? "depth stays " + depth + " (from 1 to " + max + ", max_recursion)"
+                int max = seen.config.limits().maxRecursion();
+                int next = Math.max(1, Math.min(max, seen.depth + (action == Action.DEPTH_UP ? 1 : -1)));
+                note(next == seen.depth ? "depth stays " + seen.depth + " (from 1 to " + max + ", max_recursion)"
                         : "depth " + next);
-                if (next != depth) {
-                    depth = next;
+                if (next != seen.depth) {
+                    seen.depth = next;
                     invalidate();
                 }
             }
@@ -436,23 +450,23 @@ public final class Engine implements Runnable, SceneWatcher.Listener {
             }
             case VIEW -> view(in.view());
             case PRINT_CAMERA -> {
-                String block = CameraBlock.yaml(controller.camera());
-                out.print(block);
-                out.flush();
-                note(block.strip());
+                note(CameraBlock.print(controller.camera(), out));
             }
             case NEXT_SCENE -> openNeighbour(1);
             case PREVIOUS_SCENE -> openNeighbour(-1);
-            case QUIT -> running = false;
+            case RENDER_STILL, RENDER_STILL_PFM -> note(stills.running() ? stills.cancel()
+                    : startStill(action == Action.RENDER_STILL_PFM));
+            case QUIT -> {
+                if (stills.running()) { // Esc stops the still first; the next one quits
+                    note(stills.cancel());
+                } else {
+                    running = false;
+                }
+            }
             default -> {
                 // overlay and help are the display's
             }
         }
-    }
-
-    /** L, Home and the views put the camera somewhere: they act after the motion of the same interval. */
-    private static boolean isCameraJump(Action action) {
-        return action == Action.LEVEL || action == Action.HOME || action == Action.VIEW;
     }
 
     /** The camera jumped (Home, a view, L): the view is drawn anew. */
@@ -481,31 +495,17 @@ public final class Engine implements Runnable, SceneWatcher.Listener {
      * not load says why and leaves the view as it was.
      */
     private void openNeighbour(int step) {
-        Path current = source.scenePath().toAbsolutePath().normalize();
-        Path folder = current.getParent();
-        List<Path> scenes;
-        try (Stream<Path> files = Files.list(folder)) {
-            scenes = files.filter(f -> {
-                String name = f.getFileName().toString().toLowerCase(Locale.ROOT);
-                return (name.endsWith(".yaml") || name.endsWith(".yml")) && Files.isRegularFile(f);
-            }).map(f -> f.toAbsolutePath().normalize()).sorted().toList();
-        } catch (IOException | RuntimeException e) {
-            note("cannot list " + folder + ": " + e.getMessage());
+        SceneFolder.Neighbour found = SceneFolder.neighbour(source.scenePath(), step);
+        if (found.path() == null) {
+            note(found.problem());
             return;
         }
-        int at = scenes.indexOf(current);
-        if (scenes.isEmpty() || at >= 0 && scenes.size() == 1) {
-            note("no other scene in " + folder);
-            return;
-        }
-        int next = at < 0 ? (step > 0 ? 0 : scenes.size() - 1) : Math.floorMod(at + step, scenes.size());
-        Path target = source.scenePath().resolveSibling(scenes.get(next).getFileName());
+        Path target = found.path();
         source.scenePath(target);
         pendingScene.set(null); // a change the watcher saw in the old file is no longer wanted
         try {
             setScene(source.loadScene(), true);
-            setError("");
-            note("opened " + target + " (" + (next + 1) + " of " + scenes.size() + ")");
+            note("opened " + target + " (" + found.number() + " of " + found.of() + ")");
         } catch (InputException e) {
             setError(e.getMessage());
             note("opened " + target + ": it does not load");
@@ -518,16 +518,14 @@ public final class Engine implements Runnable, SceneWatcher.Listener {
             return;
         }
         // the window's size, or at most the frame size budget (a huge window: the largest frame allowed)
-        ResolutionGovernor.Size size = budget.fit(viewWidth, viewHeight, 1);
-        try {
-            Path file = screenshots.save(WindowImages.scaled(lastImage, size.width(), size.height()));
-            note("saved " + file + (sizeLimit.isEmpty() ? ""
-                    : " at " + size.width() + "x" + size.height() + " (at most " + sizeLimit + ")"));
-        } catch (IOException | RuntimeException | OutOfMemoryError e) {
-            String why = "screenshot not saved: " + (e instanceof Exception x ? screenshots.why(x) : "out of memory");
-            err.println("glint: " + why);
-            note(why);
-        }
+        note(screenshots.saveView(lastImage, budget.fit(viewWidth, viewHeight, 1), sizeLimit, err));
+    }
+
+    /** The render key: the view as a still at the still's settings, in the background. */
+    private String startStill(boolean pfm) {
+        Camera printed = CameraBlock.asPrinted(controller.camera()); // the camera a pasted block gives
+        return stills.startOrCancel(StillRender.job(compiled().withCamera(printed), printed,
+                seen.still(scene, budget.fit(viewWidth, viewHeight, 1)), source.scenePath(), screenshots, pfm), out, err);
     }
 
     /** F5: the config and the scene again; the camera goes back to the scene's. */
@@ -543,14 +541,14 @@ public final class Engine implements Runnable, SceneWatcher.Listener {
         } catch (InputException e) {
             problem = problem.isEmpty() ? e.getMessage() : problem;
         }
-        setError(problem);
+        if (!problem.isEmpty()) { // else the scene's, which may be a render: block beyond the limits
+            setError(problem);
+        }
         note(problem.isEmpty() ? "reloaded " + source.scenePath() : "reload failed");
     }
 
     private void applyConfig(Config c) {
-        config = c;
-        shading = c.shading();
-        depth = c.recursionMax(); // at most max_recursion: the config loader refuses more
+        seen.configFile(c, scene);
         controller.setSpeeds(c.moveSpeed(), c.turnSpeed());
         controller.setFreeFlight(c.freeFlight());
         governor.setLimits(c.targetFps(), c.displayScale());
@@ -565,7 +563,6 @@ public final class Engine implements Runnable, SceneWatcher.Listener {
         Object pending = pendingScene.getAndSet(null);
         if (pending instanceof Scene loadedScene) {
             setScene(loadedScene, false);
-            setError("");
             note("reloaded " + source.scenePath());
         } else if (pending instanceof InputException problem) {
             setError(problem.getMessage());
@@ -581,6 +578,8 @@ public final class Engine implements Runnable, SceneWatcher.Listener {
             controller.reset(newScene.camera());
         }
         fileCamera = newScene.camera();
+        seen.scene(newScene);
+        setError(seen.blockError());
         scene = newScene;
         sceneNow = newScene;
         cameraNow = controller.camera();

@@ -26,19 +26,23 @@ final class FrameRenderer implements AutoCloseable {
         int WHOLE_FRAME = -1;
 
         /** The tracer itself. */
-        TraceCall TRACER = (tracer, scene, target, samples, pass, divider) -> {
+        TraceCall TRACER = (tracer, scene, target, samples, pass, count, divider) -> {
             if (pass == WHOLE_FRAME) {
                 tracer.render(scene, target, samples, 0, divider);
-            } else {
+            } else if (count == 1) {
                 tracer.renderPass(scene, target, samples, pass, divider);
+            } else {
+                tracer.renderPasses(scene, target, samples, pass, count, divider);
             }
         };
 
         /**
-         * Renders into {@code target}: sample {@code pass} of {@code samples} of every pixel, or all of
-         * them when {@code pass} is {@link #WHOLE_FRAME}; returns when every pixel is written.
+         * Renders into {@code target}: samples {@code pass} .. {@code pass + count - 1} of {@code samples} of
+         * every pixel (their average), or all of them when {@code pass} is {@link #WHOLE_FRAME}; returns when
+         * every pixel is written.
          */
-        void trace(Tracer tracer, RenderScene scene, FrameBuffer target, int samples, int pass, int divider);
+        void trace(Tracer tracer, RenderScene scene, FrameBuffer target, int samples, int pass, int count,
+                   int divider);
     }
 
     private final TraceCall call;
@@ -77,7 +81,7 @@ final class FrameRenderer implements AutoCloseable {
     /** A frame with one sample per pixel, through the pixel centres. */
     BufferedImage renderMoving(RenderScene scene, int width, int height) {
         FrameBuffer frame = buffer(width, height);
-        call.trace(tracer, scene, frame, 1, TraceCall.WHOLE_FRAME, divider);
+        call.trace(tracer, scene, frame, 1, TraceCall.WHOLE_FRAME, 1, divider);
         BufferedImage image = SrgbEncoder.newImage(width, height);
         int[] pixels = SrgbEncoder.pixels(image);
         ranges.run(width * height, (from, to) -> SrgbEncoder.encode(frame, pixels, from, to));
@@ -89,14 +93,19 @@ final class FrameRenderer implements AutoCloseable {
      * passes before it (pass 0 starts over; after a failed pass the engine starts over).
      */
     BufferedImage renderPass(RenderScene scene, int width, int height, int samples, int pass) {
+        return renderPasses(scene, width, height, samples, pass, 1);
+    }
+
+    /** Passes {@code pass} .. {@code pass + count - 1} traced in one go, averaged with those before them. */
+    BufferedImage renderPasses(RenderScene scene, int width, int height, int samples, int pass, int count) {
         if (pass == 0) {
             accumulator.reset(width, height);
         }
         FrameBuffer frame = buffer(width, height);
-        call.trace(tracer, scene, frame, samples, pass, divider);
+        call.trace(tracer, scene, frame, samples, pass, count, divider);
         BufferedImage image = SrgbEncoder.newImage(width, height);
         int[] pixels = SrgbEncoder.pixels(image);
-        accumulator.beginPass();
+        accumulator.beginPasses(count);
         ranges.run(width * height, (from, to) -> accumulator.addAndEncode(frame, pixels, from, to));
         return image;
     }

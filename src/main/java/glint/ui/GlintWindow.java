@@ -65,6 +65,7 @@ public final class GlintWindow {
         Scene scene;
         try {
             scene = source.loadScene();
+            source.flags().effective(config, scene.render()); // a block beyond the limits: no window
         } catch (InputException e) {
             watcher.close();
             throw e;
@@ -82,6 +83,7 @@ public final class GlintWindow {
         InputState input = new InputState(Clock.SYSTEM, display[0].getWidth(), display[0].getHeight());
         Engine engine = new Engine(config, scene, source, input, hooks.presenter().apply(display[0]), screenshots,
                 Clock.SYSTEM, err, hooks.trace());
+        engine.paceRefinement(RefinePacing.windowInterval(config.targetFps())); // quick passes: several at once
         GlintWindow window = new GlintWindow(frame[0], display[0], engine, input, watcher);
         onEventThread(() -> {
             InputListener.attach(input, display[0]);

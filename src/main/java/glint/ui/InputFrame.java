@@ -14,9 +14,14 @@ import java.util.List;
  * @param wheelNotches  wheel rotation since the last update (negative: away from the user)
  * @param commands      commands in the order they were given
  * @param view          the view (0 to 8) the last {@link Action#VIEW} command asked for, or -1
+ * @param orbitFromX    where an orbit drag started in the interval (pixels from the left), or NaN
+ * @param orbitFromY    where it started (pixels from the top), or NaN
+ * @param orbitX        orbit drag to the right since the last update, in pixels
+ * @param orbitY        orbit drag downwards since the last update, in pixels
  */
 public record InputFrame(double[] heldSeconds, boolean fast, boolean motionHeld, double dragX, double dragY,
-                         int wheelNotches, List<Action> commands, int view) {
+                         int wheelNotches, List<Action> commands, int view, double orbitFromX, double orbitFromY,
+                         double orbitX, double orbitY) {
 
     public InputFrame {
         heldSeconds = heldSeconds.clone();
@@ -25,7 +30,13 @@ public record InputFrame(double[] heldSeconds, boolean fast, boolean motionHeld,
 
     /** Nothing happened. */
     public static InputFrame none() {
-        return new InputFrame(new double[Action.values().length], false, false, 0, 0, 0, List.of(), -1);
+        return new InputFrame(new double[Action.values().length], false, false, 0, 0, 0, List.of(), -1,
+                Double.NaN, Double.NaN, 0, 0);
+    }
+
+    /** Whether an orbit drag started in the interval (its point is then picked). */
+    public boolean orbitStarted() {
+        return !Double.isNaN(orbitFromX);
     }
 
     /** Seconds {@code action} was held in the interval. */
@@ -43,6 +54,10 @@ public record InputFrame(double[] heldSeconds, boolean fast, boolean motionHeld,
         private int wheel;
         private final List<Action> commands = new ArrayList<>();
         private int view = -1;
+        private double orbitFromX = Double.NaN;
+        private double orbitFromY = Double.NaN;
+        private double orbitX;
+        private double orbitY;
 
         public Builder hold(Action action, double seconds) {
             held[action.ordinal()] += seconds;
@@ -68,6 +83,19 @@ public record InputFrame(double[] heldSeconds, boolean fast, boolean motionHeld,
             return this;
         }
 
+        /** An orbit drag that started at pixel (x, y). */
+        public Builder orbitFrom(double x, double y) {
+            orbitFromX = x;
+            orbitFromY = y;
+            return this;
+        }
+
+        public Builder orbit(double dx, double dy) {
+            orbitX += dx;
+            orbitY += dy;
+            return this;
+        }
+
         public Builder wheel(int notches) {
             wheel += notches;
             return this;
@@ -86,7 +114,8 @@ public record InputFrame(double[] heldSeconds, boolean fast, boolean motionHeld,
         }
 
         public InputFrame build() {
-            return new InputFrame(held, fast, motionHeld, dragX, dragY, wheel, commands, view);
+            return new InputFrame(held, fast, motionHeld, dragX, dragY, wheel, commands, view, orbitFromX, orbitFromY,
+                    orbitX, orbitY);
         }
     }
 }

@@ -24,6 +24,7 @@ final class InputListener {
     private final Set<Integer> commandKeysDown = new HashSet<>(); // event thread only
     private int lastX;
     private int lastY;
+    private boolean orbiting; // a drag that began with Ctrl or the middle button
 
     private InputListener(InputState input, Display display) {
         this.input = input;
@@ -67,6 +68,8 @@ final class InputListener {
                 } else if (commandKeysDown.add(e.getKeyCode())) { // not again while auto-repeating
                     if (action == Action.VIEW) {
                         input.view(KeyBindings.viewOf(e.getKeyCode()));
+                    } else if (action == Action.RENDER_STILL && e.isShiftDown()) {
+                        command(Action.RENDER_STILL_PFM);
                     } else {
                         command(action);
                     }
@@ -100,11 +103,25 @@ final class InputListener {
                 display.requestFocusInWindow();
                 lastX = e.getX();
                 lastY = e.getY();
+                orbiting = SwingUtilities.isMiddleMouseButton(e) || e.isControlDown();
+                if (orbiting) {
+                    input.orbitFrom(e.getX(), e.getY());
+                }
+            }
+
+            @Override
+            public void mouseReleased(MouseEvent e) {
+                if ((e.getModifiersEx() & (MouseEvent.BUTTON1_DOWN_MASK | MouseEvent.BUTTON2_DOWN_MASK
+                        | MouseEvent.BUTTON3_DOWN_MASK)) == 0) {
+                    orbiting = false;
+                }
             }
 
             @Override
             public void mouseDragged(MouseEvent e) {
-                if (SwingUtilities.isLeftMouseButton(e) || SwingUtilities.isRightMouseButton(e)) {
+                if (orbiting) {
+                    input.orbit(e.getX() - lastX, e.getY() - lastY);
+                } else if (SwingUtilities.isLeftMouseButton(e) || SwingUtilities.isRightMouseButton(e)) {
                     input.drag(e.getX() - lastX, e.getY() - lastY);
                 }
                 lastX = e.getX();

@@ -27,6 +27,10 @@ public final class InputState {
     private double dragY;
     private int wheel;
     private int view = -1;
+    private double orbitFromX = Double.NaN;
+    private double orbitFromY = Double.NaN;
+    private double orbitX;
+    private double orbitY;
     private int viewWidth;
     private int viewHeight;
     private boolean signalled;
@@ -113,6 +117,32 @@ public final class InputState {
         }
     }
 
+    /** An orbit drag starts at pixel (x, y) of the view: the engine picks the point there. */
+    public void orbitFrom(double x, double y) {
+        lock.lock();
+        try {
+            orbitFromX = x;
+            orbitFromY = y;
+            orbitX = 0; // a drag before the press belongs to the old pivot, which is gone
+            orbitY = 0;
+            signalLocked();
+        } finally {
+            lock.unlock();
+        }
+    }
+
+    /** The mouse was dragged by (dx, dy) pixels while orbiting, y downwards. */
+    public void orbit(double dx, double dy) {
+        lock.lock();
+        try {
+            orbitX += dx;
+            orbitY += dy;
+            signalLocked();
+        } finally {
+            lock.unlock();
+        }
+    }
+
     /** The mouse wheel turned by {@code notches} (negative: away from the user). */
     public void wheel(int notches) {
         lock.lock();
@@ -178,13 +208,17 @@ public final class InputState {
             }
             lastDrain = now;
             InputFrame frame = new InputFrame(heldSeconds, down[Action.FAST.ordinal()], motionHeld,
-                    dragX, dragY, wheel, commands, view);
+                    dragX, dragY, wheel, commands, view, orbitFromX, orbitFromY, orbitX, orbitY);
             Arrays.fill(heldSeconds, 0);
             commands.clear();
             dragX = 0;
             dragY = 0;
             wheel = 0;
             view = -1;
+            orbitFromX = Double.NaN;
+            orbitFromY = Double.NaN;
+            orbitX = 0;
+            orbitY = 0;
             return frame;
         } finally {
             lock.unlock();

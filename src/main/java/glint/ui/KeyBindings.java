@@ -32,17 +32,22 @@ public final class KeyBindings {
             key(Action.BACK, "S", "fly back", KeyEvent.VK_S),
             key(Action.LEFT, "A", "fly left", KeyEvent.VK_A),
             key(Action.RIGHT, "D", "fly right", KeyEvent.VK_D),
-            key(Action.UP, "R", "fly up", KeyEvent.VK_R),
-            key(Action.DOWN, "F", "fly down", KeyEvent.VK_F),
+            key(Action.UP, "R", "fly up (along the world's up; in free flight the camera's)", KeyEvent.VK_R),
+            key(Action.DOWN, "F", "fly down (likewise)", KeyEvent.VK_F),
             key(Action.YAW_LEFT, "Left arrow", "turn left (yaw)", KeyEvent.VK_LEFT, KeyEvent.VK_KP_LEFT),
             key(Action.YAW_RIGHT, "Right arrow", "turn right (yaw)", KeyEvent.VK_RIGHT, KeyEvent.VK_KP_RIGHT),
             key(Action.PITCH_UP, "Up arrow", "look up (pitch)", KeyEvent.VK_UP, KeyEvent.VK_KP_UP),
             key(Action.PITCH_DOWN, "Down arrow", "look down (pitch)", KeyEvent.VK_DOWN, KeyEvent.VK_KP_DOWN),
             key(Action.ROLL_LEFT, "Q", "roll left", KeyEvent.VK_Q),
             key(Action.ROLL_RIGHT, "E", "roll right", KeyEvent.VK_E),
+            key(Action.ZOOM_IN, "Z", "zoom in: narrow the field of view (to " + fmt(CameraController.MIN_FOV)
+                    + " degree at least)", KeyEvent.VK_Z),
+            key(Action.ZOOM_OUT, "X", "zoom out: widen the field of view (to " + fmt(CameraController.MAX_FOV)
+                    + " degrees at most)", KeyEvent.VK_X),
             key(Action.FAST, "Shift", "held: fly " + fmt(CameraController.FAST_FACTOR) + "x faster",
                     KeyEvent.VK_SHIFT),
             pointer(Action.LOOK, "Mouse drag", "look around (drag right: turn right, drag up: look up)"),
+            pointer(Action.ORBIT, "Ctrl + drag", "orbit round the point under the mouse (also: middle drag)"),
             pointer(Action.SPEED, "Mouse wheel", "flying speed: x" + fmt(CameraController.WHEEL_FACTOR)
                     + " a notch up, / " + fmt(CameraController.WHEEL_FACTOR) + " a notch down"),
             key(Action.TOGGLE_SHADING, "M or Tab", "switch shading: cook-torrance / phong",
@@ -58,14 +63,18 @@ public final class KeyBindings {
                     KeyEvent.VK_7, KeyEvent.VK_8, KeyEvent.VK_9, KeyEvent.VK_NUMPAD1, KeyEvent.VK_NUMPAD2,
                     KeyEvent.VK_NUMPAD3, KeyEvent.VK_NUMPAD4, KeyEvent.VK_NUMPAD5, KeyEvent.VK_NUMPAD6,
                     KeyEvent.VK_NUMPAD7, KeyEvent.VK_NUMPAD8, KeyEvent.VK_NUMPAD9),
-            key(Action.PRINT_CAMERA, "C", "print the camera as a scene's camera: block", KeyEvent.VK_C),
+            key(Action.PRINT_CAMERA, "C", "print the camera as a scene's camera: block and a views: item",
+                    KeyEvent.VK_C),
+            key(Action.RENDER_STILL, "Enter", "render the view as a still PNG; Enter again or Esc cancels",
+                    KeyEvent.VK_ENTER),
+            pointer(Action.RENDER_STILL_PFM, "Shift + Enter", "the same, with a linear PFM beside the PNG"),
             key(Action.NEXT_SCENE, "Page Down", "open the next scene of the scene's folder", KeyEvent.VK_PAGE_DOWN),
             key(Action.PREVIOUS_SCENE, "Page Up", "open the previous scene of the scene's folder",
                     KeyEvent.VK_PAGE_UP),
             key(Action.RELOAD, "F5", "reload the scene and the config", KeyEvent.VK_F5),
             key(Action.TOGGLE_OVERLAY, "H", "show / hide the overlay", KeyEvent.VK_H),
             typed(Action.TOGGLE_HELP, "?", "show / hide this help", "?"),
-            key(Action.QUIT, "Esc", "quit", KeyEvent.VK_ESCAPE));
+            key(Action.QUIT, "Esc", "quit (while a still renders: cancel it)", KeyEvent.VK_ESCAPE));
 
     private KeyBindings() {
     }

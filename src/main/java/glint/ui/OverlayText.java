@@ -20,8 +20,9 @@ final class OverlayText {
     static List<Line> lines(FrameStats s) {
         List<Line> lines = new ArrayList<>();
         if (Double.isNaN(s.fps())) {
-            lines.add(normal(String.format(Locale.ROOT, "%s   last frame %.1f ms",
-                    s.refined() ? "idle: image complete" : "idle", s.msPerFrame())));
+            // no rate yet (the first frames after a pause) is not idle: the refinement goes on
+            lines.add(normal(String.format(Locale.ROOT, "%s   last frame %.1f ms", s.refined() ? "idle: image complete"
+                    : s.renderError().isEmpty() ? "refining" : "waiting to try again", s.msPerFrame())));
         } else {
             lines.add(normal(String.format(Locale.ROOT, "%.1f fps   %.1f ms/frame", s.fps(), s.msPerFrame())));
         }

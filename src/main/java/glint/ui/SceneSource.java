@@ -1,6 +1,7 @@
 package glint.ui;
 
 import glint.config.Config;
+import glint.config.Flags;
 import glint.input.InputException;
 import glint.scene.Scene;
 import glint.scene.SceneLimits;
@@ -18,10 +19,22 @@ public final class SceneSource {
     private volatile Path scenePath;
     private final ConfigSource configSource;
     private volatile SceneLimits limits = SceneLimits.DEFAULT;
+    private final Flags flags;
 
     public SceneSource(Path scenePath, ConfigSource configSource) {
+        this(scenePath, configSource, Flags.NONE);
+    }
+
+    /** A source whose scenes are seen with the command line's {@code flags} above their render: blocks. */
+    public SceneSource(Path scenePath, ConfigSource configSource, Flags flags) {
         this.scenePath = scenePath;
         this.configSource = configSource;
+        this.flags = flags;
+    }
+
+    /** The command line's settings, which rank above a scene's render: block. */
+    public Flags flags() {
+        return flags;
     }
 
     public Path scenePath() {

@@ -1,7 +1,9 @@
 package glint.ui;
 
+import glint.image.ImageWriter;
 import java.awt.image.BufferedImage;
 import java.io.IOException;
+import java.io.PrintWriter;
 import java.io.OutputStream;
 import java.nio.file.AccessDeniedException;
 import java.nio.file.FileSystemException;
@@ -40,21 +42,59 @@ public final class Screenshots {
      * aside first and renamed when complete, so that the file never exists half written.
      */
     public Path save(BufferedImage image) throws IOException {
-        Path part = Files.createTempFile(folder, ".glint-", ".png.part");
-        try {
+        return save("glint", ".png", part -> {
             try (OutputStream out = Files.newOutputStream(part, StandardOpenOption.WRITE)) {
-                glint.image.ImageWriter.writePng(image, out);
+                ImageWriter.writePng(image, out);
             }
-            String stamp = "glint-" + STAMP.format(now.get());
-            Path file = folder.resolve(stamp + ".png");
-            for (int n = 1; Files.exists(file); n++) { // two in one millisecond
-                file = folder.resolve(stamp + "-" + n + ".png");
-            }
-            return Files.move(part, file, StandardCopyOption.ATOMIC_MOVE);
+        });
+    }
+
+    /**
+     * Saves the view's image at {@code size} (scaled as shown) and returns what the overlay says: where it
+     * went, or why not (also on {@code err}). {@code sizeLimit} says why the size is below the window's.
+     */
+    String saveView(BufferedImage view, ResolutionGovernor.Size size, String sizeLimit, PrintWriter err) {
+        try {
+            Path file = save(WindowImages.scaled(view, size.width(), size.height()));
+            return "saved " + file + (sizeLimit.isEmpty() ? ""
+                    : " at " + size.width() + "x" + size.height() + " (at most " + sizeLimit + ")");
+        } catch (IOException | RuntimeException | OutOfMemoryError e) {
+            String why = "screenshot not saved: " + (e instanceof Exception x ? why(x) : "out of memory");
+            err.println("glint: " + why);
+            return why;
+        }
+    }
+
+    /** Writes a file's content to a temporary file. */
+    @FunctionalInterface
+    interface Content {
+        void writeTo(Path part) throws IOException;
+    }
+
+    /**
+     * Writes a new file {@code prefix-yyyyMMdd-HHmmss-SSS.ext} ({@code -1}, {@code -2} when taken) and returns
+     * its path: written aside, with the folder's usual permissions as every output, and renamed when complete.
+     */
+    Path save(String prefix, String extension, Content content) throws IOException {
+        // not Files.createTempFile: its file is private (0600), and the image would keep that mode
+        Path part = ImageWriter.temporaryBeside(folder.resolve(prefix + extension));
+        try {
+            content.writeTo(part);
+            return Files.move(part, name(prefix, extension), StandardCopyOption.ATOMIC_MOVE);
         } catch (IOException | RuntimeException e) {
             deleteQuietly(part, e);
             throw e;
         }
+    }
+
+    /** A name no file has yet: {@code prefix-yyyyMMdd-HHmmss-SSS.ext}, or with {@code -1}, {@code -2}. */
+    Path name(String prefix, String extension) {
+        String stamp = prefix + "-" + STAMP.format(now.get());
+        Path file = folder.resolve(stamp + extension);
+        for (int n = 1; Files.exists(file); n++) { // two in one millisecond
+            file = folder.resolve(stamp + "-" + n + extension);
+        }
+        return file;
     }
 
     /** Why a save failed, in words: {@code <folder>: permission denied}, ... */

@@ -69,7 +69,7 @@ class SceneLoaderErrorTest {
     @Test
     void unknownTopLevelKeyFarFromAnyListsTheKnownOnes() {
         assertError("scenes/x.yaml:1:1: unknown key 'spheres' in the scene (expected one of: "
-                + "camera, background, ambient, lights, materials, objects, views)", """
+                + "camera, background, ambient, lights, materials, objects, views, render)", """
                 spheres: []
                 """);
     }

@@ -78,11 +78,15 @@ class CameraControllerTest {
     }
 
     @Test
-    void afterRollingLeftUpIsWorldLeft() {
+    void afterRollingLeftUpIsWorldLeftInFreeFlightAndStillWorldUpInALevelCamera() {
+        CameraController plane = free();
+        turn(plane, Action.ROLL_LEFT, 90);
+        assertVector(new Vector3d(0, 0, 1), plane.camera().orientation().forward(), 1e-12); // roll keeps the view
+        plane.apply(hold(Action.UP, 1));
+        assertVector(new Vector3d(-SPEED, 0, 0), plane.camera().position(), 1e-12);
         turn(Action.ROLL_LEFT, 90);
-        assertVector(new Vector3d(0, 0, 1), camera.camera().orientation().forward(), 1e-12); // roll keeps the view
         camera.apply(hold(Action.UP, 1));
-        assertVector(new Vector3d(-SPEED, 0, 0), camera.camera().position(), 1e-12);
+        assertVector(new Vector3d(0, SPEED, 0), camera.camera().position(), 1e-12);
     }
 
     @ParameterizedTest(name = "{0} turns forward to ({1}, {2}, {3})")

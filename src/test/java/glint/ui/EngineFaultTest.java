@@ -60,15 +60,15 @@ class EngineFaultTest {
 
         @Override
         public void trace(glint.render.Tracer tracer, glint.render.RenderScene scene, glint.render.FrameBuffer target,
-                          int samples, int pass, int divider) {
+                          int samples, int pass, int count, int divider) {
             calls.incrementAndGet();
             if (faults.getAndUpdate(n -> Math.max(0, n - 1)) > 0) {
                 if (error != null) {
                     throw error;
                 }
-                TRACER.trace(tracer, null, target, samples, pass, divider); // every worker throws in its tile
+                TRACER.trace(tracer, null, target, samples, pass, count, divider); // every worker throws in its tile
             }
-            TRACER.trace(tracer, scene, target, samples, pass, divider);
+            TRACER.trace(tracer, scene, target, samples, pass, count, divider);
         }
     }
 

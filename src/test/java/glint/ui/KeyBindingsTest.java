@@ -40,7 +40,8 @@ class KeyBindingsTest {
             if (b.action().kind() == Action.Kind.POINTER) {
                 assertTrue(b.keyCodes().isEmpty() && b.chars().isEmpty());
             } else {
-                assertTrue(!b.keyCodes().isEmpty() || !b.chars().isEmpty(), "no key for " + b.action());
+                assertTrue(!b.keyCodes().isEmpty() || !b.chars().isEmpty() || b.keys().startsWith("Shift + "),
+                        "no key for " + b.action()); // a Shift combination is told apart by the listener
             }
         }
     }
@@ -67,7 +68,7 @@ class KeyBindingsTest {
         assertEquals(Action.DEPTH_UP, KeyBindings.forChar('+'));
         assertEquals(Action.DEPTH_DOWN, KeyBindings.forChar('-'));
         assertEquals(Action.TOGGLE_HELP, KeyBindings.forChar('?'));
-        assertNull(KeyBindings.forKeyCode(KeyEvent.VK_Z));
+        assertNull(KeyBindings.forKeyCode(KeyEvent.VK_J));
         assertNull(KeyBindings.forChar('w'));
     }
 

@@ -52,6 +52,16 @@ class OverlayTextTest {
     }
 
     @Test
+    void theFirstFramesOfARefinementReadRefiningNotIdle() {
+        FrameStats first = new FrameStats(Double.NaN, 18.5, 800, 600, 800, 600, 1, 64, false, 2, Shading.PHONG, 3,
+                2, "s.yaml", "", "", "", "");
+        assertEquals("refining   last frame 18.5 ms", OverlayText.lines(first).get(0).text());
+        FrameStats failed = new FrameStats(Double.NaN, 18.5, 800, 600, 800, 600, 1, 64, false, 2, Shading.PHONG, 3,
+                2, "s.yaml", "", "", "", "render failed: out of memory; trying again");
+        assertEquals("waiting to try again   last frame 18.5 ms", OverlayText.lines(failed).get(0).text());
+    }
+
+    @Test
     void aClampedRenderSizeAndARenderFailureAreShown() {
         FrameStats s = new FrameStats(Double.NaN, 3, 115, 86, 400, 300, 1, 1, false, 2, Shading.PHONG, 3,
                 2, "s.yaml", "", "", "10,000 pixels (max_image_pixels)",

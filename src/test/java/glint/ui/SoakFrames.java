@@ -52,7 +52,7 @@ final class SoakFrames {
         }
 
         @Override
-        public void trace(Tracer tracer, RenderScene scene, FrameBuffer target, int samples, int pass, int divider) {
+        public void trace(Tracer tracer, RenderScene scene, FrameBuffer target, int samples, int pass, int count, int divider) {
             try {
                 ready.await();
             } catch (InterruptedException e) {
@@ -64,7 +64,7 @@ final class SoakFrames {
             Scene s = engine.scene();
             RenderScene stamped = RenderScene.compile(new Scene(engine.camera(), new Vector3d(0, 0, sky), s.ambient(),
                     s.lights(), s.objects()), scene.settings());
-            TRACER.trace(tracer, stamped, target, samples, pass, divider);
+            TRACER.trace(tracer, stamped, target, samples, pass, count, divider);
             if (pass == WHOLE_FRAME) {
                 expectedSky = Srgb.to8Bit(sky);
                 movingFrames++;

@@ -1,0 +1,112 @@
+package glint.config;
+
+import glint.input.InputException;
+import glint.input.Suggestions;
+import glint.scene.RenderBlock;
+import java.util.List;
+
+/**
+ * The command line's settings (--width, --height, --spp, --threads, --depth, --shading); each is null
+ * when not given. They rank first: a flag beats the scene's {@code render:} block, which beats
+ * config.properties, which beats the defaults ({@link #effective}).
+ */
+public record Flags(Integer width, Integer height, Integer samples, Integer threads, Integer depth, String shading) {
+
+    /** No flag given. */
+    public static final Flags NONE = new Flags(null, null, null, null, null, null);
+
+    /** Whether a flag sets the image size. */
+    public boolean setsSize() {
+        return width != null || height != null;
+    }
+
+    /**
+     * The settings a scene is rendered with: the config, under the scene's {@code render:} block, under
+     * these flags.
+     *
+     * @throws InputException a flag or a key of the block is out of the config's limits
+     */
+    public Config effective(Config config, RenderBlock render) throws InputException {
+        return apply(withBlock(config, render));
+    }
+
+    /** The config with the block's keys put in (checked against the config's limits). */
+    static Config withBlock(Config c, RenderBlock r) throws InputException {
+        if (r.shading() != null) {
+            c = c.withShading(Shading.byKey(r.shading()));
+        }
+        if (r.samples() != null) {
+            c = c.withSamples(r.samples());
+        }
+        if (r.recursionMax() != null) {
+            int max = c.limits().maxRecursion();
+            if (r.recursionMax() > max) {
+                throw blockError(r, "recursion_max", "recursion_max in render must be at most " + max
+                        + " (config key max_recursion), got " + r.recursionMax());
+            }
+            c = c.withRecursionMax(r.recursionMax());
+        }
+        if (r.minWeight() != null) {
+            c = c.withMinWeight(r.minWeight());
+        }
+        if (r.width() != null) {
+            String tooLarge = c.limits().imageSizeProblem(r.width(), r.height());
+            if (tooLarge != null) {
+                throw blockError(r, "width", "width x height in render: " + tooLarge);
+            }
+            c = c.withSize(r.width(), r.height());
+        }
+        return c;
+    }
+
+    private static InputException blockError(RenderBlock r, String key, String problem) {
+        RenderBlock.Place at = r.place(key);
+        return new InputException(r.file(), at.line(), at.column(), problem);
+    }
+
+    /** The config with these flags put in; a value out of range is an error naming the flag. */
+    public Config apply(Config c) throws InputException {
+        if (width != null || height != null) {
+            int w = width != null ? width : c.displayWidth();
+            int h = height != null ? height : c.displayHeight();
+            checkRange("--width", w, 1, 65536);
+            checkRange("--height", h, 1, 65536);
+            String sizeProblem = c.limits().imageSizeProblem(w, h);
+            if (sizeProblem != null) {
+                throw new InputException("glint", 0, 0, "--width x --height: " + sizeProblem);
+            }
+            c = c.withSize(w, h);
+        }
+        if (samples != null) {
+            if (!Config.isPerfectSquare(samples) || samples > 4096) {
+                throw new InputException("glint", 0, 0,
+                        "--spp: expected a perfect square from 1 to 4096 (1, 4, 9, 16, ...), got " + samples);
+            }
+            c = c.withSamples(samples);
+        }
+        if (threads != null) {
+            checkRange("--threads", threads, 0, 1024);
+            c = c.withThreads(threads);
+        }
+        if (depth != null) {
+            checkRange("--depth", depth, 1, c.limits().maxRecursion());
+            c = c.withRecursionMax(depth);
+        }
+        if (shading != null) {
+            Shading model = Shading.byKey(shading);
+            if (model == null) {
+                throw new InputException("glint", 0, 0, "--shading: unknown model " + InputException.quote(shading)
+                        + Suggestions.hint(shading, List.of("cook-torrance", "phong")));
+            }
+            c = c.withShading(model);
+        }
+        return c;
+    }
+
+    private static void checkRange(String option, int value, int min, int max) throws InputException {
+        if (value < min || value > max) {
+            throw new InputException("glint", 0, 0,
+                    option + ": expected a whole number from " + min + " to " + max + ", got " + value);
+        }
+    }
+}

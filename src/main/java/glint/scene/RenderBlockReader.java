@@ -1,0 +1,86 @@
+package glint.scene;
+
+import glint.input.InputException;
+import glint.input.Suggestions;
+import java.util.HashMap;
+import java.util.LinkedHashSet;
+import java.util.List;
+import java.util.Map;
+import java.util.Set;
+import org.snakeyaml.engine.v2.nodes.Node;
+
+/** Reads a scene's {@code render:} block ({@link RenderBlock}), with the positioned errors of the scene. */
+final class RenderBlockReader {
+
+    static final Set<String> KEYS = new LinkedHashSet<>(
+            List.of("shading", "samples", "recursion_max", "min_weight", "width", "height"));
+    static final List<String> SHADINGS = List.of("cook-torrance", "phong");
+    /** The largest samples per pixel and image side, as in config.properties. */
+    static final int MAX_SAMPLES = 4096, MAX_SIDE = 65536, MAX_RECURSION = 64;
+
+    private final YamlTree yaml;
+    private final String file;
+
+    RenderBlockReader(YamlTree yaml, String file) {
+        this.yaml = yaml;
+        this.file = file;
+    }
+
+    /** The block; "render:" with nothing after it sets nothing. */
+    RenderBlock read(Node node) throws InputException {
+        if (YamlTree.isNull(node)) {
+            return RenderBlock.NONE;
+        }
+        Map<String, Node> m = yaml.mapping(node, "render", KEYS);
+        Map<String, RenderBlock.Place> places = new HashMap<>();
+        for (Map.Entry<String, Node> e : m.entrySet()) {
+            e.getValue().getStartMark().ifPresent(mark ->
+                    places.put(e.getKey(), new RenderBlock.Place(mark.getLine() + 1, mark.getColumn() + 1)));
+        }
+        String shading = null;
+        if (m.containsKey("shading")) {
+            shading = yaml.string(m.get("shading"), "shading");
+            if (!SHADINGS.contains(shading)) {
+                throw yaml.error(m.get("shading"), "unknown shading model " + InputException.quote(shading)
+                        + Suggestions.hint(shading, SHADINGS));
+            }
+        }
+        Integer samples = whole(m, "samples", 1, MAX_SAMPLES);
+        if (samples != null && !isPerfectSquare(samples)) {
+            throw yaml.error(m.get("samples"), "samples must be a perfect square (1, 4, 9, 16, ...), got " + samples);
+        }
+        Integer depth = whole(m, "recursion_max", 1, MAX_RECURSION);
+        Double minWeight = null;
+        if (m.containsKey("min_weight")) {
+            double w = yaml.number(m.get("min_weight"), "min_weight");
+            if (w < 0 || w > 1) {
+                throw yaml.error(m.get("min_weight"), "min_weight must lie in [0, 1], got "
+                        + YamlTree.source(m.get("min_weight"), w));
+            }
+            minWeight = w;
+        }
+        Integer width = whole(m, "width", 1, MAX_SIDE);
+        Integer height = whole(m, "height", 1, MAX_SIDE);
+        if ((width == null) != (height == null)) {
+            throw yaml.error(node, "the still size needs both width and height in render");
+        }
+        return new RenderBlock(shading, samples, depth, minWeight, width, height, file, places);
+    }
+
+    private Integer whole(Map<String, Node> m, String key, int min, int max) throws InputException {
+        if (!m.containsKey(key)) {
+            return null;
+        }
+        double value = yaml.number(m.get(key), key);
+        if (value != Math.rint(value) || value < min || value > max) {
+            throw yaml.error(m.get(key), key + " must be a whole number from " + min + " to " + max + ", got "
+                    + YamlTree.source(m.get(key), value));
+        }
+        return (int) value;
+    }
+
+    private static boolean isPerfectSquare(int n) {
+        int root = (int) Math.round(Math.sqrt(n));
+        return root * root == n;
+    }
+}

@@ -1,0 +1,88 @@
+package glint.ui;
+
+import glint.config.Config;
+import glint.config.Flags;
+import glint.config.Shading;
+import glint.input.InputException;
+import glint.render.RenderSettings;
+import glint.scene.Scene;
+
+/**
+ * What the window sees a scene with: config.properties under the scene's {@code render:} block, under the
+ * command line's flags ({@link Flags#effective}); and on top, the shading and depth the user picked with M,
+ * + and -, which hold until the scene's or the config's value for them changes. Engine thread only.
+ */
+final class ViewSettings {
+
+    private final Flags flags;
+    private Config base; // config.properties with the command line's flags
+    /** The scene's settings: base under its render: block, under the flags. */
+    Config config;
+    /** The shading and depth on screen: the scene's, or the user's. */
+    Shading shading;
+    int depth;
+    private String blockError = "";
+
+    ViewSettings(Config base, Flags flags) {
+        this.flags = flags;
+        this.base = base;
+        this.config = base;
+        this.shading = base.shading();
+        this.depth = base.recursionMax();
+    }
+
+    /** A scene (a new one, or a new version of it) is on screen from now on. */
+    void scene(Scene scene) {
+        Config seen = seenWith(scene);
+        if (seen.shading() != config.shading()) {
+            shading = seen.shading();
+        }
+        if (seen.recursionMax() != config.recursionMax()) {
+            depth = seen.recursionMax();
+        }
+        config = seen;
+    }
+
+    /** F5 read the config again: its settings, and the scene's block over them, replace the user's. */
+    void configFile(Config newBase, Scene scene) {
+        base = newBase;
+        config = seenWith(scene);
+        shading = config.shading();
+        depth = config.recursionMax(); // at most max_recursion: the config loader and the block refuse more
+    }
+
+    /** Why the scene's render: block was left out (beyond the config's limits), or empty. */
+    String blockError() {
+        return blockError;
+    }
+
+    /** What the tracer renders with now. */
+    RenderSettings render() {
+        return RenderSettings.of(still());
+    }
+
+    /** The scene's settings with the shading and depth on screen. */
+    Config still() {
+        return config.withShading(shading).withRecursionMax(depth);
+    }
+
+    /**
+     * The settings of a still of the view (the render key): {@link #still()} at the size of --width and
+     * --height, else of the scene's render: block, else of the {@code window}.
+     */
+    Config still(Scene scene, ResolutionGovernor.Size window) {
+        boolean sized = flags.setsSize() || scene.render().width() != null;
+        return still().withSize(sized ? config.displayWidth() : window.width(),
+                sized ? config.displayHeight() : window.height());
+    }
+
+    private Config seenWith(Scene scene) {
+        try {
+            blockError = "";
+            return flags.effective(base, scene.render());
+        } catch (InputException e) {
+            blockError = e.getMessage();
+            return base;
+        }
+    }
+}
