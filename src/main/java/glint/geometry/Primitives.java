@@ -10,15 +10,15 @@ import java.util.stream.IntStream;
  */
 public final class Primitives {
 
-    private final Shape[] kinds;
+    private final PrimitiveKind[] kinds;
     /** The number of kind k's first primitive; firstOfKind[kinds.length] = count. */
     private final int[] firstOfKind;
     private final int[] kindOf;
     private final int[] indexOf;
     private final int count;
 
-    public Primitives(List<Shape> kinds) {
-        this.kinds = kinds.toArray(new Shape[0]);
+    public Primitives(List<PrimitiveKind> kinds) {
+        this.kinds = kinds.toArray(new PrimitiveKind[0]);
         this.firstOfKind = new int[this.kinds.length + 1];
         int total = 0;
         for (int k = 0; k < this.kinds.length; k++) {
@@ -46,12 +46,12 @@ public final class Primitives {
         return kinds.length;
     }
 
-    public Shape kind(int k) {
+    public PrimitiveKind kind(int k) {
         return kinds[k];
     }
 
     /** The kinds, in numbering order. */
-    public List<Shape> kinds() {
+    public List<PrimitiveKind> kinds() {
         return List.of(kinds);
     }
 
@@ -72,8 +72,8 @@ public final class Primitives {
      * The kind of each primitive of a list of numbers: a structure that keeps it beside the list
      * calls the kind straight away, rather than looking it up per test.
      */
-    public Shape[] kindsOf(int[] numbers) {
-        Shape[] out = new Shape[numbers.length];
+    public PrimitiveKind[] kindsOf(int[] numbers) {
+        PrimitiveKind[] out = new PrimitiveKind[numbers.length];
         for (int i = 0; i < numbers.length; i++) {
             out[i] = kinds[kindOf[numbers[i]]];
         }
@@ -102,20 +102,20 @@ public final class Primitives {
         kinds[kindOf[primitive]].bounds(indexOf[primitive], box, at);
     }
 
-    /** {@link Shape#intersect} of a primitive given by its number. */
+    /** {@link PrimitiveKind#intersect} of a primitive given by its number. */
     public double intersect(int primitive, double ox, double oy, double oz, double dx, double dy, double dz,
                             double tMax) {
         return kinds[kindOf[primitive]].intersect(indexOf[primitive], ox, oy, oz, dx, dy, dz, tMax);
     }
 
-    /** {@link Shape#nearestFromOrigin} of a primitive given by its number. */
+    /** {@link PrimitiveKind#nearestFromOrigin} of a primitive given by its number. */
     public void nearestFromOrigin(int primitive, double ox, double oy, double oz, double[] dx, double[] dy,
                                   double[] dz, int first, int end, double[] nearestT, int[] nearestPrimitive) {
         kinds[kindOf[primitive]].nearestFromOrigin(indexOf[primitive], primitive, ox, oy, oz, dx, dy, dz, first, end,
                 nearestT, nearestPrimitive);
     }
 
-    /** Whether a ray leaving the primitive into its inside can meet it again ({@link Shape#closed}). */
+    /** Whether a ray leaving the primitive into its inside can meet it again ({@link PrimitiveKind#closed}). */
     public boolean closed(int primitive) {
         return kinds[kindOf[primitive]].closed();
     }

@@ -1,7 +1,7 @@
 package glint.render;
 
-import glint.geometry.Candidates;
-import glint.geometry.Frustum;
+import glint.accel.Candidates;
+import glint.accel.Frustum;
 import glint.geometry.Primitives;
 
 /**

@@ -2,7 +2,7 @@ package glint.render;
 
 import glint.geometry.Hit;
 import glint.geometry.Primitives;
-import glint.geometry.Shape;
+import glint.geometry.PrimitiveKind;
 import glint.shading.Optics;
 import glint.shading.Rgb;
 import glint.shading.Surface;
@@ -10,7 +10,7 @@ import glint.shading.Surface;
 /**
  * How a ray refracted into a closed primitive that nothing else reaches into is traced: it can only
  * bounce inside it, and at each bounce a ray leaves through the surface while the rest reflects on.
- * The kind gives each chord in closed form ({@link Shape#chordInside}), so no bounce searches the
+ * The kind gives each chord in closed form ({@link PrimitiveKind#chordInside}), so no bounce searches the
  * scene; where the cosine at a bounce is the one before (every bounce of a sphere), the boundary's
  * factors and the bend of the ray leaving are not worked out again. The radiance is what
  * {@link Integrator#trace} would find, to rounding, and the roulette's numbers are drawn in the same
@@ -78,7 +78,7 @@ final class InsideWalk {
     private int walkIn(Surface entry, double ux, double uy, double uz, int hitsLeft, double weight) {
         int primitive = entry.insideFar;
         Primitives primitives = it.primitives();
-        Shape kind = primitives.kind(primitives.kindOf(primitive));
+        PrimitiveKind kind = primitives.kind(primitives.kindOf(primitive));
         int index = primitives.indexOf(primitive), material = it.materialOf(primitive);
         ShadingModel model = it.model();
         double px = entry.px, py = entry.py, pz = entry.pz; // where the chord starts, on the surface

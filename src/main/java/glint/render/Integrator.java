@@ -1,13 +1,13 @@
 package glint.render;
 
 import glint.config.Shading;
-import glint.geometry.Aggregate;
-import glint.geometry.Candidates;
-import glint.geometry.Frustum;
+import glint.accel.Aggregate;
+import glint.accel.Candidates;
+import glint.accel.Frustum;
 import glint.geometry.Hit;
 import glint.geometry.Intersect;
 import glint.geometry.Primitives;
-import glint.geometry.TraversalStack;
+import glint.accel.TraversalStack;
 import glint.shading.LightSample;
 import glint.shading.Lights;
 import glint.shading.Materials;

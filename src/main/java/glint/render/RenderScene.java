@@ -1,12 +1,12 @@
 package glint.render;
 
 import glint.config.Shading;
-import glint.geometry.Aggregate;
-import glint.geometry.AggregatePolicy;
-import glint.geometry.Planes;
+import glint.accel.Aggregate;
+import glint.accel.AggregatePolicy;
+import glint.geometry.PlaneKind;
 import glint.geometry.Primitives;
-import glint.geometry.Shape;
-import glint.geometry.Spheres;
+import glint.geometry.PrimitiveKind;
+import glint.geometry.SphereKind;
 import glint.scene.Camera;
 import glint.scene.Material;
 import glint.scene.MaterialType;
@@ -67,7 +67,7 @@ public final class RenderScene {
             Plane p = (Plane) planes.get(i).shape();
             put4(planeData, i, p.normal().x(), p.normal().y(), p.normal().z(), p.normal().dot(p.point()));
         }
-        List<Shape> kinds = List.of(new Spheres(sphereData), new Planes(planeData));
+        List<PrimitiveKind> kinds = List.of(new SphereKind(sphereData), new PlaneKind(planeData));
         primitives = new Primitives(kinds);
         aggregate = aggregateOf.apply(primitives);
         List<SceneObject> inOrder = new ArrayList<>(spheres);

@@ -1,8 +1,8 @@
 package glint.render;
 
-import glint.geometry.AggregatePolicy;
-import glint.geometry.Candidates;
-import glint.geometry.Frustum;
+import glint.accel.AggregatePolicy;
+import glint.accel.Candidates;
+import glint.accel.Frustum;
 import glint.shading.Rgb;
 
 /**

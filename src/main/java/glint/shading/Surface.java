@@ -61,7 +61,7 @@ public final class Surface {
     /**
      * Fills this surface for a ray inside closed primitive {@code primitive} meeting its far side
      * at {@code end} (point on the surface, outward normal) at cosine {@code cosIncident}, known in
-     * closed form ({@link glint.geometry.Shape#chordInside}).
+     * closed form ({@link glint.geometry.PrimitiveKind#chordInside}).
      */
     public void setInside(Hit end, double cosIncident, double epsilon, int material, int primitive) {
         px = end.px;

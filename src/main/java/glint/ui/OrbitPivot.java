@@ -1,6 +1,6 @@
 package glint.ui;
 
-import glint.geometry.Aggregate;
+import glint.accel.Aggregate;
 import glint.geometry.Hit;
 import glint.math.Vector3d;
 import glint.render.RenderScene;

@@ -15,7 +15,7 @@ class ChordInsideTest {
         for (int trial = 0; trial < 10_000; trial++) {
             double radius = Math.exp(random.nextDouble(-4, 4));
             double[] centre = {random.nextDouble(-50, 50), random.nextDouble(-50, 50), random.nextDouble(-50, 50)};
-            Spheres sphere = new Spheres(new double[] {centre[0], centre[1], centre[2], radius});
+            SphereKind sphere = new SphereKind(new double[] {centre[0], centre[1], centre[2], radius});
             double[] n = unit(random.nextDouble(-1, 1), random.nextDouble(-1, 1), random.nextDouble(-1, 1));
             double[] u = unit(random.nextDouble(-1, 1), random.nextDouble(-1, 1), random.nextDouble(-1, 1));
             double un = u[0] * n[0] + u[1] * n[1] + u[2] * n[2];
@@ -43,7 +43,7 @@ class ChordInsideTest {
 
     @Test
     void aSphereNoLargerThanTheOffsetHasNoClosedForm() {
-        Spheres sphere = new Spheres(new double[] {0, 0, 0, 1e-3});
+        SphereKind sphere = new SphereKind(new double[] {0, 0, 0, 1e-3});
         Hit end = new Hit();
         assertTrue(Double.isNaN(sphere.chordInside(0, 0, 1e-3, 0, 0, -1, 0, 1, 1e-3, end)));
         assertEquals(1, sphere.chordInside(0, 0, 1e-3, 0, 0, -1, 0, 1, 0.9e-3, end), 0);
@@ -52,7 +52,7 @@ class ChordInsideTest {
 
     @Test
     void aKindWithoutAClosedFormSaysSo() {
-        Planes planes = new Planes(new double[] {0, 1, 0, 0});
+        PlaneKind planes = new PlaneKind(new double[] {0, 1, 0, 0});
         assertTrue(Double.isNaN(planes.chordInside(0, 0, 0, 0, 0, -1, 0, 1, 0, new Hit())));
     }
 

@@ -5,10 +5,10 @@ import static org.junit.jupiter.api.Assertions.assertEquals;
 import static org.junit.jupiter.api.Assertions.assertTrue;
 
 import glint.config.Shading;
-import glint.geometry.AggregatePolicy;
-import glint.geometry.Bvh;
-import glint.geometry.FlatList;
-import glint.geometry.LightCells;
+import glint.accel.AggregatePolicy;
+import glint.accel.Bvh;
+import glint.accel.FlatList;
+import glint.accel.LightCells;
 import glint.geometry.Primitives;
 import glint.scene.Scene;
 import java.util.Random;
@@ -128,12 +128,12 @@ class AggregateRenderTest {
         assertTrue(error <= 1e-8 * energy, what + ": relative mean square error " + error / energy);
     }
 
-    private static float[] render(Scene scene, Shading shading, Function<Primitives, glint.geometry.Aggregate> of) {
+    private static float[] render(Scene scene, Shading shading, Function<Primitives, glint.accel.Aggregate> of) {
         return render(scene, shading, of, Renders.EPSILON);
     }
 
     /** Rendered through the aggregate {@code of} builds, or with null through what the policy chooses. */
-    private static float[] render(Scene scene, Shading shading, Function<Primitives, glint.geometry.Aggregate> of,
+    private static float[] render(Scene scene, Shading shading, Function<Primitives, glint.accel.Aggregate> of,
                                   double epsilon) {
         RenderSettings settings = new RenderSettings(shading, 6, 0, epsilon);
         RenderScene compiled = of == null ? RenderScene.compile(scene, settings)

@@ -4,7 +4,7 @@ import static org.junit.jupiter.api.Assertions.assertEquals;
 import static org.junit.jupiter.api.Assertions.assertTrue;
 
 import glint.config.Shading;
-import glint.geometry.FlatList;
+import glint.accel.FlatList;
 import glint.scene.Scene;
 import java.util.Locale;
 import java.util.Random;

@@ -3,7 +3,7 @@ package glint.render;
 import static org.junit.jupiter.api.Assertions.assertArrayEquals;
 
 import glint.config.Shading;
-import glint.geometry.FlatList;
+import glint.accel.FlatList;
 import glint.scene.Scene;
 import org.junit.jupiter.api.Test;
 

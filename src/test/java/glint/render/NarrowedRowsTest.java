@@ -5,12 +5,12 @@ import static org.junit.jupiter.api.Assertions.assertEquals;
 import static org.junit.jupiter.api.Assertions.assertTrue;
 
 import glint.config.Shading;
-import glint.geometry.Candidates;
-import glint.geometry.FlatList;
-import glint.geometry.Frustum;
+import glint.accel.Candidates;
+import glint.accel.FlatList;
+import glint.accel.Frustum;
 import glint.geometry.Hit;
 import glint.geometry.Intersect;
-import glint.geometry.TraversalStack;
+import glint.accel.TraversalStack;
 import java.util.Random;
 import org.junit.jupiter.api.Test;
 

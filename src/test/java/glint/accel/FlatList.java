@@ -1,5 +1,8 @@
-package glint.geometry;
+package glint.accel;
 
+import glint.geometry.Primitives;
+import glint.geometry.PrimitiveKind;
+import glint.geometry.Hit;
 /** Every ray tests every primitive: the brute force the renderer's aggregates are checked against. */
 public final class FlatList implements Aggregate {
 
@@ -16,7 +19,7 @@ public final class FlatList implements Aggregate {
         double nearest = tMax;
         int found = Hit.NONE;
         for (int k = 0, kinds = p.kindCount(); k < kinds; k++) {
-            Shape shape = p.kind(k);
+            PrimitiveKind shape = p.kind(k);
             for (int i = 0, n = shape.count(), first = p.number(k, 0); i < n; i++) {
                 if (first + i == skip) {
                     continue;
@@ -41,7 +44,7 @@ public final class FlatList implements Aggregate {
         Primitives p = primitives;
         double passed = 1;
         for (int k = 0, kinds = p.kindCount(); k < kinds; k++) {
-            Shape shape = p.kind(k);
+            PrimitiveKind shape = p.kind(k);
             for (int i = 0, n = shape.count(), first = p.number(k, 0); i < n; i++) {
                 if (first + i != skip && shape.intersect(i, ox, oy, oz, dx, dy, dz, tMax) < tMax) {
                     passed *= pass[first + i];

@@ -1,5 +1,7 @@
-package glint.geometry;
+package glint.accel;
 
+import glint.geometry.PrimitiveKind;
+import glint.geometry.Hit;
 import java.util.Arrays;
 
 /**
@@ -18,9 +20,9 @@ abstract class CellFilter extends AggregateFilter {
     final int[] cell;
     /** The cells' lists of primitive numbers, and per slot the primitive's kind and index within it. */
     private final int[] listed, listedIndex;
-    private final Shape[] listedKind;
+    private final PrimitiveKind[] listedKind;
     private final int[] unbounded, unboundedIndex;
-    private final Shape[] unboundedKind;
+    private final PrimitiveKind[] unboundedKind;
 
     CellFilter(Aggregate searched, CellMaps maps) {
         super(searched);

@@ -1,5 +1,8 @@
-package glint.geometry;
+package glint.accel;
 
+import glint.geometry.Primitives;
+import glint.geometry.Intersect;
+import glint.geometry.Hit;
 import java.util.Arrays;
 
 /**

@@ -1,5 +1,9 @@
-package glint.geometry;
+package glint.accel;
 
+import glint.geometry.Primitives;
+import glint.geometry.PrimitiveKind;
+import glint.geometry.Intersect;
+import glint.geometry.Hit;
 /**
  * A bounding volume hierarchy over the bounded primitives, in flat arrays; the unbounded ones
  * (planes) are tested by every ray before it. Nodes split at the best of a few binned
@@ -23,7 +27,7 @@ public final class Bvh implements Aggregate {
     /** The bounded primitives' numbers, each leaf's a contiguous run. */
     private final int[] leafPrimitives;
     /** Per slot of {@link #leafPrimitives}: the primitive's kind and its index within the kind. */
-    private final Shape[] leafKind;
+    private final PrimitiveKind[] leafKind;
     private final int[] leafIndex;
     /** The unbounded primitives' numbers. */
     private final int[] unbounded;

@@ -1,5 +1,11 @@
-package glint.geometry;
+package glint.accel;
 
+import glint.geometry.Primitives;
+import glint.geometry.PlaneKind;
+import glint.geometry.PrimitiveKind;
+import glint.geometry.SphereKind;
+import glint.geometry.Hit;
+import glint.geometry.DiscKind;
 import static org.junit.jupiter.api.Assertions.assertArrayEquals;
 import static org.junit.jupiter.api.Assertions.assertEquals;
 import static org.junit.jupiter.api.Assertions.assertTrue;
@@ -80,7 +86,7 @@ class EmptyInteriorsTest {
             planes[4 * i + 3] = -1000 - i;
         }
         long[] pairs = new long[1];
-        boolean[] empty = EmptyInteriors.findEmpty(new Primitives(List.of(new Spheres(s), new Planes(planes))), pairs);
+        boolean[] empty = EmptyInteriors.findEmpty(new Primitives(List.of(new SphereKind(s), new PlaneKind(planes))), pairs);
         for (int q = 0; q < n; q++) {
             assertTrue(empty[q], "sphere " + q);
         }
@@ -125,7 +131,7 @@ class EmptyInteriorsTest {
                 default -> random.nextDouble(-40, 40);
             };
         }
-        return new Primitives(List.of(new Spheres(s), new Planes(p)));
+        return new Primitives(List.of(new SphereKind(s), new PlaneKind(p)));
     }
 
     @Test
@@ -168,9 +174,9 @@ class EmptyInteriorsTest {
      * 4 tests a sphere (every pair of them is 5 billion).
      */
     private static void assertLinear(double[] spheres, int n) {
-        Counting counted = new Counting(new Spheres(spheres));
+        Counting counted = new Counting(new SphereKind(spheres));
         long[] pairs = new long[1];
-        boolean[] empty = EmptyInteriors.findEmpty(new Primitives(List.of(counted, new Planes(new double[] {0, 1, 0, -5}))),
+        boolean[] empty = EmptyInteriors.findEmpty(new Primitives(List.of(counted, new PlaneKind(new double[] {0, 1, 0, -5}))),
                 pairs);
         for (int q = 0; q < n; q++) {
             assertEquals(false, empty[q], "sphere " + q);
@@ -179,7 +185,7 @@ class EmptyInteriorsTest {
         assertTrue(counted.tests <= 4L * n, counted.tests + " tests for " + n + " spheres");
     }
 
-    /** Spheres in clusters (coincident, nested, overlapping, apart), planes and discs. */
+    /** SphereKind in clusters (coincident, nested, overlapping, apart), planes and discs. */
     private static Primitives randomScene(SplittableRandom random) {
         int count = 1 + random.nextInt(120);
         double[] s = new double[4 * count];
@@ -206,7 +212,7 @@ class EmptyInteriorsTest {
                 s[k + 3] = random.nextInt(40) == 0 ? random.nextDouble(5, 40) : random.nextDouble(0.05, 3);
             }
         }
-        List<Shape> kinds = new ArrayList<>(List.of(new Spheres(s)));
+        List<PrimitiveKind> kinds = new ArrayList<>(List.of(new SphereKind(s)));
         int planes = random.nextInt(4);
         double[] p = new double[4 * planes];
         for (int i = 0; i < planes; i++) {
@@ -217,7 +223,7 @@ class EmptyInteriorsTest {
             p[4 * i + 2] = z / length;
             p[4 * i + 3] = random.nextDouble(-30, 30);
         }
-        kinds.add(new Planes(p));
+        kinds.add(new PlaneKind(p));
         int discs = random.nextInt(4);
         double[] d = new double[7 * discs];
         for (int i = 0; i < discs; i++) {
@@ -227,16 +233,16 @@ class EmptyInteriorsTest {
             d[7 * i + 4] = 1;
             d[7 * i + 6] = random.nextDouble(0.5, 5);
         }
-        kinds.add(new Discs(d));
+        kinds.add(new DiscKind(d));
         return new Primitives(kinds);
     }
 
     /** A kind that counts the tests asked of it and passes everything else on. */
-    private static final class Counting implements Shape {
-        private final Shape shape;
+    private static final class Counting implements PrimitiveKind {
+        private final PrimitiveKind shape;
         long tests;
 
-        Counting(Shape shape) {
+        Counting(PrimitiveKind shape) {
             this.shape = shape;
         }
 

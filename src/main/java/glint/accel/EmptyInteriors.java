@@ -1,5 +1,9 @@
-package glint.geometry;
+package glint.accel;
 
+import glint.geometry.Primitives;
+import glint.geometry.PlaneKind;
+import glint.geometry.PrimitiveKind;
+import glint.geometry.Hit;
 import java.util.Arrays;
 
 /**
@@ -65,7 +69,7 @@ public final class EmptyInteriors extends AggregateFilter {
     }
 
     /**
-     * Planes times primitives still empty up to which each plane is asked of each primitive; above
+     * PlaneKind times primitives still empty up to which each plane is asked of each primitive; above
      * it, of groups of them first ({@link Groups}).
      */
     static final long MOST_PLANE_PAIRS_ONE_BY_ONE = 1 << 16;
@@ -110,7 +114,7 @@ public final class EmptyInteriors extends AggregateFilter {
         int[] unbounded = p.unbounded();
         Groups groups = null;
         for (int u : unbounded) {
-            if (groups == null && p.kind(p.kindOf(u)) instanceof Planes) {
+            if (groups == null && p.kind(p.kindOf(u)) instanceof PlaneKind) {
                 int left = 0;
                 for (int j = still.from(0); j < bounded; j = still.from(j + 1)) {
                     left++;
@@ -119,7 +123,7 @@ public final class EmptyInteriors extends AggregateFilter {
                     groups = new Groups(p, sorted, still, left);
                 }
             }
-            if (groups != null && p.kind(p.kindOf(u)) instanceof Planes) {
+            if (groups != null && p.kind(p.kindOf(u)) instanceof PlaneKind) {
                 groups.markReachedBy(p, u, 0, ball, empty, still, pairs);
                 continue;
             }
@@ -215,7 +219,7 @@ public final class EmptyInteriors extends AggregateFilter {
         void markReachedBy(Primitives p, int u, int at, double[] ball, boolean[] empty, StillEmpty still, long[] pairs) {
             double[] node = nodes.get(at);
             pairs[0]++;
-            Shape planes = p.kind(p.kindOf(u));
+            PrimitiveKind planes = p.kind(p.kindOf(u));
             if (!Double.isNaN(node[3]) && !planes.reachesInto(p.indexOf(u), node[0], node[1], node[2], node[3])) {
                 return;
             }

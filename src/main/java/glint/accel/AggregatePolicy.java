@@ -1,5 +1,6 @@
-package glint.geometry;
+package glint.accel;
 
+import glint.geometry.Primitives;
 /**
  * The one place that decides how a scene's rays search its primitives, and every threshold of
  * that decision. Each was measured on scenes/bench (800x600, 1 spp, depth 5, cook-torrance, render

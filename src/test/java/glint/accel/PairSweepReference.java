@@ -1,5 +1,6 @@
-package glint.geometry;
+package glint.accel;
 
+import glint.geometry.Primitives;
 import java.util.Arrays;
 
 /**

@@ -4,11 +4,11 @@ package glint.geometry;
  * A primitive kind written only for tests: flat discs (centre, unit normal, radius; 7 doubles
  * each), to show that a kind needs nothing but its bounds, intersection and surface.
  */
-final class Discs implements Shape {
+public final class DiscKind implements PrimitiveKind {
 
     private final double[] data;
 
-    Discs(double[] data) {
+    public DiscKind(double[] data) {
         this.data = data.clone();
     }
 

@@ -1,5 +1,12 @@
-package glint.geometry;
+package glint.accel;
 
+import glint.geometry.Primitives;
+import glint.geometry.PlaneKind;
+import glint.geometry.PrimitiveKind;
+import glint.geometry.SphereKind;
+import glint.geometry.Intersect;
+import glint.geometry.Hit;
+import glint.geometry.DiscKind;
 import static org.junit.jupiter.api.Assertions.assertEquals;
 import static org.junit.jupiter.api.Assertions.assertTrue;
 
@@ -24,8 +31,8 @@ class AggregateTest {
 
     @Test
     void aHitNamesItsKindAndIndex() {
-        Primitives primitives = new Primitives(List.of(new Spheres(new double[] {0, 0, 5, 1, 0, 0, 10, 1}),
-                new Planes(new double[] {0, 0, -1, -20})));
+        Primitives primitives = new Primitives(List.of(new SphereKind(new double[] {0, 0, 5, 1, 0, 0, 10, 1}),
+                new PlaneKind(new double[] {0, 0, -1, -20})));
         Hit hit = new Hit();
         FlatList list = new FlatList(primitives);
         assertTrue(list.nearest(0, 0, 0, 0, 0, 1, Intersect.MISS, Hit.NONE, Hit.NONE, hit, list.newStack()));
@@ -52,7 +59,7 @@ class AggregateTest {
             spheres[4 * i] = -Math.pow(2, i % 60);
             spheres[4 * i + 3] = 0.25 + (i / 60) * 0.01;
         }
-        Primitives primitives = new Primitives(List.of(new Spheres(spheres)));
+        Primitives primitives = new Primitives(List.of(new SphereKind(spheres)));
         Bvh bvh = new Bvh(primitives, 4);
         assertEquals(bvh.depth() + 1, bvh.newStack().nodes.length);
         SplittableRandom random = new SplittableRandom(SEED + 1);
@@ -76,7 +83,7 @@ class AggregateTest {
     void aShapeKindAddedOutsideTheRendererIsSearchedLikeTheOthers() {
         SplittableRandom random = new SplittableRandom(SEED + 2);
         for (int scene = 0; scene < 10; scene++) {
-            List<Shape> kinds = new ArrayList<>(randomScene(random, 50, 1).kinds());
+            List<PrimitiveKind> kinds = new ArrayList<>(randomScene(random, 50, 1).kinds());
             double[] discs = new double[7 * 40];
             for (int i = 0; i < 40; i++) {
                 double[] n = unit(random.nextDouble(-1, 1), random.nextDouble(-1, 1), random.nextDouble(-1, 1));
@@ -85,7 +92,7 @@ class AggregateTest {
                 System.arraycopy(n, 0, discs, 7 * i + 3, 3);
                 discs[7 * i + 6] = random.nextDouble(0.1, 2);
             }
-            kinds.add(new Discs(discs));
+            kinds.add(new DiscKind(discs));
             Primitives primitives = new Primitives(kinds);
             compare(primitives, new Bvh(primitives, 4), new FlatList(primitives), random, 2_000);
         }
@@ -97,7 +104,7 @@ class AggregateTest {
         for (int scene = 0; scene < 30; scene++) {
             Primitives primitives = randomScene(random, 2 + random.nextInt(200), random.nextInt(3));
             boolean[] empty = EmptyInteriors.findEmpty(primitives);
-            Shape spheres = primitives.kind(0), planes = primitives.kind(1);
+            PrimitiveKind spheres = primitives.kind(0), planes = primitives.kind(1);
             double[] ball = new double[4];
             for (int a = 0; a < spheres.count(); a++) {
                 spheres.boundingBall(a, ball);
@@ -131,7 +138,7 @@ class AggregateTest {
             Aggregate filtered = EmptyInteriors.around(new FlatList(primitives));
             FlatList truth = new FlatList(primitives);
             TraversalStack stack = truth.newStack();
-            Shape spheres = primitives.kind(0);
+            PrimitiveKind spheres = primitives.kind(0);
             double[] ball = new double[4];
             for (int i = 0; i < 200; i++) {
                 int sphere = random.nextInt(spheres.count());
@@ -185,7 +192,7 @@ class AggregateTest {
             FlatList truth = new FlatList(primitives);
             Aggregate cells = LeavingCells.around(truth);
             TraversalStack stack = truth.newStack();
-            Shape spheres = primitives.kind(0);
+            PrimitiveKind spheres = primitives.kind(0);
             double[] ball = new double[4];
             double[] pass = passes(random, primitives.count());
             for (int i = 0; i < 2_000; i++) {
@@ -244,7 +251,7 @@ class AggregateTest {
                     1 + random.nextInt(2));
             FlatList truth = new FlatList(primitives);
             TraversalStack stack = truth.newStack();
-            Shape spheres = primitives.kind(0);
+            PrimitiveKind spheres = primitives.kind(0);
             double[] ball = new double[4];
             double[] pass = passes(random, primitives.count());
             for (int light = 0; light < 4; light++) {
@@ -305,10 +312,10 @@ class AggregateTest {
     private static int surfacePoint(SplittableRandom random, Primitives primitives, double[] l, double[] p,
                                     double[] n) {
         int q = random.nextInt(primitives.count());
-        Shape kind = primitives.kind(primitives.kindOf(q));
+        PrimitiveKind kind = primitives.kind(primitives.kindOf(q));
         int index = primitives.indexOf(q);
         double[] outward;
-        if (kind instanceof Spheres) {
+        if (kind instanceof SphereKind) {
             double[] ball = new double[4];
             kind.boundingBall(index, ball);
             outward = unit(random.nextDouble(-1, 1), random.nextDouble(-1, 1), random.nextDouble(-1, 1));
@@ -330,7 +337,7 @@ class AggregateTest {
         for (int k = 0; k < 3; k++) {
             n[k] = sign * outward[k];
         }
-        return kind instanceof Spheres && sign < 0 ? Hit.NONE : q;
+        return kind instanceof SphereKind && sign < 0 ? Hit.NONE : q;
     }
 
     @Test
@@ -436,7 +443,7 @@ class AggregateTest {
             System.arraycopy(n, 0, p, 4 * i, 3);
             p[4 * i + 3] = random.nextDouble(-20, 20);
         }
-        return new Primitives(List.of(new Spheres(s), new Planes(p)));
+        return new Primitives(List.of(new SphereKind(s), new PlaneKind(p)));
     }
 
     private static double[] unit(double x, double y, double z) {

@@ -1,4 +1,4 @@
-package glint.geometry;
+package glint.accel;
 
 /**
  * Scratch value of one thread's hierarchy traversals: the nodes waiting to be visited and the

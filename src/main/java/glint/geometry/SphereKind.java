@@ -1,7 +1,7 @@
 package glint.geometry;
 
-/** Spheres: centre x, y, z and radius, 4 doubles each. */
-public final class Spheres implements Shape {
+/** SphereKind: centre x, y, z and radius, 4 doubles each. */
+public final class SphereKind implements PrimitiveKind {
 
     private final double[] data;
     private final int count;
@@ -9,7 +9,7 @@ public final class Spheres implements Shape {
     private final double[] inverseRadii;
 
     /** @param data centre x, y, z and radius of each sphere (copied) */
-    public Spheres(double[] data) {
+    public SphereKind(double[] data) {
         if (data.length % 4 != 0) {
             throw new IllegalArgumentException("4 numbers a sphere, got " + data.length);
         }

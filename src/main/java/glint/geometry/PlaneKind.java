@@ -1,13 +1,13 @@
 package glint.geometry;
 
 /** Infinite planes n.p = offset: unit normal x, y, z and offset, 4 doubles each. */
-public final class Planes implements Shape {
+public final class PlaneKind implements PrimitiveKind {
 
     private final double[] data;
     private final int count;
 
     /** @param data unit normal x, y, z and offset n.p of each plane (copied) */
-    public Planes(double[] data) {
+    public PlaneKind(double[] data) {
         if (data.length % 4 != 0) {
             throw new IllegalArgumentException("4 numbers a plane, got " + data.length);
         }

@@ -1,5 +1,7 @@
-package glint.geometry;
+package glint.accel;
 
+import glint.geometry.Primitives;
+import glint.geometry.Hit;
 import java.util.Arrays;
 
 /**

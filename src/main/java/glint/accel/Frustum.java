@@ -1,4 +1,4 @@
-package glint.geometry;
+package glint.accel;
 
 /**
  * Scratch value: the rays from one point (the apex) whose directions lie between four edge
