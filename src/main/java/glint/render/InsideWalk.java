@@ -4,7 +4,9 @@ import glint.geometry.Hit;
 import glint.geometry.Primitives;
 import glint.geometry.PrimitiveKind;
 import glint.shading.Optics;
+import glint.shading.PathVertex;
 import glint.shading.Rgb;
+import glint.shading.ShadingModel;
 import glint.shading.Surface;
 
 /**
@@ -95,9 +97,9 @@ final class InsideWalk {
                 it.trace(sx, sy, sz, ux, uy, uz, level, weightIn, Hit.NONE, primitive);
                 return level + 1;
             }
-            it.rays++;
+            it.countRay();
             Surface s = v.surface;
-            s.setInside(end, cosEnd, it.epsilon, material, primitive);
+            s.setInside(end, cosEnd, it.epsilon(), material, primitive);
             model.direct(it, v, ux, uy, uz);
             boolean sameAngle = previous != null && cosEnd == previous.surface.cosIncident;
             if (sameAngle) {

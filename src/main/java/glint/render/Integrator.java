@@ -8,11 +8,16 @@ import glint.geometry.Hit;
 import glint.geometry.Intersect;
 import glint.geometry.Primitives;
 import glint.accel.TraversalStack;
+import glint.shading.CookTorrance;
 import glint.shading.LightSample;
 import glint.shading.Lights;
 import glint.shading.Materials;
 import glint.shading.Optics;
+import glint.shading.PathVertex;
+import glint.shading.Phong;
 import glint.shading.Rgb;
+import glint.shading.ShadingContext;
+import glint.shading.ShadingModel;
 import glint.shading.Surface;
 
 /**
@@ -22,7 +27,7 @@ import glint.shading.Surface;
  * its light. Its scratch values live in one {@link PathVertex} a level, so nothing is allocated per
  * ray. All vectors are world space, directions unit length.
  */
-final class Integrator {
+final class Integrator implements ShadingContext {
 
     private static final ShadingModel COOK_TORRANCE = new CookTorrance();
     private static final ShadingModel PHONG = new Phong();
@@ -40,13 +45,13 @@ final class Integrator {
     private final InsideWalk walk = new InsideWalk(this);
 
     // the scene's settings, read once per scene rather than through the record on every ray
-    double epsilon, minWeight;
-    boolean exactFresnel, roulette;
-    Materials materials;
-    Lights lights;
+    private double epsilon, minWeight;
+    private boolean exactFresnel, roulette;
+    private Materials materials;
+    private Lights lights;
 
     /** Rays traced so far: camera, reflected, refracted and shadow rays. */
-    long rays;
+    private long rays;
 
     // the camera ray whose path is being traced, which seeds its random decisions, and how many it made
     private int pathPixel, pathFrame, pathSample, pathDraws;
@@ -97,7 +102,8 @@ final class Integrator {
      * expected value; with the plain cut-off, 0. The caller traces the child with weight
      * {@code childWeight x keep} and scales its radiance by {@code keep} when that is above 0.
      */
-    double keep(double childWeight) {
+    @Override
+    public double keep(double childWeight) {
         if (childWeight >= minWeight) {
             return 1;
         }
@@ -179,11 +185,21 @@ final class Integrator {
         return v.radiance;
     }
 
+    @Override
+    public double lightReaching(Surface s, int i, LightSample out) {
+        double cosine = lights.sample(i, s.px, s.py, s.pz, s.nx, s.ny, s.nz, out);
+        if (!(cosine > 0)) { // NaN too: no light from an undefined direction
+            return 0;
+        }
+        out.cosine = cosine;
+        return transmittance(s, out, i);
+    }
+
     /**
      * The fraction of light i, sampled as {@code light}, that reaches surface s: a shadow ray from s
      * towards the light, up to it, through the scene's shadow pass of each primitive it meets.
      */
-    double transmittance(Surface s, LightSample light, int i) {
+    private double transmittance(Surface s, LightSample light, int i) {
         rays++;
         return shadowAggregate[i].transmittance(s.nearX(), s.nearY(), s.nearZ(), light.dirX, light.dirY, light.dirZ,
                 light.distance, s.skipNear, scene.shadowPass, stack);
@@ -199,19 +215,16 @@ final class Integrator {
                 weight, s.skipNear, s.insideNear);
     }
 
-    /**
-     * Adds to {@code sum} the light mirrored at s with the grey factor {@code factor} (a Fresnel
-     * reflectance, or phong's ks): the reflected ray of path weight weight x factor is traced if
-     * {@link #keep} keeps it, and its radiance counts factor x keep.
-     */
-    void addReflected(Surface s, double dx, double dy, double dz, int hitsLeft, double weight, double factor, Rgb sum) {
-        double keep = keep(weight * factor);
+    @Override
+    public void addReflected(Surface s, double dx, double dy, double dz, int hitsLeft, double weight, double fR,
+                             double fG, double fB, Rgb sum) {
+        double childWeight = weight * Math.max(fR, Math.max(fG, fB));
+        double keep = keep(childWeight);
         if (keep > 0) {
-            Rgb reflected = traceReflected(s, dx, dy, dz, hitsLeft, weight * factor * keep);
-            double k = keep * factor;
-            sum.r += k * reflected.r;
-            sum.g += k * reflected.g;
-            sum.b += k * reflected.b;
+            Rgb reflected = traceReflected(s, dx, dy, dz, hitsLeft, childWeight * keep);
+            sum.r += keep * fR * reflected.r;
+            sum.g += keep * fG * reflected.g;
+            sum.b += keep * fB * reflected.b;
         }
     }
 
@@ -220,12 +233,13 @@ final class Integrator {
      * reflects and refracts: the reflected ray through {@link #addReflected}, then the refracted one,
      * of path weight weight x the tint's largest channel, traced if {@link #keep} keeps it.
      */
-    void scatter(PathVertex v, double dx, double dy, double dz, int hitsLeft, double weight) {
+    @Override
+    public void scatter(PathVertex v, double dx, double dy, double dz, int hitsLeft, double weight) {
         if (hitsLeft <= 1) {
             return;
         }
         Rgb sum = v.sum;
-        addReflected(v.surface, dx, dy, dz, hitsLeft, weight, v.reflect, sum);
+        addReflected(v.surface, dx, dy, dz, hitsLeft, weight, v.reflect, v.reflect, v.reflect, sum);
         double childWeight = weight * Math.max(v.transmitR, Math.max(v.transmitG, v.transmitB));
         double keep = childWeight > 0 ? keep(childWeight) : 0;
         if (keep > 0) {
@@ -271,15 +285,38 @@ final class Integrator {
         return scene.materialOf[primitive];
     }
 
-    double ambientR() {
-        return scene.ambientR;
+    @Override
+    public Materials materials() {
+        return materials;
     }
 
-    double ambientG() {
-        return scene.ambientG;
+    @Override
+    public Lights lights() {
+        return lights;
     }
 
-    double ambientB() {
-        return scene.ambientB;
+    @Override
+    public double ambient(int channel) {
+        return channel == 0 ? scene.ambientR : channel == 1 ? scene.ambientG : scene.ambientB;
+    }
+
+    @Override
+    public boolean exactFresnel() {
+        return exactFresnel;
+    }
+
+    /** How far rays leaving a surface start off it, per unit of max(1, |p|). */
+    double epsilon() {
+        return epsilon;
+    }
+
+    /** Rays traced so far: camera, reflected, refracted and shadow rays. */
+    long rays() {
+        return rays;
+    }
+
+    /** Counts a ray whose hit was found without a search (a chord inside a closed primitive). */
+    void countRay() {
+        rays++;
     }
 }

@@ -3,17 +3,17 @@ package glint.render;
 import glint.config.Shading;
 import glint.accel.Aggregate;
 import glint.accel.AggregatePolicy;
-import glint.geometry.PlaneKind;
 import glint.geometry.Primitives;
 import glint.geometry.PrimitiveKind;
-import glint.geometry.SphereKind;
 import glint.scene.Camera;
+import glint.scene.Light;
+import glint.scene.LightType;
 import glint.scene.Material;
-import glint.scene.MaterialType;
-import glint.scene.Plane;
+import glint.scene.Registry;
 import glint.scene.Scene;
 import glint.scene.SceneObject;
-import glint.scene.Sphere;
+import glint.scene.Shape;
+import glint.scene.ShapeType;
 import glint.shading.Lights;
 import glint.shading.Materials;
 import java.util.ArrayList;
@@ -49,43 +49,27 @@ public final class RenderScene {
     /** The camera, world space. */
     final CameraBasis camera;
 
-    private RenderScene(Scene scene, RenderSettings settings, Function<Primitives, Aggregate> aggregateOf,
-                        boolean lightCells) {
+    private RenderScene(Scene scene, RenderSettings settings, Registry registry,
+                        Function<Primitives, Aggregate> aggregateOf, boolean lightCells) {
         this.settings = settings;
-        List<Material> materialList = new ArrayList<>();
-        List<SceneObject> spheres = new ArrayList<>(), planes = new ArrayList<>();
-        for (SceneObject o : scene.objects()) {
-            (o.shape() instanceof Sphere ? spheres : o.shape() instanceof Plane ? planes : unknownKind(o)).add(o);
-        }
-        double[] sphereData = new double[4 * spheres.size()];
-        for (int i = 0; i < spheres.size(); i++) {
-            Sphere s = (Sphere) spheres.get(i).shape();
-            put4(sphereData, i, s.center().x(), s.center().y(), s.center().z(), s.radius());
-        }
-        double[] planeData = new double[4 * planes.size()];
-        for (int i = 0; i < planes.size(); i++) {
-            Plane p = (Plane) planes.get(i).shape();
-            put4(planeData, i, p.normal().x(), p.normal().y(), p.normal().z(), p.normal().dot(p.point()));
-        }
-        List<PrimitiveKind> kinds = List.of(new SphereKind(sphereData), new PlaneKind(planeData));
-        primitives = new Primitives(kinds);
+        List<SceneObject> inOrder = new ArrayList<>(); // kind by kind, in the registry's order
+        primitives = new Primitives(kinds(scene, registry, inOrder));
         aggregate = aggregateOf.apply(primitives);
-        List<SceneObject> inOrder = new ArrayList<>(spheres);
-        inOrder.addAll(planes);
+        List<Material> materialList = new ArrayList<>();
         materialOf = new int[inOrder.size()];
         for (int p = 0; p < materialOf.length; p++) {
             materialOf[p] = indexOf(materialList, inOrder.get(p).material());
         }
-        materials = new Materials(materialList);
+        materials = Materials.of(materialList.stream().map(RenderScene::parameters).toList());
         shadowPass = new double[materialOf.length];
         for (int p = 0; p < materialOf.length && settings.shading() == Shading.PHONG; p++) {
             int m = materialOf[p];
-            shadowPass[p] = materials.type(m) == MaterialType.GLASS ? materials.kt(m) : 0;
+            shadowPass[p] = materials.bsdf(m).transmits() ? materials.kt(m) : 0;
         }
-        lights = new Lights(scene.lights());
+        lights = Lights.of(scene.lights().stream().map(light -> compiled(registry.typeOf(light), light)).toList());
         shadowAggregate = new Aggregate[lights.count()];
         for (int i = 0, points = 0; i < shadowAggregate.length; i++) {
-            shadowAggregate[i] = lightCells && lights.isPoint(i) ? AggregatePolicy.forPointLight(aggregate, points++,
+            shadowAggregate[i] = lightCells && lights.atPoint(i) ? AggregatePolicy.forPointLight(aggregate, points++,
                     lights.position(i, 0), lights.position(i, 1), lights.position(i, 2)) : aggregate;
         }
         backgroundR = scene.background().x();
@@ -118,7 +102,12 @@ public final class RenderScene {
 
     /** Compiles an immutable scene with the given settings. */
     public static RenderScene compile(Scene scene, RenderSettings settings) {
-        return new RenderScene(scene, settings, AggregatePolicy::choose, true);
+        return compile(scene, settings, Registry.STANDARD);
+    }
+
+    /** Compiles a scene whose objects and lights may be of any type {@code registry} lists. */
+    public static RenderScene compile(Scene scene, RenderSettings settings, Registry registry) {
+        return new RenderScene(scene, settings, registry, AggregatePolicy::choose, true);
     }
 
     /**
@@ -126,7 +115,7 @@ public final class RenderScene {
      * whatever the policy would choose.
      */
     static RenderScene compile(Scene scene, RenderSettings settings, Function<Primitives, Aggregate> aggregateOf) {
-        return new RenderScene(scene, settings, aggregateOf, false);
+        return new RenderScene(scene, settings, Registry.STANDARD, aggregateOf, false);
     }
 
     /**
@@ -146,8 +135,38 @@ public final class RenderScene {
         return aggregate;
     }
 
-    private static List<SceneObject> unknownKind(SceneObject o) {
-        throw new IllegalArgumentException("no primitive kind compiles " + o.shape().getClass().getSimpleName());
+    /**
+     * The scene's primitives kind by kind, one kind per shape type of the registry (in its order);
+     * the objects in that order are added to {@code inOrder}.
+     */
+    private static List<PrimitiveKind> kinds(Scene scene, Registry registry, List<SceneObject> inOrder) {
+        List<PrimitiveKind> kinds = new ArrayList<>();
+        for (ShapeType<?> type : registry.shapes()) {
+            List<Shape> shapes = new ArrayList<>();
+            for (SceneObject o : scene.objects()) {
+                if (type.holds(o.shape())) {
+                    shapes.add(o.shape());
+                    inOrder.add(o);
+                }
+            }
+            kinds.add(type.compile(shapes));
+        }
+        for (SceneObject o : scene.objects()) {
+            if (registry.shapes().stream().noneMatch(type -> type.holds(o.shape()))) {
+                throw new IllegalArgumentException("no primitive kind compiles " + o.shape().getClass().getSimpleName());
+            }
+        }
+        return kinds;
+    }
+
+    private static Materials.Parameters parameters(Material m) {
+        return new Materials.Parameters(m.type().bsdf(), m.color(), m.kd(), m.ks(), m.kt(), m.shininess(), m.ior(),
+                m.roughness());
+    }
+
+    private static Lights.Light compiled(LightType<?> type, Light light) {
+        return new Lights.Light(type.sampler(), type.atPoint(), type.vectorOf(light),
+                light.color().scale(light.intensity()));
     }
 
     private static int indexOf(List<Material> materials, Material material) {
@@ -157,12 +176,5 @@ public final class RenderScene {
         }
         materials.add(material);
         return materials.size() - 1;
-    }
-
-    private static void put4(double[] array, int i, double a, double b, double c, double d) {
-        array[4 * i] = a;
-        array[4 * i + 1] = b;
-        array[4 * i + 2] = c;
-        array[4 * i + 3] = d;
     }
 }

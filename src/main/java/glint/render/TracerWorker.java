@@ -22,7 +22,7 @@ final class TracerWorker {
 
     /** Rays this worker has traced (camera, reflected, refracted and shadow rays). */
     long raysCast() {
-        return integrator.rays;
+        return integrator.rays();
     }
 
     /**

@@ -40,27 +40,26 @@ public final class SceneLoader {
     static final double SHORTEST = 1e-150, LONGEST = 1e150;
     private static final Set<String> MATERIAL_KEYS =
             ordered("type", "color", "kd", "ks", "kt", "shininess", "ior", "roughness");
-    private static final Set<String> SPHERE_KEYS = ordered("type", "center", "radius", "material");
-    private static final Set<String> PLANE_KEYS = ordered("type", "point", "normal", "material");
-    private static final Set<String> POINT_LIGHT_KEYS = ordered("type", "position", "color", "intensity");
-    private static final Set<String> DIRECTIONAL_LIGHT_KEYS = ordered("type", "direction", "color", "intensity");
-    private static final Set<String> OBJECT_TYPES = ordered("sphere", "plane");
-    private static final Set<String> LIGHT_TYPES = ordered("point", "directional");
-    private static final Set<String> MATERIAL_TYPES = ordered("matte", "metal", "glass");
 
     private final String file;
     private final YamlTree yaml;
     private final CameraReader cameras;
     private final SceneLimits limits;
+    private final Map<String, ShapeType<?>> shapeTypes = new LinkedHashMap<>();
+    private final Map<String, MaterialType> materialTypes = new LinkedHashMap<>();
+    private final Map<String, LightType<?>> lightTypes = new LinkedHashMap<>();
     private final Map<String, Material> materials = new LinkedHashMap<>(); // presets first, for hints
 
-    private SceneLoader(String file, SceneLimits limits) {
+    private SceneLoader(String file, SceneLimits limits, Registry registry) {
         this.file = file;
         this.yaml = new YamlTree(file);
         this.cameras = new CameraReader(yaml);
         this.limits = limits;
-        for (MaterialType type : MaterialType.values()) {
-            materials.put(type.key(), Material.preset(type));
+        registry.shapes().forEach(type -> shapeTypes.put(type.name(), type));
+        registry.lights().forEach(type -> lightTypes.put(type.name(), type));
+        for (MaterialType type : registry.materials()) {
+            materialTypes.put(type.name(), type);
+            materials.put(type.name(), type.preset());
         }
     }
 
@@ -81,6 +80,12 @@ public final class SceneLoader {
 
     /** Parses scene text within the given limits. */
     public static Scene parse(String file, String text, SceneLimits limits) throws InputException {
+        return parse(file, text, limits, Registry.STANDARD);
+    }
+
+    /** Parses scene text within the given limits, knowing the types {@code registry} lists. */
+    public static Scene parse(String file, String text, SceneLimits limits, Registry registry)
+            throws InputException {
         if (text.length() > limits.maxFileBytes()) {
             throw tooBig(file, text.length(), limits);
         }
@@ -89,7 +94,7 @@ public final class SceneLoader {
             throw longLine;
         }
         NestingCheck.check(file, text, SceneLimits.MAX_NESTING);
-        return new SceneLoader(file, limits).scene(compose(file, text, limits));
+        return new SceneLoader(file, limits, registry).scene(compose(file, text, limits));
     }
 
     private static InputException tooBig(String file, long size, SceneLimits limits) {
@@ -194,7 +199,7 @@ public final class SceneLoader {
         Set<String> seen = new LinkedHashSet<>();
         for (var tuple : map.getValue()) {
             String name = yaml.string(tuple.getKeyNode(), "a material name");
-            if (MATERIAL_TYPES.contains(name)) {
+            if (materialTypes.containsKey(name)) {
                 throw yaml.error(tuple.getKeyNode(), "material name " + InputException.quote(name)
                         + " is a preset and cannot be redefined (choose another name)");
             }
@@ -222,14 +227,14 @@ public final class SceneLoader {
         Node typeNode = m.get("type");
         if (typeNode == null) {
             throw yaml.error(node, "missing required key 'type' in " + what
-                    + " (one of: " + String.join(", ", MATERIAL_TYPES) + ")");
+                    + " (one of: " + String.join(", ", materialTypes.keySet()) + ")");
         }
         String typeName = yaml.string(typeNode, "material type");
-        if (!MATERIAL_TYPES.contains(typeName)) {
+        if (!materialTypes.containsKey(typeName)) {
             throw yaml.error(typeNode, "unknown material type " + InputException.quote(typeName)
-                    + Suggestions.hint(typeName, MATERIAL_TYPES));
+                    + Suggestions.hint(typeName, materialTypes.keySet()));
         }
-        Material p = Material.preset(MaterialType.valueOf(typeName.toUpperCase(Locale.ROOT)));
+        Material p = materialTypes.get(typeName).preset();
         Vector3d color = m.containsKey("color") ? yaml.color(m.get("color"), "color") : p.color();
         double kd = atLeastZero(m, "kd", p.kd());
         double ks = atLeastZero(m, "ks", p.ks());
@@ -265,29 +270,13 @@ public final class SceneLoader {
     }
 
     private SceneObject object(Node node) throws InputException {
-        String type = kind(node, "object", OBJECT_TYPES);
-        if (type.equals("sphere")) {
-            Map<String, Node> m = yaml.mapping(node, "sphere", SPHERE_KEYS);
-            Vector3d center = yaml.vector(yaml.required(node, m, "center", "sphere"), "center");
-            Node radiusNode = yaml.required(node, m, "radius", "sphere");
-            double radius = yaml.number(radiusNode, "radius");
-            if (!(radius > 0)) {
-                throw yaml.error(radiusNode, "radius must be > 0, got " + YamlTree.source(radiusNode, radius));
-            }
-            if (!(radius >= SHORTEST && radius <= LONGEST)) {
-                throw yaml.error(radiusNode, "radius must lie between 1e-150 and 1e150 (its square must be a"
-                        + " normal double), got " + YamlTree.source(radiusNode, radius));
-            }
-            return new SceneObject(new Sphere(center, radius), materialOf(m));
-        }
-        Map<String, Node> m = yaml.mapping(node, "plane", PLANE_KEYS);
-        Vector3d point = yaml.vector(yaml.required(node, m, "point", "plane"), "point");
-        Node normalNode = yaml.required(node, m, "normal", "plane");
-        Vector3d normal = lengthSafe(yaml.vector(normalNode, "normal"));
-        if (normal.length() == 0) {
-            throw yaml.error(normalNode, "normal must not be the zero vector");
-        }
-        return new SceneObject(new Plane(point, normal.normalize()), materialOf(m));
+        ShapeType<?> type = shapeTypes.get(kind(node, "object", shapeTypes.keySet()));
+        Set<String> keys = ordered("type");
+        keys.addAll(type.keys());
+        keys.add("material");
+        Map<String, Node> m = yaml.mapping(node, type.name(), keys);
+        Shape shape = type.reader().read(new Fields(yaml, node, m, type.name()));
+        return new SceneObject(shape, materialOf(m));
     }
 
     private Material materialOf(Map<String, Node> m) throws InputException {
@@ -295,10 +284,13 @@ public final class SceneLoader {
     }
 
     private Light light(Node node) throws InputException {
-        String type = kind(node, "light", LIGHT_TYPES);
-        String what = type + " light";
-        Map<String, Node> m = yaml.mapping(node, what,
-                type.equals("point") ? POINT_LIGHT_KEYS : DIRECTIONAL_LIGHT_KEYS);
+        LightType<?> type = lightTypes.get(kind(node, "light", lightTypes.keySet()));
+        String what = type.name() + " light";
+        Set<String> keys = ordered("type");
+        keys.addAll(type.keys());
+        keys.add("color");
+        keys.add("intensity");
+        Map<String, Node> m = yaml.mapping(node, what, keys);
         Vector3d color = m.containsKey("color") ? yaml.color(m.get("color"), "color") : Vector3d.ONE;
         double intensity = 1;
         if (m.containsKey("intensity")) {
@@ -314,16 +306,7 @@ public final class SceneLoader {
                     "color x intensity must be at most 1e30, got %.3g (the image stores radiance as float, "
                     + "up to 3.4e38)", brightest));
         }
-        if (type.equals("point")) {
-            Vector3d position = yaml.vector(yaml.required(node, m, "position", what), "position");
-            return new Light.Point(position, color, intensity);
-        }
-        Node directionNode = yaml.required(node, m, "direction", what);
-        Vector3d direction = lengthSafe(yaml.vector(directionNode, "direction"));
-        if (direction.length() == 0) {
-            throw yaml.error(directionNode, "direction must not be the zero vector");
-        }
-        return new Light.Directional(direction.normalize(), color, intensity);
+        return type.reader().read(new Fields(yaml, node, m, what), color, intensity);
     }
 
     /** The {@code type} of an object or light mapping, checked against the known types. */

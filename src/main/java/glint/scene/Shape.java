@@ -1,5 +1,5 @@
 package glint.scene;
 
-/** The closed set of geometric shapes a scene can hold. */
-public sealed interface Shape permits Sphere, Plane {
+/** A geometric shape of the scene model; its {@link ShapeType} says how it is read and compiled. */
+public interface Shape {
 }

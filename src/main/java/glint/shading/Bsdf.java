@@ -1,64 +1,33 @@
 package glint.shading;
 
 /**
- * The materials' scattering, one function per material and term, shared by both shading models
- * and every ray. Cosines are of unit vectors; channels are linear RGB.
+ * How one material type scatters light in the physically based model ({@link CookTorrance}): the
+ * light its surface sends back by itself, and the rays it sends on. One per material type
+ * ({@code glint.scene.MaterialType}); {@link Lambert}, {@link Conductor} and {@link Dielectric}.
  */
-public final class Bsdf {
-
-    private static final double INV_PI = 1 / Math.PI;
-
-    private Bsdf() {
-    }
-
-    /** Lambert, one channel: albedo / pi x the irradiance summed over the lights it sees (n.l applied), plus ambient x albedo. */
-    public static double lambert(double albedo, double irradiance, double ambient) {
-        return albedo * (irradiance * INV_PI + ambient);
-    }
+public interface Bsdf {
 
     /**
-     * Adds a conductor's GGX highlight from one light to {@code sum}: D(h) V(l, v) n.l x F(v.h) x
-     * the light's irradiance, F Schlick's with F0 = the material's colour. The view direction is
-     * -d; the sample's direction is the unit direction to the light, {@code cosLight} = n.l > 0.
+     * The light v's surface sends back along the ray of unit direction d by itself (ambient and the
+     * lights it sees), into {@code v.sum}.
      */
-    public static void addConductorHighlight(Materials materials, int m, Surface s, LightSample l, double cosLight,
-                                             double dx, double dy, double dz, Rgb sum) {
-        double alpha = materials.alpha(m);
-        double hx = l.dirX - dx, hy = l.dirY - dy, hz = l.dirZ - dz;
-        double inv = 1 / Math.sqrt(hx * hx + hy * hy + hz * hz);
-        double cosHalf = (hx * s.nx + hy * s.ny + hz * s.nz) * inv;
-        double cosViewHalf = Math.max(0, -(hx * dx + hy * dy + hz * dz) * inv);
-        double specular = Optics.ggx(cosHalf, alpha) * Optics.smithVisibility(cosLight, s.cosIncident, alpha) * cosLight;
-        sum.r += specular * Optics.schlick(materials.color(m, 0), cosViewHalf) * l.irradianceR;
-        sum.g += specular * Optics.schlick(materials.color(m, 1), cosViewHalf) * l.irradianceG;
-        sum.b += specular * Optics.schlick(materials.color(m, 2), cosViewHalf) * l.irradianceB;
-    }
-
-    /** A conductor's Fresnel factor, one channel: Schlick's with F0 = its colour. */
-    public static double conductorFresnel(double f0, double cosTheta) {
-        return Optics.schlick(f0, cosTheta);
-    }
+    void direct(ShadingContext c, PathVertex v, double dx, double dy, double dz);
 
     /**
-     * The fraction a smooth dielectric boundary reflects (eta = n_incident / n_transmitted): the
-     * exact Fresnel equations or Schlick's approximation; 1 past the critical angle.
+     * Adds to {@code v.sum} what the rays the surface sends on bring back: {@code hitsLeft} hits the
+     * path may still shade (this one included), {@code weight} its throughput so far.
      */
-    public static double dielectricReflectance(double cosIncident, double eta, boolean exact) {
-        return exact ? Optics.fresnelDielectric(cosIncident, eta) : Optics.schlickDielectric(cosIncident, eta);
-    }
-
-    /** The ratio of indices a ray meets at a dielectric: n_incident / n_transmitted. */
-    public static double eta(double ior, boolean entering) {
-        return entering ? 1 / ior : ior;
-    }
+    void scatter(ShadingContext c, PathVertex v, double dx, double dy, double dz, int hitsLeft, double weight);
 
     /**
-     * The phong highlight's cosine: r.v with r the light direction mirrored about n and v = -d
-     * (raise it to the shininess where positive).
+     * For a material that refracts, its boundary's factors into {@code v.eta}, {@code v.reflect}
+     * and {@code v.transmitR/G/B}; the others have none.
      */
-    public static double phongCosReflectView(Surface s, LightSample l, double cosLight, double dx, double dy,
-                                             double dz) {
-        double k = 2 * cosLight;
-        return -((k * s.nx - l.dirX) * dx + (k * s.ny - l.dirY) * dy + (k * s.nz - l.dirZ) * dz);
+    default void boundary(ShadingContext c, PathVertex v) {
+    }
+
+    /** Whether light passes through the material (the phong model's shadow rays pass kt of it). */
+    default boolean transmits() {
+        return false;
     }
 }

@@ -1,7 +1,7 @@
 package glint.shading;
 
-import glint.scene.Material;
-import glint.scene.MaterialType;
+import glint.math.Vector3d;
+import java.util.ArrayList;
 import java.util.List;
 
 /** A scene's materials in flat arrays, indexed by material number. */
@@ -10,14 +10,14 @@ public final class Materials {
     /** Smallest GGX alpha used for a highlight; keeps D(h) finite as roughness goes to 0. */
     static final double MIN_ALPHA = 1e-4;
 
-    private final MaterialType[] type;
+    private final Bsdf[] bsdf;
     private final double[] color; // 3 per material, linear RGB
     private final double[] kd, ks, kt, shininess, ior;
     private final double[] alpha; // GGX alpha = roughness^2; 0: no highlight
 
-    public Materials(List<Material> materials) {
+    private Materials(List<Parameters> materials) {
         int n = materials.size();
-        type = new MaterialType[n];
+        bsdf = new Bsdf[n];
         color = new double[3 * n];
         kd = new double[n];
         ks = new double[n];
@@ -26,26 +26,37 @@ public final class Materials {
         ior = new double[n];
         alpha = new double[n];
         for (int i = 0; i < n; i++) {
-            Material m = materials.get(i);
-            type[i] = m.type();
-            color[3 * i] = m.color().x();
-            color[3 * i + 1] = m.color().y();
-            color[3 * i + 2] = m.color().z();
-            kd[i] = m.kd();
-            ks[i] = m.ks();
-            kt[i] = m.kt();
-            shininess[i] = m.shininess();
-            ior[i] = m.ior();
-            alpha[i] = m.roughness() > 0 ? Math.max(m.roughness() * m.roughness(), MIN_ALPHA) : 0;
+            Parameters m = materials.get(i);
+            bsdf[i] = m.bsdf;
+            color[3 * i] = m.color.x();
+            color[3 * i + 1] = m.color.y();
+            color[3 * i + 2] = m.color.z();
+            kd[i] = m.kd;
+            ks[i] = m.ks;
+            kt[i] = m.kt;
+            shininess[i] = m.shininess;
+            ior[i] = m.ior;
+            alpha[i] = m.roughness > 0 ? Math.max(m.roughness * m.roughness, MIN_ALPHA) : 0;
         }
     }
 
-    public int count() {
-        return type.length;
+    /** A material as the compiled scene keeps it: its type's BSDF and its values. */
+    public record Parameters(Bsdf bsdf, Vector3d color, double kd, double ks, double kt, double shininess,
+                             double ior, double roughness) {
     }
 
-    public MaterialType type(int m) {
-        return type[m];
+    /** The materials numbered in the order given. */
+    public static Materials of(List<Parameters> materials) {
+        return new Materials(new ArrayList<>(materials));
+    }
+
+    public int count() {
+        return bsdf.length;
+    }
+
+    /** How material m scatters light in the physically based model. */
+    public Bsdf bsdf(int m) {
+        return bsdf[m];
     }
 
     /** Albedo (matte), reflectance at normal incidence (metal) or transmission tint (glass): channel 0, 1, 2. */

@@ -6,6 +6,11 @@ public final class Optics {
     private Optics() {
     }
 
+    /** The ratio of indices a ray meets at a dielectric of index ior: n_incident / n_transmitted. */
+    public static double eta(double ior, boolean entering) {
+        return entering ? 1 / ior : ior;
+    }
+
     /**
      * Exact unpolarised Fresnel reflectance of a smooth dielectric boundary. {@code cosIncident}
      * is the cosine between the incident direction and the normal (>= 0), {@code eta} = n_incident /

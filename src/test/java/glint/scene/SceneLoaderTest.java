@@ -78,7 +78,7 @@ class SceneLoaderTest {
     void objectWithoutMaterialIsMatte() throws InputException {
         Scene scene = parse("objects:\n  - {type: sphere, center: [0, 0, 0], radius: 1}\n");
         Material m = material(scene, 0);
-        assertEquals(Material.preset(MaterialType.MATTE), m);
+        assertEquals(MaterialType.MATTE.preset(), m);
         assertEquals(MaterialType.MATTE, m.type());
         assertEquals(v(0.8, 0.8, 0.8), m.color());
     }
@@ -274,10 +274,10 @@ class SceneLoaderTest {
                   - {type: plane, point: [0, 0, 0], normal: [0, 1, 0], material: {type: glass, kt: 0.5}}
                   - {type: plane, point: [0, 0, 0], normal: [0, 1, 0], material: {type: matte, color: [0.5, 0.5, 0.5]}}
                 """);
-        Material glass = Material.preset(MaterialType.GLASS);
+        Material glass = MaterialType.GLASS.preset();
         assertEquals(new Material(MaterialType.GLASS, glass.color(), glass.kd(), glass.ks(), 0.5, glass.shininess(),
                 glass.ior(), glass.roughness()), material(scene, 0));
-        Material matte = Material.preset(MaterialType.MATTE);
+        Material matte = MaterialType.MATTE.preset();
         assertEquals(new Material(MaterialType.MATTE, v(0.5, 0.5, 0.5), matte.kd(), matte.ks(), matte.kt(),
                 matte.shininess(), matte.ior(), matte.roughness()), material(scene, 1));
     }
@@ -354,7 +354,7 @@ class SceneLoaderTest {
         assertEquals(Camera.defaults(), scene.camera());
         Light.Directional sun = (Light.Directional) scene.lights().get(1);
         assertVector(v(0, -1, 0.2).normalize(), sun.direction());
-        assertEquals(Material.preset(MaterialType.GLASS), material(scene, 1));
+        assertEquals(MaterialType.GLASS.preset(), material(scene, 1));
     }
 
     // ---------------------------------------------------------------- shipped scenes

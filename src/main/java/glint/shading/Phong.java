@@ -1,49 +1,41 @@
-package glint.render;
-
-import glint.shading.Bsdf;
-import glint.shading.LightSample;
-import glint.shading.Lights;
-import glint.shading.Materials;
-import glint.shading.Surface;
+package glint.shading;
 
 /**
  * The seed's model (SPEC section 4): ka ambient x colour + the sum over lights of (kd colour E n.l
- * + ks E (r.v)^shininess), + ks I_reflected + kt colour I_transmitted, with ka = kd. A shadow ray
- * passes kt of the light through each glass object it meets.
+ * + ks E (r.v)^shininess), + ks I_reflected + kt colour I_transmitted, with ka = kd, whatever the
+ * material's type. A shadow ray passes kt of the light through each object whose material
+ * transmits light.
  */
-final class Phong implements ShadingModel {
+public final class Phong implements ShadingModel {
 
     @Override
-    public void shade(Integrator it, PathVertex v, double dx, double dy, double dz, int hitsLeft, double weight) {
-        direct(it, v, dx, dy, dz);
-        boundary(it, v);
-        it.scatter(v, dx, dy, dz, hitsLeft, weight);
+    public void shade(ShadingContext c, PathVertex v, double dx, double dy, double dz, int hitsLeft, double weight) {
+        direct(c, v, dx, dy, dz);
+        boundary(c, v);
+        c.scatter(v, dx, dy, dz, hitsLeft, weight);
         v.radiance.set(v.sum.r, v.sum.g, v.sum.b);
     }
 
     /** Ambient, and per light the diffuse term and the highlight, through what the shadow ray passes. */
     @Override
-    public void direct(Integrator it, PathVertex v, double dx, double dy, double dz) {
+    public void direct(ShadingContext c, PathVertex v, double dx, double dy, double dz) {
         Surface s = v.surface;
-        Materials m = it.materials;
+        Materials m = c.materials();
         int material = s.material;
-        double diffuseR = it.ambientR(), diffuseG = it.ambientG(), diffuseB = it.ambientB();
+        double diffuseR = c.ambient(0), diffuseG = c.ambient(1), diffuseB = c.ambient(2);
         double specR = 0, specG = 0, specB = 0;
         LightSample light = v.light;
-        Lights lights = it.lights;
+        Lights lights = c.lights();
         for (int i = 0; i < lights.count(); i++) {
-            double cosLight = lights.sample(i, s.px, s.py, s.pz, s.nx, s.ny, s.nz, light);
-            if (!(cosLight > 0)) { // NaN too: no light from an undefined direction
+            double pass = c.lightReaching(s, i, light);
+            if (!(pass > 0)) {
                 continue;
             }
-            double pass = it.transmittance(s, light, i);
-            if (pass == 0) {
-                continue;
-            }
+            double cosLight = light.cosine;
             diffuseR += pass * light.irradianceR * cosLight;
             diffuseG += pass * light.irradianceG * cosLight;
             diffuseB += pass * light.irradianceB * cosLight;
-            double cosReflectView = Bsdf.phongCosReflectView(s, light, cosLight, dx, dy, dz);
+            double cosReflectView = cosReflectView(s, light, dx, dy, dz);
             if (cosReflectView > 0) {
                 double highlight = pass * Math.pow(cosReflectView, m.shininess(material));
                 specR += highlight * light.irradianceR;
@@ -58,14 +50,23 @@ final class Phong implements ShadingModel {
 
     /** ks of the light reflected, kt x colour of the light refracted, whatever the angle. */
     @Override
-    public void boundary(Integrator it, PathVertex v) {
-        Materials m = it.materials;
+    public void boundary(ShadingContext c, PathVertex v) {
+        Materials m = c.materials();
         int material = v.surface.material;
         double kt = m.kt(material);
-        v.eta = Bsdf.eta(m.ior(material), v.surface.front);
+        v.eta = Optics.eta(m.ior(material), v.surface.front);
         v.reflect = m.ks(material);
         v.transmitR = kt * m.color(material, 0);
         v.transmitG = kt * m.color(material, 1);
         v.transmitB = kt * m.color(material, 2);
+    }
+
+    /**
+     * The highlight's cosine: r.v with r the light direction mirrored about n and v = -d (raise it
+     * to the shininess where positive).
+     */
+    private static double cosReflectView(Surface s, LightSample l, double dx, double dy, double dz) {
+        double k = 2 * l.cosine;
+        return -((k * s.nx - l.dirX) * dx + (k * s.ny - l.dirY) * dy + (k * s.nz - l.dirZ) * dz);
     }
 }

@@ -1,0 +1,25 @@
+package glint.shading;
+
+/** A point light (its vector the position): inverse-square irradiance along the direction to it. */
+public final class PointLightSampler implements LightSampler {
+
+    @Override
+    public boolean sample(double[] vector, double[] power, int at, double px, double py, double pz,
+                          LightSample out) {
+        double lx = vector[at] - px, ly = vector[at + 1] - py, lz = vector[at + 2] - pz;
+        double distance2 = lx * lx + ly * ly + lz * lz;
+        if (distance2 == 0) {
+            return false;
+        }
+        double inv = 1 / Math.sqrt(distance2);
+        out.distance = distance2 * inv;
+        out.dirX = lx * inv;
+        out.dirY = ly * inv;
+        out.dirZ = lz * inv;
+        double scale = inv * inv;
+        out.irradianceR = power[at] * scale;
+        out.irradianceG = power[at + 1] * scale;
+        out.irradianceB = power[at + 2] * scale;
+        return true;
+    }
+}
