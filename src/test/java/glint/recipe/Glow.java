@@ -1,0 +1,27 @@
+package glint.recipe;
+
+import glint.math.Vector3d;
+import glint.scene.MaterialType;
+import glint.shading.Bsdf;
+import glint.shading.PathVertex;
+import glint.shading.ShadingContext;
+
+/**
+ * A material type added by the recipe of docs/architecture.md, in test sources only: a surface
+ * that sends back its colour as radiance, whatever lights it, and sends no rays on.
+ */
+final class Glow implements Bsdf {
+
+    /** {@code {type: glow, color: [r, g, b]}}; its preset glows white. */
+    static final MaterialType TYPE = new MaterialType("glow", new Glow(), Vector3d.ONE, 0, 0, 0, 1);
+
+    @Override
+    public void direct(ShadingContext c, PathVertex v, double dx, double dy, double dz) {
+        int m = v.surface.material;
+        v.sum.set(c.materials().color(m, 0), c.materials().color(m, 1), c.materials().color(m, 2));
+    }
+
+    @Override
+    public void scatter(ShadingContext c, PathVertex v, double dx, double dy, double dz, int hitsLeft, double weight) {
+    }
+}

@@ -1,0 +1,84 @@
+package glint.recipe;
+
+import static org.junit.jupiter.api.Assertions.assertEquals;
+import static org.junit.jupiter.api.Assertions.assertTrue;
+
+import glint.render.FrameBuffer;
+import glint.scene.Registry;
+import org.junit.jupiter.api.Test;
+
+/** The primitive-kind recipe followed in test sources: a disc read, compiled and rendered. */
+class KindRecipeTest {
+
+    private static final Registry REGISTRY = Registry.STANDARD.with(Disc.TYPE);
+
+    /**
+     * A matte disc of albedo (0.5, 0.25, 1) facing the camera at z = 5, radius 1, under a
+     * directional light of intensity 2 shining along its normal, before a background.
+     */
+    private static final String SCENE = """
+            camera: {position: [0, 0, 0], look_at: [0, 0, 1], fov: 40}
+            background: [0.1, 0.2, 0.3]
+            lights:
+              - {type: directional, direction: [0, 0, 1], intensity: 2}
+            objects:
+              - {type: disc, center: [0, 0, 5], normal: [0, 0, -1], radius: 1, material: {type: matte, color: [0.5, 0.25, 1]}}
+            """;
+
+    @Test
+    void aDiscShowsLambertRadianceInsideItsRadiusAndTheBackgroundOutside() {
+        int w = 40, h = 30;
+        FrameBuffer frame = Recipes.render(REGISTRY, SCENE, w, h, 1);
+        int inside = 0, outside = 0;
+        for (int y = 0; y < h; y++) {
+            for (int x = 0; x < w; x++) {
+                double[] d = Recipes.cameraRay(40, w, h, x, y);
+                double t = 5 / d[2];
+                double r = Math.hypot(t * d[0], t * d[1]); // distance from the disc's centre on its plane
+                if (r < 0.98) {
+                    // Lambert: albedo / pi x irradiance 2 x cos 1
+                    assertEquals(0.5 / Math.PI * 2, frame.get(x, y, 0), 1e-6);
+                    assertEquals(0.25 / Math.PI * 2, frame.get(x, y, 1), 1e-6);
+                    assertEquals(1 / Math.PI * 2, frame.get(x, y, 2), 1e-6);
+                    inside++;
+                } else if (r > 1.02) {
+                    assertEquals(0.1f, frame.get(x, y, 0));
+                    assertEquals(0.3f, frame.get(x, y, 2));
+                    outside++;
+                }
+            }
+        }
+        assertTrue(inside > 20 && outside > 20, inside + " pixels inside, " + outside + " outside");
+    }
+
+    @Test
+    void aDiscCastsAShadowAndMeetsTheOtherKindsInOneSearch() {
+        // the disc between the light and a floor: the floor below it is dark, beside it lit
+        String yaml = """
+                camera: {position: [0, 6, 0], look_at: [0, 0, 0.001], fov: 60}
+                lights:
+                  - {type: directional, direction: [0, -1, 0], intensity: 1}
+                objects:
+                  - {type: disc, center: [0, 2, 0], normal: [0, 1, 0], radius: 1}
+                  - {type: plane, point: [0, 0, 0], normal: [0, 1, 0], material: {type: matte, color: [1, 1, 1]}}
+                  - {type: sphere, center: [3, 1, 0], radius: 0.5}
+                """;
+        FrameBuffer frame = Recipes.render(REGISTRY, yaml, 41, 41, 1);
+        // straight down the middle the disc itself is seen, lit from above: 0.8 / pi (matte preset)
+        assertEquals(0.8 / Math.PI, frame.get(20, 20, 0), 1e-6);
+        // the floor near the image's corner lies outside the disc's shadow and is lit: 1 / pi
+        assertEquals(1 / Math.PI, frame.get(3, 3, 0), 1e-6);
+    }
+
+    @Test
+    void aDiscIsReadWithTheLoadersChecksAndMessages() {
+        assertEquals("recipe.yaml:2:5: missing required key 'radius' in disc",
+                Recipes.error(REGISTRY, "objects:\n  - {type: disc, center: [0, 0, 5], normal: [0, 0, 1]}\n"));
+        assertEquals("recipe.yaml:2:56: unknown key 'raduis' in disc (did you mean 'radius'?)",
+                Recipes.error(REGISTRY, "objects:\n  - {type: disc, center: [0, 0, 5], normal: [0, 0, 1], raduis: 1}\n"));
+        assertEquals("recipe.yaml:2:12: unknown object type 'disk' (did you mean 'disc'?)",
+                Recipes.error(REGISTRY, "objects:\n  - {type: disk, center: [0, 0, 5]}\n"));
+        assertEquals("recipe.yaml:2:56: normal must not be the zero vector",
+                Recipes.error(REGISTRY, "objects:\n  - {type: disc, center: [0, 0, 5], radius: 1, normal: [0, 0, 0]}\n"));
+    }
+}
