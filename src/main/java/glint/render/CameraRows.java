@@ -3,6 +3,7 @@ package glint.render;
 import glint.accel.Candidates;
 import glint.accel.Frustum;
 import glint.geometry.Primitives;
+import glint.shading.Rgb;
 
 /**
  * The camera rays of one tile row, per worker: their unit directions (world space), aimed for the
@@ -21,12 +22,12 @@ final class CameraRows {
     private CameraBasis camera;
     private int width, x0, x1, side, firstSample, sampleCount, frameIndex;
 
-    // one coordinate an array
+    /** The row's ray directions, one coordinate an array; written only here, read by tests. */
     double[] dirX = new double[0], dirY = new double[0], dirZ = new double[0];
-    double[] radianceR = new double[0], radianceG = new double[0], radianceB = new double[0];
-    /** Each ray's nearest hit, where the row's hits are found before they are shaded: distance and primitive. */
-    double[] hitT = new double[0];
-    int[] hitPrimitive = new int[0];
+    private double[] radianceR = new double[0], radianceG = new double[0], radianceB = new double[0];
+    /** Each ray's nearest hit, found for the whole row before any is shaded: distance and primitive. */
+    private double[] hitT = new double[0];
+    private int[] hitPrimitive = new int[0];
     /** Screen x of the centres of the tile's pixels, shared by its rows (with one sample a pixel). */
     private double[] centreX = new double[0];
 
@@ -192,6 +193,32 @@ final class CameraRows {
         dirX[ray] = dx * inv;
         dirY[ray] = dy * inv;
         dirZ[ray] = dz * inv;
+    }
+
+    /**
+     * Traces the aimed camera rays of row y into their radiance: first every ray's nearest hit
+     * (among {@code candidates} when given, else in the aggregate), then each hit shaded with
+     * {@code hitsLeft} hits. Ray i is sample {@code firstSample + i % sampleCount} of pixel
+     * {@code x0 + i / sampleCount}, and its (pixel, frame, sample) seeds its path's random decisions.
+     */
+    void trace(Integrator integrator, Candidates candidates, int y, int hitsLeft) {
+        CameraBasis eye = camera;
+        int rays = (x1 - x0) * sampleCount;
+        integrator.findCameraHits(candidates, eye.eyeX, eye.eyeY, eye.eyeZ, dirX, dirY, dirZ, rays, hitT,
+                hitPrimitive);
+        int pixel = y * width + x0, sample = firstSample, end = firstSample + sampleCount;
+        for (int ray = 0; ray < rays; ray++) {
+            integrator.beginPath(pixel, frameIndex, sample);
+            Rgb radiance = integrator.shadeCamera(hitPrimitive[ray], hitT[ray], eye.eyeX, eye.eyeY, eye.eyeZ,
+                    dirX[ray], dirY[ray], dirZ[ray], hitsLeft);
+            radianceR[ray] = radiance.r;
+            radianceG[ray] = radiance.g;
+            radianceB[ray] = radiance.b;
+            if (++sample == end) {
+                sample = firstSample;
+                pixel++;
+            }
+        }
     }
 
     /** Writes into the frame the average of each pixel's traced samples, the tile's pixels of row y. */

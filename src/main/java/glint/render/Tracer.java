@@ -210,10 +210,6 @@ public final class Tracer implements AutoCloseable {
         cancelled = true;
     }
 
-    public boolean isCancelled() {
-        return cancelled;
-    }
-
     @Override
     public void close() {
         pool.shutdownNow();
