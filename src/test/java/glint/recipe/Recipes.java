@@ -5,6 +5,7 @@ import glint.input.InputException;
 import glint.render.FrameBuffer;
 import glint.render.RenderScene;
 import glint.render.RenderSettings;
+import glint.render.Renders;
 import glint.render.Tracer;
 import glint.scene.Registry;
 import glint.scene.Scene;
@@ -46,16 +47,8 @@ final class Recipes {
         return frame;
     }
 
-    /**
-     * The unit direction of the camera ray through the centre of pixel (x, y) for a camera at the
-     * origin looking along +z with up +y, from the definition: the image plane at z = 1 spans x in
-     * [-tan(fov/2), tan(fov/2)], +x to the right, +y up.
-     */
+    /** The camera ray through pixel (x, y) of a camera at the origin looking along +z ({@link Renders#axisCameraRay}). */
     static double[] cameraRay(double fovDegrees, int width, int height, int x, int y) {
-        double half = Math.tan(Math.toRadians(fovDegrees) / 2);
-        double sx = ((x + 0.5) / width * 2 - 1) * half;
-        double sy = (1 - (y + 0.5) / height * 2) * half * height / width;
-        double len = Math.sqrt(sx * sx + sy * sy + 1);
-        return new double[] {sx / len, sy / len, 1 / len};
+        return Renders.axisCameraRay(fovDegrees, width, height, x, y);
     }
 }

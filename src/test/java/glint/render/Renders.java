@@ -6,7 +6,7 @@ import glint.scene.Scene;
 import glint.scene.SceneLoader;
 
 /** Test helper: parse a scene text and render it. */
-final class Renders {
+public final class Renders {
 
     static final double EPSILON = 1e-9;
 
@@ -48,7 +48,7 @@ final class Renders {
      * origin looking along +z with up +y, computed from the definition: the image plane at z = 1
      * spans x in [-tan(fov/2), tan(fov/2)], +x to the right, +y up.
      */
-    static double[] axisCameraRay(double fovDegrees, int width, int height, int x, int y) {
+    public static double[] axisCameraRay(double fovDegrees, int width, int height, int x, int y) {
         double half = Math.tan(Math.toRadians(fovDegrees) / 2);
         double sx = ((x + 0.5) / width * 2 - 1) * half;
         double sy = (1 - (y + 0.5) / height * 2) * half * height / width;
