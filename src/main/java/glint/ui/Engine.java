@@ -4,7 +4,6 @@ import glint.config.Config;
 import glint.input.InputException;
 import glint.scene.Camera;
 import glint.scene.Scene;
-import java.awt.image.BufferedImage;
 import java.io.PrintWriter;
 import java.util.concurrent.CountDownLatch;
 import java.util.concurrent.TimeUnit;
@@ -24,10 +23,11 @@ import java.util.concurrent.TimeUnit;
  * {@code max_image_pixels} (or than half the heap can hold) is rendered smaller and scaled up.
  *
  * <p>The loop is this class; the rest is in its parts, each on the engine thread unless it says otherwise:
- * {@link SceneView} (the scene, camera, settings and refinement), {@link FrameSize} (the window's size and the
- * frame budget), {@link StatusLine} (the overlay's messages), {@link FrameOutput} (frames to the presenter),
- * {@link Commands} (the command keys), {@link Captures} (screenshots and stills), {@link SceneBrowser}
- * (Page Down and Page Up) and {@link Reloads} (F5 and the scene watcher's changes).
+ * {@link SceneView} (the scene, camera, settings and refinement), {@link FrameSize} (the window's size and
+ * the frame budget), {@link StatusLine} (the overlay's messages), {@link FrameMaker} (rendering frames, and
+ * their faults), {@link FrameOutput} (frames to the presenter), {@link Commands} (the command keys),
+ * {@link Captures} (screenshots and stills), {@link SceneBrowser} (Page Down and Page Up) and {@link Reloads}
+ * (F5 and the scene watcher's changes).
  */
 public final class Engine implements Runnable, SceneWatcher.Listener {
 
@@ -43,16 +43,13 @@ public final class Engine implements Runnable, SceneWatcher.Listener {
     private final Presenter presenter;
     private final Clock clock;
     private final PrintWriter err;
-    private final ResolutionGovernor governor;
-    private final FrameRenderer renderer;
-    private final RefinePacing pacing = new RefinePacing();
-    private final RenderFaults faults = new RenderFaults();
     private final CountDownLatch finished = new CountDownLatch(1);
 
     private final StatusLine status;
     private final FrameSize size;
     private final SceneView view;
     private final FrameOutput frames;
+    private final FrameMaker maker;
     private final Captures captures;
     private final Reloads reloads;
     private final Commands commands;
@@ -76,12 +73,14 @@ public final class Engine implements Runnable, SceneWatcher.Listener {
         this.err = err;
         CameraController controller = new CameraController(scene.camera(), config.moveSpeed(), config.turnSpeed());
         controller.setFreeFlight(config.freeFlight());
-        this.governor = new ResolutionGovernor(config.targetFps(), config.displayScale());
-        this.renderer = new FrameRenderer(config.effectiveThreads(), config.screenDivider(), trace);
+        FrameRenderer renderer = new FrameRenderer(config.effectiveThreads(), config.screenDivider(), trace);
+        RenderFaults faults = new RenderFaults();
         this.status = new StatusLine(err);
         this.size = new FrameSize(input.viewWidth(), input.viewHeight(), status, err);
         this.view = new SceneView(new ViewSettings(config, source.flags()), controller, status);
         this.frames = new FrameOutput(presenter, view, size, status, source, renderer, faults, err);
+        this.maker = new FrameMaker(renderer, new ResolutionGovernor(config.targetFps(), config.displayScale()),
+                faults, view, size, frames, status, clock, err);
         this.captures = new Captures(screenshots, new StillRender(input::signal), view, size, source,
                 frames::lastImage, err);
         this.reloads = new Reloads(source, view, status, this::configure, input::signal);
@@ -137,7 +136,7 @@ public final class Engine implements Runnable, SceneWatcher.Listener {
 
     /** Traces about {@code nanos} of still passes in one go while passes are quicker ({@link RefinePacing}). */
     void paceRefinement(long nanos) {
-        pacing.interval(nanos);
+        maker.paceRefinement(nanos);
     }
 
     /** Waits until {@link #run} has returned. */
@@ -148,7 +147,7 @@ public final class Engine implements Runnable, SceneWatcher.Listener {
     /** Frees the render threads when the loop was driven by {@link #step} alone (tests). */
     public void close() {
         captures.close();
-        renderer.close();
+        maker.close();
     }
 
     /** The watcher's thread: a new version of the scene file loaded; the engine shows it at its next turn. */
@@ -173,7 +172,7 @@ public final class Engine implements Runnable, SceneWatcher.Listener {
                 try {
                     wait = step();
                 } catch (RuntimeException | OutOfMemoryError e) {
-                    frameFailed(e); // shown and logged once; the frame is tried again
+                    maker.failed(e); // shown and logged once; the frame is tried again
                     wait = RETRY_NANOS;
                 }
                 if (running && wait > 0) {
@@ -188,7 +187,7 @@ public final class Engine implements Runnable, SceneWatcher.Listener {
         } finally {
             running = false;
             captures.close(); // a still under way is cancelled, and its hidden file deleted, before the end
-            renderer.close();
+            maker.close();
             finished.countDown();
         }
     }
@@ -240,15 +239,15 @@ public final class Engine implements Runnable, SceneWatcher.Listener {
         int samples = view.settings().config.samples();
         boolean moving = moved || in.motionHeld() || start - lastMotion < MOTION_HOLD_NANOS;
         boolean frameDue = moving ? view.needFrame() : view.passesDone() < samples;
-        if (frameDue && start < faults.retryAt()) { // the last try failed: the next one comes when the pause is over
+        if (frameDue && start < maker.retryAt()) { // the last try failed: the next one comes when the pause is over
             frames.presentIfChanged();
-            return faults.retryAt() - start;
+            return maker.retryAt() - start;
         }
         if (moving && view.needFrame()) {
-            return renderMoving(start) ? 0 : faults.retryAt() - clock.nanoTime();
+            return maker.moving(start) ? 0 : maker.retryAt() - clock.nanoTime();
         }
         if (!moving && view.passesDone() < samples) {
-            return renderPass(start) ? 0 : faults.retryAt() - clock.nanoTime();
+            return maker.pass(start) ? 0 : maker.retryAt() - clock.nanoTime();
         }
         if (moving) { // nothing new to draw yet: wait for input, or for the end of the motion hold
             frames.presentIfChanged();
@@ -258,77 +257,13 @@ public final class Engine implements Runnable, SceneWatcher.Listener {
         return IDLE;
     }
 
-    /** Renders and shows a moving frame; false if it failed (shown, and tried again later). */
-    private boolean renderMoving(long start) {
-        ResolutionGovernor.Size s = size.fit(governor.scale());
-        BufferedImage image;
-        try {
-            image = renderer.renderMoving(view.compiled(), s.width(), s.height());
-        } catch (RuntimeException | OutOfMemoryError e) {
-            frameFailed(e);
-            frames.presentStatus();
-            return false;
-        }
-        view.movingFrameShown();
-        long end = clock.nanoTime();
-        governor.frameTook((end - start) / 1e9);
-        rendered();
-        frames.show(image, end, end - start, 1, true);
-        return true;
-    }
-
-    /** Renders and shows the next still pass; false if it failed (shown, and tried again later). */
-    private boolean renderPass(long start) {
-        ResolutionGovernor.Size s = size.fit(1);
-        Config config = view.settings().config;
-        int samples = config.samples();
-        int count = pacing.passes(view.passesDone(), samples, start); // quick passes: several in one go
-        BufferedImage image;
-        try {
-            image = renderer.renderPasses(view.compiled(), s.width(), s.height(), samples, view.passesDone(), count);
-        } catch (RuntimeException | OutOfMemoryError e) {
-            frameFailed(e);
-            frames.presentStatus();
-            return false;
-        }
-        view.passesShown(count);
-        long end = clock.nanoTime();
-        rendered();
-        pacing.passesDone(view.passesDone(), count, samples, start, end, s, config.debug() ? err : null);
-        frames.show(image, end, end - start, view.passesDone(), false);
-        return true;
-    }
-
-    /**
-     * A frame could not be made. The last good frame stays on screen; the overlay says why; standard error
-     * says so once, not once a frame; the frame is tried again after {@link #RETRY_NANOS}, input or not.
-     */
-    private void frameFailed(Throwable e) {
-        String line = faults.failed(e, clock.nanoTime());
-        if (line != null) {
-            err.println(line);
-        }
-        view.frameFailed();
-        status.changed();
-    }
-
-    /** A frame was made: a run of failures, if any, is over. */
-    private void rendered() {
-        String line = faults.rendered();
-        if (line != null) {
-            err.println(line);
-            status.note("rendering works again");
-        }
-    }
-
     /** F5 read the config again: every part takes its settings. */
     private void configure(Config c) {
         CameraController controller = view.controller();
         view.settings().configFile(c, view.scene());
         controller.setSpeeds(c.moveSpeed(), c.turnSpeed());
         controller.setFreeFlight(c.freeFlight());
-        governor.setLimits(c.targetFps(), c.displayScale());
-        renderer.configure(c.effectiveThreads(), c.screenDivider());
+        maker.configure(c);
         source.limits(c.limits().scene());
         size.check(view.settings().config.limits());
         presenter.title(c.name());
