@@ -1,5 +1,7 @@
 package glint.config;
 
+import java.util.function.Consumer;
+
 /**
  * The settings of config.properties (SPEC section 5), each with a default.
  *
@@ -51,62 +53,102 @@ public record Config(boolean debug, double epsilon, double displayScale, int scr
     }
 
     public Config withSize(int width, int height) {
-        return new Config(debug, epsilon, displayScale, screenDivider, width, height, recursionMax, name,
-                scene, threads, shading, samples, minWeight, moveSpeed, turnSpeed, targetFps, limits, freeFlight);
+        return with(c -> {
+            c.displayWidth = width;
+            c.displayHeight = height;
+        });
     }
 
     public Config withSamples(int newSamples) {
-        return new Config(debug, epsilon, displayScale, screenDivider, displayWidth, displayHeight,
-                recursionMax, name, scene, threads, shading, newSamples, minWeight, moveSpeed, turnSpeed,
-                targetFps, limits, freeFlight);
+        return with(c -> c.samples = newSamples);
     }
 
     public Config withThreads(int newThreads) {
-        return new Config(debug, epsilon, displayScale, screenDivider, displayWidth, displayHeight,
-                recursionMax, name, scene, newThreads, shading, samples, minWeight, moveSpeed, turnSpeed,
-                targetFps, limits, freeFlight);
+        return with(c -> c.threads = newThreads);
     }
 
     public Config withRecursionMax(int depth) {
-        return new Config(debug, epsilon, displayScale, screenDivider, displayWidth, displayHeight,
-                depth, name, scene, threads, shading, samples, minWeight, moveSpeed, turnSpeed, targetFps, limits,
-                freeFlight);
+        return with(c -> c.recursionMax = depth);
     }
 
     public Config withShading(Shading model) {
-        return new Config(debug, epsilon, displayScale, screenDivider, displayWidth, displayHeight,
-                recursionMax, name, scene, threads, model, samples, minWeight, moveSpeed, turnSpeed,
-                targetFps, limits, freeFlight);
+        return with(c -> c.shading = model);
     }
 
     public Config withScreenDivider(int divider) {
-        return new Config(debug, epsilon, displayScale, divider, displayWidth, displayHeight,
-                recursionMax, name, scene, threads, shading, samples, minWeight, moveSpeed, turnSpeed,
-                targetFps, limits, freeFlight);
+        return with(c -> c.screenDivider = divider);
     }
 
     public Config withMinWeight(double weight) {
-        return new Config(debug, epsilon, displayScale, screenDivider, displayWidth, displayHeight,
-                recursionMax, name, scene, threads, shading, samples, weight, moveSpeed, turnSpeed,
-                targetFps, limits, freeFlight);
+        return with(c -> c.minWeight = weight);
     }
 
     public Config withScene(String sceneFile) {
-        return new Config(debug, epsilon, displayScale, screenDivider, displayWidth, displayHeight,
-                recursionMax, name, sceneFile, threads, shading, samples, minWeight, moveSpeed, turnSpeed,
-                targetFps, limits, freeFlight);
+        return with(c -> c.scene = sceneFile);
     }
 
     public Config withLimits(Limits newLimits) {
-        return new Config(debug, epsilon, displayScale, screenDivider, displayWidth, displayHeight,
-                recursionMax, name, scene, threads, shading, samples, minWeight, moveSpeed, turnSpeed,
-                targetFps, newLimits, freeFlight);
+        return with(c -> c.limits = newLimits);
     }
 
     public Config withFreeFlight(boolean free) {
-        return new Config(debug, epsilon, displayScale, screenDivider, displayWidth, displayHeight,
-                recursionMax, name, scene, threads, shading, samples, minWeight, moveSpeed, turnSpeed,
-                targetFps, limits, free);
+        return with(c -> c.freeFlight = free);
+    }
+
+    /** This config with the fields {@code change} sets, the others as they are. */
+    private Config with(Consumer<Copy> change) {
+        Copy copy = new Copy(this);
+        change.accept(copy);
+        return copy.build();
+    }
+
+    /** A config's fields to change a few of: read from one config, made into another by {@link #build}. */
+    private static final class Copy {
+        boolean debug;
+        double epsilon;
+        double displayScale;
+        int screenDivider;
+        int displayWidth;
+        int displayHeight;
+        int recursionMax;
+        String name;
+        String scene;
+        int threads;
+        Shading shading;
+        int samples;
+        double minWeight;
+        double moveSpeed;
+        double turnSpeed;
+        double targetFps;
+        Limits limits;
+        boolean freeFlight;
+
+        Copy(Config c) {
+            debug = c.debug;
+            epsilon = c.epsilon;
+            displayScale = c.displayScale;
+            screenDivider = c.screenDivider;
+            displayWidth = c.displayWidth;
+            displayHeight = c.displayHeight;
+            recursionMax = c.recursionMax;
+            name = c.name;
+            scene = c.scene;
+            threads = c.threads;
+            shading = c.shading;
+            samples = c.samples;
+            minWeight = c.minWeight;
+            moveSpeed = c.moveSpeed;
+            turnSpeed = c.turnSpeed;
+            targetFps = c.targetFps;
+            limits = c.limits;
+            freeFlight = c.freeFlight;
+        }
+
+        Config build() {
+            return new Config(debug, epsilon, displayScale, screenDivider, displayWidth, displayHeight, recursionMax,
+                    name, scene, threads, shading, samples, minWeight, moveSpeed, turnSpeed, targetFps, limits,
+                    freeFlight);
+        }
     }
 
     /** True when n is 1, 4, 9, 16, ... */
