@@ -122,7 +122,7 @@ class EngineStillTest {
 
     @Test
     void theSameKeyOrEscCancelsAndNothingIsWritten() throws Exception {
-        open(1024); // long enough to be cancelled while it runs
+        open(4096); // long enough to be cancelled while it runs, even on a loaded machine
         input.resize(640, 480);
         input.command(Action.RENDER_STILL);
         stepUntil("still: rendering");
