@@ -1,6 +1,5 @@
 package glint.accel;
 
-import glint.geometry.PrimitiveKind;
 import glint.geometry.Hit;
 import java.util.Arrays;
 
@@ -18,82 +17,43 @@ abstract class CellFilter extends AggregateFilter {
     private final int k;
     /** Per cell, its listing ({@link CellMaps#cell}): first slot and count, or -1: fall back. */
     final int[] cell;
-    /** The cells' lists of primitive numbers, and per slot the primitive's kind and index within it. */
-    private final int[] listed, listedIndex;
-    private final PrimitiveKind[] listedKind;
-    private final int[] unbounded, unboundedIndex;
-    private final PrimitiveKind[] unboundedKind;
+    /** The cells' lists, one run of slots a cell. */
+    private final PrimitiveSlots listed;
+    private final PrimitiveSlots unbounded;
 
     CellFilter(Aggregate searched, CellMaps maps) {
         super(searched);
         this.k = maps.k;
         this.cell = Arrays.copyOf(maps.cell, maps.cells);
-        this.listed = Arrays.copyOf(maps.listed, maps.slots);
-        this.listedKind = primitives.kindsOf(listed);
-        this.listedIndex = primitives.indicesOf(listed);
-        this.unbounded = primitives.unbounded();
-        this.unboundedKind = primitives.kindsOf(unbounded);
-        this.unboundedIndex = primitives.indicesOf(unbounded);
+        this.listed = new PrimitiveSlots(primitives, Arrays.copyOf(maps.listed, maps.slots));
+        this.unbounded = new PrimitiveSlots(primitives, primitives.unbounded());
     }
 
     /**
-     * The nearest hit among the unbounded primitives (but skip) and the list of a cell's
-     * {@code listing}, in that fixed order, as the hierarchy tests them.
+     * The nearest hit among the unbounded primitives and the list of a cell's {@code listing} (but
+     * skip), in that fixed order, as the hierarchy tests them.
      */
     final boolean nearestListed(double ox, double oy, double oz, double dx, double dy, double dz, double tMax,
                                 int skip, int listing, Hit hit) {
-        double nearest = tMax;
-        int found = Hit.NONE;
-        for (int i = 0; i < unbounded.length; i++) {
-            if (unbounded[i] != skip) {
-                double t = unboundedKind[i].intersect(unboundedIndex[i], ox, oy, oz, dx, dy, dz, nearest);
-                if (t < nearest) {
-                    nearest = t;
-                    found = unbounded[i];
-                }
-            }
-        }
-        for (int slot = listing >>> CellMaps.COUNT_BITS, end = slot + (listing & COUNT_MASK); slot < end; slot++) {
-            double t = listedKind[slot].intersect(listedIndex[slot], ox, oy, oz, dx, dy, dz, nearest);
-            if (t < nearest) {
-                nearest = t;
-                found = listed[slot];
-            }
-        }
-        if (found == Hit.NONE) {
-            return false;
-        }
-        primitives.record(hit, found, nearest);
-        return true;
+        double nearest = unbounded.nearest(0, unbounded.count(), ox, oy, oz, dx, dy, dz, tMax, skip, hit);
+        int first = listing >>> CellMaps.COUNT_BITS;
+        return listed.nearest(first, first + (listing & COUNT_MASK), ox, oy, oz, dx, dy, dz, nearest, skip, hit) < tMax;
     }
 
     /**
-     * The light passed along the ray through the unbounded primitives (but skip) and the list of a
-     * cell's {@code listing}: the product of {@code pass} over those it meets before tMax, 0 as
-     * soon as one passes nothing.
+     * The light passed along the ray through the unbounded primitives and the list of a cell's
+     * {@code listing} (but skip): the product of {@code pass} over those it meets before tMax, 0
+     * as soon as one passes nothing.
      */
     final double transmittanceListed(double ox, double oy, double oz, double dx, double dy, double dz, double tMax,
                                      int skip, int listing, double[] pass) {
-        double passed = 1;
-        for (int i = 0; i < unbounded.length; i++) {
-            int q = unbounded[i];
-            if (q != skip && unboundedKind[i].intersect(unboundedIndex[i], ox, oy, oz, dx, dy, dz, tMax) < tMax) {
-                passed *= pass[q];
-                if (passed == 0) {
-                    return 0;
-                }
-            }
+        double passed = unbounded.transmittance(0, unbounded.count(), ox, oy, oz, dx, dy, dz, tMax, skip, pass, 1);
+        if (passed == 0) {
+            return 0;
         }
-        for (int slot = listing >>> CellMaps.COUNT_BITS, end = slot + (listing & COUNT_MASK); slot < end; slot++) {
-            int q = listed[slot];
-            if (q != skip && listedKind[slot].intersect(listedIndex[slot], ox, oy, oz, dx, dy, dz, tMax) < tMax) {
-                passed *= pass[q];
-                if (passed == 0) {
-                    return 0;
-                }
-            }
-        }
-        return passed;
+        int first = listing >>> CellMaps.COUNT_BITS;
+        return listed.transmittance(first, first + (listing & COUNT_MASK), ox, oy, oz, dx, dy, dz, tMax, skip, pass,
+                passed);
     }
 
     /**
@@ -131,6 +91,6 @@ abstract class CellFilter extends AggregateFilter {
     /** How many cells fall back, and how many primitives the cells list in all. */
     final String cellCounts() {
         long fallBack = Arrays.stream(cell).filter(listing -> listing < 0).count();
-        return fallBack + " of " + cell.length + " cells fall back, " + listed.length + " listed";
+        return fallBack + " of " + cell.length + " cells fall back, " + listed.count() + " listed";
     }
 }
