@@ -10,7 +10,7 @@ import java.util.Arrays;
  */
 final class BvhBuilder {
 
-    private static final int BINS = 12;
+    private static final int BINS = AggregatePolicy.BVH_BINS;
 
     private final int leafSize;
     private final int[] order;

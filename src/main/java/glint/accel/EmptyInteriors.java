@@ -69,14 +69,12 @@ public final class EmptyInteriors extends AggregateFilter {
     }
 
     /**
-     * PlaneKind times primitives still empty up to which each plane is asked of each primitive; above
-     * it, of groups of them first ({@link Groups}).
+     * As {@link #findEmpty(Primitives)}, adding to {@code pairs[0]} the number of pairs it looked at;
+     * each plane is asked of groups of the primitives still empty ({@link Groups}) once planes times
+     * those primitives are more than {@link AggregatePolicy#EMPTY_PLANE_PAIRS_ONE_BY_ONE}.
      */
-    static final long MOST_PLANE_PAIRS_ONE_BY_ONE = 1 << 16;
-
-    /** As {@link #findEmpty(Primitives)}, adding to {@code pairs[0]} the number of pairs it looked at. */
     static boolean[] findEmpty(Primitives p, long[] pairs) {
-        return findEmpty(p, pairs, MOST_PLANE_PAIRS_ONE_BY_ONE);
+        return findEmpty(p, pairs, AggregatePolicy.EMPTY_PLANE_PAIRS_ONE_BY_ONE);
     }
 
     /** As {@link #findEmpty(Primitives, long[])}, planes asked of groups above {@code onePlaneByOne} pairs. */
@@ -144,7 +142,7 @@ public final class EmptyInteriors extends AggregateFilter {
      * rounding. Far planes are so set aside a group at a time instead of member by member.
      */
     private static final class Groups {
-        static final int LEAF = 8;
+        static final int LEAF = AggregatePolicy.EMPTY_GROUP_LEAF;
         /** Beyond this size or distance, a group's ball is not trusted and its members are asked. */
         static final double LARGEST = 1e150;
 

@@ -263,7 +263,7 @@ class AggregateTest {
                 }
                 int cap = random.nextInt(4) == 0 ? 1 + random.nextInt(3) : 1 + random.nextInt(40);
                 Aggregate cells = LightCells.around(truth, l[0], l[1], l[2], sides[random.nextInt(3)], cap);
-                double reach = LightCells.OFFSET * Math.max(1, Math.sqrt(l[0] * l[0] + l[1] * l[1] + l[2] * l[2]));
+                double reach = AggregatePolicy.SPAWN_MARGIN * Math.max(1, Math.sqrt(l[0] * l[0] + l[1] * l[1] + l[2] * l[2]));
                 for (int i = 0; i < 500; i++) {
                     double[] p = new double[3], n = new double[3];
                     int skip = surfacePoint(random, primitives, l, p, n);
