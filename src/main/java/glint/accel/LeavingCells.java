@@ -7,13 +7,14 @@ import java.util.Arrays;
 /**
  * A filter in front of another aggregate for rays that leave a closed primitive on its outer side
  * (reflected off a metal or glass sphere, or leaving a glass one). For each closed bounded primitive
- * S a cube map of direction cells (6 faces of {@link AggregatePolicy#LEAVING_CELLS} squared) lists the bounded primitives a ray
- * starting within S's bounding ball, travelling in a direction of the cell, could meet; such a ray
- * tests the unbounded primitives and its cell's list instead of searching. A cell that would list
- * more than {@link AggregatePolicy#LEAVING_CELL_CAP} falls back to the search, as does a ray whose origin is not within the
- * ball the cells were worked out for. Worked out once, when the scene is compiled. Shadow rays
- * are searched as usual: answered from the cells, they took 0.90 to 1.02 of the render CPU a frame
- * on the default scene and glass-25 (4 runs), short of 5 %.
+ * S a cube map of direction cells (6 faces of {@link AggregatePolicy#LEAVING_CELLS} squared) lists
+ * the bounded primitives a ray starting within S's bounding ball, travelling in a direction of the
+ * cell, could meet; such a ray tests the unbounded primitives and its cell's list instead of
+ * searching. A cell that would list more than {@link AggregatePolicy#LEAVING_CELL_CAP} falls back
+ * to the search, as does a ray whose origin is not within the ball the cells were worked out for
+ * (S's bounding ball widened by {@link AggregatePolicy#SPAWN_MARGIN}). Worked out once, when the
+ * scene is compiled. Shadow rays are searched as usual: answered from the cells, they took 0.90 to
+ * 1.02 of the render CPU a frame on the default scene and glass-25 (4 runs), short of 5 %.
  */
 public final class LeavingCells extends CellFilter {
 
