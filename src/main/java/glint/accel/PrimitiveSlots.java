@@ -6,9 +6,9 @@ import glint.geometry.Primitives;
 
 /**
  * Primitives in slots, each slot keeping the primitive's number, its kind and its index within the
- * kind, so that a test calls its kind straight away: a {@link Bvh}'s leaves, the cells' lists of a
- * {@link CellFilter}, and the unbounded primitives every ray tests. A query tests a run of slots
- * [from, end) in their order.
+ * kind, so that a test calls its kind straight away: a {@link Bvh}'s leaves, and the unbounded
+ * primitives every ray tests (in the hierarchy and in a {@link CellFilter}). A query tests a run of
+ * slots [from, end) in their order.
  */
 final class PrimitiveSlots {
 
