@@ -86,7 +86,8 @@ public final class FixedEpsilonModel {
                     (float) ox, (float) oy, (float) oz, (float) dx, (float) dy, (float) dz);
             return t;
         }
-        return glint.geometry.Intersect.sphere(s[0], s[1], s[2], s[3], ox, oy, oz, dx, dy, dz);
+        return glint.geometry.Intersect.sphereBefore(s[0], s[1], s[2], s[3], ox, oy, oz, dx, dy, dz,
+                glint.geometry.Intersect.MISS);
     }
 
     /** The plane y = floorY: t = (floorY - oy) / dy, or a miss. */

@@ -78,14 +78,16 @@ public final class ShadowTruth {
                     if (Math.abs(lineDistance(s, ex, ey, ez, d) - s[3]) < MARGIN) {
                         nearSilhouette = true;
                     }
-                    double t = Intersect.sphere(s[0], s[1], s[2], s[3], ex, ey, ez, d[0], d[1], d[2]);
+                    double t = Intersect.sphereBefore(s[0], s[1], s[2], s[3], ex, ey, ez, d[0], d[1], d[2],
+                            Intersect.MISS);
                     if (t < best) {
                         best = t;
                         hitSphere = s;
                     }
                 }
                 if (scene.hasFloor()) {
-                    double t = Intersect.plane(0, 1, 0, scene.floorY(), ex, ey, ez, d[0], d[1], d[2]);
+                    double t = Intersect.planeBefore(0, 1, 0, scene.floorY(), ex, ey, ez, d[0], d[1], d[2],
+                            Intersect.MISS);
                     if (t < best) {
                         best = t;
                         hitSphere = null;

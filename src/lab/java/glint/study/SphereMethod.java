@@ -44,7 +44,7 @@ public enum SphereMethod {
             case STABLE_FLOAT -> widen(FloatSphere.stable((float) cx, (float) cy, (float) cz, (float) r,
                     (float) ox, (float) oy, (float) oz, (float) dx, (float) dy, (float) dz));
             case NAIVE_DOUBLE -> sphereNaive(cx, cy, cz, r, ox, oy, oz, dx, dy, dz);
-            case STABLE_DOUBLE -> Intersect.sphere(cx, cy, cz, r, ox, oy, oz, dx, dy, dz);
+            case STABLE_DOUBLE -> Intersect.sphereBefore(cx, cy, cz, r, ox, oy, oz, dx, dy, dz, Intersect.MISS);
         };
     }
 

@@ -2,10 +2,12 @@ package glint.accel;
 
 import glint.geometry.Primitives;
 /**
- * The one place that decides how a scene's rays search its primitives, and every threshold of
- * that decision. Each was measured on scenes/bench (800x600, 1 spp, depth 5, cook-torrance, render
- * CPU a frame, 2026-12-02; docs/benchmarks.md): the first ones with two builds run side by side,
- * one thread each, medians of 30-40 frames; the cells with {@code CompareBuilds}.
+ * The one place that decides how a scene's rays search its primitives, and every threshold and
+ * margin of the structures that search them. Each says what it was measured on, or that it was
+ * chosen and not measured. The measured ones were measured on scenes/bench (800x600, 1 spp, depth
+ * 5, cook-torrance, render CPU a frame, 2026-12-02; docs/benchmarks.md): the first ones with two
+ * builds run side by side, one thread each, medians of 30-40 frames; the cells with
+ * {@code CompareBuilds}.
  */
 public final class AggregatePolicy {
 
@@ -59,6 +61,72 @@ public final class AggregatePolicy {
     public static final int MOST_LIGHT_CELL_PRIMITIVES = 4096;
     /** Only the first this many point lights of a scene get cells: each takes up to 0.8 MB and its build time. */
     public static final int MOST_CELL_LIGHTS = 8;
+
+    /**
+     * Bins along a node's widest centroid axis among whose edges a {@link Bvh} node's split is chosen by
+     * the surface-area heuristic ({@link BvhBuilder}). Chosen; against 6 and 24 bins, two
+     * CompareBuilds runs (1 thread, 8 and 12 pairs, 2026-12-02, a loaded shared machine) gave 6
+     * 1.00 and 1.05 of the default scene's render CPU a frame, 0.95 and 0.96 of glass-25's, 0.98 and
+     * 0.97 of field-1000's; 24 gave 0.95 and 1.06, 0.80 and 0.93, 0.99 and 0.98: within the runs'
+     * spread (their quartiles 0.79-1.25), no steady difference.
+     */
+    static final int BVH_BINS = 12;
+
+    /**
+     * Primitives a leaf holds at most in the tree {@link CellMaps} walks to fill a cube map's cells.
+     * It changes only how fast the cells are worked out, not what they list (each list is sorted).
+     * Chosen equal to {@link #LEAF_SIZE}, not measured.
+     */
+    static final int CELL_TREE_LEAF_SIZE = 4;
+
+    /**
+     * Cells along a cube face's side around a closed primitive ({@link LeavingCells}): 6 x 8 x 8
+     * direction cells a primitive (the cells as a whole were measured: see
+     * {@link #MOST_CELL_PRIMITIVES}). Chosen; against 4 and 16, two CompareBuilds runs (1 thread, 8
+     * and 12 pairs, 2026-12-02, a loaded shared machine) gave 4 1.02 and 1.06 of the default scene's
+     * render CPU a frame and 0.96 and 1.02 of glass-25's, 16 1.11 and 1.07, 1.01 and 1.04; on
+     * field-1000, which has no such cells, the same builds gave 0.94-1.10: no steady difference but
+     * a hint that 16 is slower.
+     */
+    static final int LEAVING_CELLS = 8;
+
+    /**
+     * The most primitives a cell around a closed primitive lists ({@link LeavingCells}); a cell that
+     * would list more searches. Chosen; against 8 and 32, the two runs of {@link #LEAVING_CELLS} gave
+     * 8 0.98 and 1.13 of the default scene and 0.97 and 0.90 of glass-25, 32 1.03 and 1.10, 1.01 and
+     * 1.00: within the runs' spread, no steady difference.
+     */
+    static final int LEAVING_CELL_CAP = 16;
+
+    /**
+     * A margin for the spawn offset, relative to max(1, distance from the scene's origin): how far
+     * off the ball a cube map was worked out for a ray may start (end, for a shadow ray) and still
+     * be answered from its cells. {@link LeavingCells} widens each closed primitive's bounding ball
+     * by it (relative to max(1, |centre| + radius)); {@link LightCells} takes it as the radius of the
+     * ball around the light (relative to max(1, |light|)). A spawned ray starts epsilon x max(1, |p|)
+     * off the surface (epsilon 1e-9 by default, a thousandth of this margin), so with the default
+     * epsilon every spawned ray is within it; a ray farther off is searched as usual (checked per
+     * ray), so the margin decides only which rays use the cells. Chosen, not measured.
+     */
+    static final double SPAWN_MARGIN = 1e-6;
+
+    /**
+     * Angle (radians) every direction cell's cone is widened by when the cells' lists are worked out
+     * ({@link CellCones}): a margin over the sampled cone's half-angle that also covers the rounding
+     * of a ray's cell lookup and of the tests. A wider one lists more primitives a cell. Chosen, not
+     * measured.
+     */
+    static final double CELL_CONE_SLACK = 1e-3;
+
+    /**
+     * Plane-primitive pairs up to which {@link EmptyInteriors} asks each plane of each primitive still
+     * empty; above it, of nested groups of them first. The groups took 50,000 planes under 50,000
+     * spheres from 36 s to seconds (commit ea91ef3); the threshold itself was chosen, not measured.
+     */
+    static final long EMPTY_PLANE_PAIRS_ONE_BY_ONE = 1 << 16;
+
+    /** Primitives a leaf group of {@link EmptyInteriors}' nested groups holds at most. Chosen, not measured. */
+    static final int EMPTY_GROUP_LEAF = 8;
 
     private AggregatePolicy() {
     }

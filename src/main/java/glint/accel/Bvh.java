@@ -1,36 +1,39 @@
 package glint.accel;
 
 import glint.geometry.Primitives;
-import glint.geometry.PrimitiveKind;
 import glint.geometry.Intersect;
 import glint.geometry.Hit;
 /**
  * A bounding volume hierarchy over the bounded primitives, in flat arrays; the unbounded ones
  * (planes) are tested by every ray before it. Nodes split at the best of a few binned
- * surface-area-heuristic candidates along the widest centroid axis. The nearest-hit traversal
- * visits the nearer child first; its stack holds at most one node a level, so {@link #newStack} sizes it from the
- * tree's depth.
+ * surface-area-heuristic candidates along the widest centroid axis. Both queries walk it the same
+ * way ({@link #nextLeaf}): a nearest-hit search visits the nearer child first and passes over a
+ * waiting node the ray enters beyond the nearest hit so far; a transmittance visits the left child
+ * first, so the light passed is multiplied in one fixed order. The stack holds at most one node a
+ * level, so {@link #newStack} sizes it from the tree's depth.
  */
 public final class Bvh implements Aggregate {
+
+    /** How far a box's far distance is widened, relative: 8 rounding steps of a double (derived, not tuned). */
+    private static final double GRAZE = 8 * 0x1p-53;
 
     private final Primitives primitives;
     /** Node boxes: min x, y, z, max x, y, z; 6 doubles a node. */
     private final double[] nodeBox;
     /**
-     * Node links, 2 ints a node: for a leaf its first slot in {@link #leafPrimitives} and its
-     * primitive count (> 0); for an inner node its left child (the right one follows it) and 0.
+     * Node links, 2 ints a node: for a leaf its first slot in {@link #leaves} and its primitive
+     * count (> 0); for an inner node its left child (the right one follows it) and 0.
      */
     private final int[] links;
     private final int nodeCount;
     /** Levels below the root on the longest path to a leaf. */
     private final int depth;
-    /** The bounded primitives' numbers, each leaf's a contiguous run. */
-    private final int[] leafPrimitives;
-    /** Per slot of {@link #leafPrimitives}: the primitive's kind and its index within the kind. */
-    private final PrimitiveKind[] leafKind;
-    private final int[] leafIndex;
-    /** The unbounded primitives' numbers. */
-    private final int[] unbounded;
+    /** The bounded primitives, each leaf's a contiguous run of slots. */
+    private final PrimitiveSlots leaves;
+    /** Per slot of {@link #leaves}: its primitive's box, 6 doubles a slot. */
+    private final double[] slotBox;
+    /** The unbounded primitives. */
+    private final PrimitiveSlots unbounded;
 
     public Bvh(Primitives primitives, int leafSize) {
         this.primitives = primitives;
@@ -39,19 +42,9 @@ public final class Bvh implements Aggregate {
         this.links = builder.links();
         this.nodeCount = builder.nodeCount();
         this.depth = builder.depth();
-        this.leafPrimitives = builder.order();
-        this.unbounded = builder.unbounded();
-        this.leafKind = primitives.kindsOf(leafPrimitives);
-        this.leafIndex = primitives.indicesOf(leafPrimitives);
-    }
-
-    /** Levels below the root on the longest path to a leaf: a traversal keeps at most this many nodes waiting. */
-    public int depth() {
-        return depth;
-    }
-
-    public int nodeCount() {
-        return nodeCount;
+        this.leaves = new PrimitiveSlots(primitives, builder.order());
+        this.slotBox = builder.slotBoxes();
+        this.unbounded = new PrimitiveSlots(primitives, builder.unbounded());
     }
 
     @Override
@@ -67,111 +60,87 @@ public final class Bvh implements Aggregate {
     @Override
     public boolean nearest(double ox, double oy, double oz, double dx, double dy, double dz, double tMax, int skip,
                            int inside, Hit hit, TraversalStack stack) {
-        Primitives p = primitives;
-        double nearest = tMax;
-        int found = Hit.NONE;
-        for (int u : unbounded) {
-            if (u != skip) {
-                double t = p.intersect(u, ox, oy, oz, dx, dy, dz, nearest);
-                if (t < nearest) {
-                    nearest = t;
-                    found = u;
-                }
-            }
-        }
+        double nearest = unbounded.nearest(0, unbounded.count(), ox, oy, oz, dx, dy, dz, tMax, skip, hit);
         double ix = 1 / nonZero(dx), iy = 1 / nonZero(dy), iz = 1 / nonZero(dz);
-        int[] waiting = stack.nodes;
-        double[] entries = stack.entries;
-        int top = 0;
-        int node = nodeCount > 0 && boxEntry(0, ox, oy, oz, ix, iy, iz) < nearest ? 0 : -1;
-        while (node >= 0) {
-            int count = links[2 * node + 1];
-            if (count > 0) {
-                for (int slot = links[2 * node], end = slot + count; slot < end; slot++) {
-                    if (leafPrimitives[slot] != skip) {
-                        double t = leafKind[slot].intersect(leafIndex[slot], ox, oy, oz, dx, dy, dz, nearest);
-                        if (t < nearest) {
-                            nearest = t;
-                            found = leafPrimitives[slot];
-                        }
-                    }
-                }
-                node = -1;
-            } else {
-                int left = links[2 * node];
-                double enterLeft = boxEntry(left, ox, oy, oz, ix, iy, iz);
-                double enterRight = boxEntry(left + 1, ox, oy, oz, ix, iy, iz);
-                boolean leftFirst = enterLeft <= enterRight;
-                double enterNear = leftFirst ? enterLeft : enterRight, enterFar = leftFirst ? enterRight : enterLeft;
-                node = -1;
-                if (enterNear < nearest) {
-                    if (enterFar < nearest) {
-                        waiting[top] = leftFirst ? left + 1 : left;
-                        entries[top++] = enterFar;
-                    }
-                    node = leftFirst ? left : left + 1;
-                }
-            }
-            // the nearest waiting node the ray may still meet something in before the nearest hit
-            while (node < 0 && top > 0) {
-                top--;
-                if (entries[top] < nearest) {
-                    node = waiting[top];
-                }
-            }
+        for (int leaf = firstLeaf(ox, oy, oz, ix, iy, iz, nearest, true, stack); leaf >= 0;
+             leaf = nextLeaf(-1, ox, oy, oz, ix, iy, iz, nearest, true, stack)) {
+            int first = links[2 * leaf];
+            nearest = leaves.nearest(first, first + links[2 * leaf + 1], ox, oy, oz, dx, dy, dz, nearest, skip, hit);
         }
-        if (found == Hit.NONE) {
-            return false;
-        }
-        p.record(hit, found, nearest);
-        return true;
+        return nearest < tMax;
     }
 
     @Override
     public double transmittance(double ox, double oy, double oz, double dx, double dy, double dz, double tMax,
                                 int skip, double[] pass, TraversalStack stack) {
-        Primitives p = primitives;
-        double passed = 1;
-        for (int u : unbounded) {
-            if (u != skip && p.intersect(u, ox, oy, oz, dx, dy, dz, tMax) < tMax) {
-                passed *= pass[u];
-                if (passed == 0) {
-                    return 0;
-                }
-            }
-        }
+        double passed = unbounded.transmittance(0, unbounded.count(), ox, oy, oz, dx, dy, dz, tMax, skip, pass, 1);
         double ix = 1 / nonZero(dx), iy = 1 / nonZero(dy), iz = 1 / nonZero(dz);
-        int[] waiting = stack.nodes;
-        int top = 0;
-        int node = nodeCount > 0 ? 0 : -1;
-        while (node >= 0) {
-            if (boxEntry(node, ox, oy, oz, ix, iy, iz) < tMax) {
-                int count = links[2 * node + 1];
-                if (count == 0) {
-                    waiting[top++] = links[2 * node] + 1;
-                    node = links[2 * node];
-                    continue;
-                }
-                for (int slot = links[2 * node], end = slot + count; slot < end; slot++) {
-                    int q = leafPrimitives[slot];
-                    if (q != skip && leafKind[slot].intersect(leafIndex[slot], ox, oy, oz, dx, dy, dz, tMax) < tMax) {
-                        passed *= pass[q];
-                        if (passed == 0) {
-                            return 0;
-                        }
-                    }
-                }
+        for (int leaf = passed == 0 ? -1 : firstLeaf(ox, oy, oz, ix, iy, iz, tMax, false, stack); leaf >= 0;
+             leaf = nextLeaf(-1, ox, oy, oz, ix, iy, iz, tMax, false, stack)) {
+            int first = links[2 * leaf];
+            passed = leaves.transmittance(first, first + links[2 * leaf + 1], ox, oy, oz, dx, dy, dz, tMax, skip,
+                    pass, passed);
+            if (passed == 0) {
+                return 0;
             }
-            node = top > 0 ? waiting[--top] : -1;
         }
         return passed;
+    }
+
+    /** The first leaf of a walk ({@link #nextLeaf}) from the root, emptying the stack first. */
+    private int firstLeaf(double ox, double oy, double oz, double ix, double iy, double iz, double limit,
+                          boolean nearerFirst, TraversalStack stack) {
+        stack.waiting = 0;
+        int root = nodeCount > 0 && boxEntry(0, ox, oy, oz, ix, iy, iz) < limit ? 0 : -1;
+        return nextLeaf(root, ox, oy, oz, ix, iy, iz, limit, nearerFirst, stack);
+    }
+
+    /**
+     * The next leaf whose box the ray (from o, reciprocal direction i) enters before {@code limit},
+     * or -1 when none is left: descending from {@code node} (a node it enters before the limit), or
+     * with -1 from the nearest waiting node it still enters before the limit. At each inner node it
+     * goes on into the child it enters first ({@code nearerFirst}; otherwise the left one) and keeps
+     * the other waiting with its entry distance, if the ray enters it before the limit. The limit
+     * may only shrink between the calls of one walk (a nearest-hit search lowers it to each hit).
+     */
+    private int nextLeaf(int node, double ox, double oy, double oz, double ix, double iy, double iz, double limit,
+                         boolean nearerFirst, TraversalStack stack) {
+        int[] waiting = stack.nodes;
+        double[] entries = stack.entries;
+        int top = stack.waiting;
+        while (true) {
+            while (node < 0) {
+                if (top == 0) {
+                    stack.waiting = 0;
+                    return -1;
+                }
+                top--;
+                if (entries[top] < limit) {
+                    node = waiting[top];
+                }
+            }
+            if (links[2 * node + 1] > 0) {
+                stack.waiting = top;
+                return node;
+            }
+            int left = links[2 * node];
+            double enterLeft = boxEntry(left, ox, oy, oz, ix, iy, iz);
+            double enterRight = boxEntry(left + 1, ox, oy, oz, ix, iy, iz);
+            boolean leftFirst = !nearerFirst || enterLeft <= enterRight;
+            double enterFirst = leftFirst ? enterLeft : enterRight, enterSecond = leftFirst ? enterRight : enterLeft;
+            if (enterSecond < limit) {
+                waiting[top] = leftFirst ? left + 1 : left;
+                entries[top++] = enterSecond;
+            }
+            node = enterFirst < limit ? (leftFirst ? left : left + 1) : -1;
+        }
     }
 
     @Override
     public void gather(Frustum frustum, Candidates out, TraversalStack stack) {
         out.clear();
-        for (int u : unbounded) {
-            out.add(u);
+        for (int u = 0; u < unbounded.count(); u++) {
+            out.add(unbounded.number(u));
         }
         int[] waiting = stack.nodes;
         int top = 0;
@@ -185,9 +154,8 @@ public final class Bvh implements Aggregate {
                     continue;
                 }
                 for (int slot = links[2 * node], end = slot + count; slot < end; slot++) {
-                    leafKind[slot].bounds(leafIndex[slot], out.box, 0);
-                    if (frustum.mayHold(out.box, 0)) {
-                        out.add(leafPrimitives[slot]);
+                    if (frustum.mayHold(slotBox, 6 * slot)) {
+                        out.add(leaves.number(slot));
                     }
                 }
             }
@@ -210,7 +178,7 @@ public final class Bvh implements Aggregate {
         // Math.min and max compile to branch-free code, which a ray's unpredictable slabs need
         double near = Math.max(Math.max(Math.min(tx0, tx1), Math.min(ty0, ty1)), Math.max(Math.min(tz0, tz1), 0));
         double far = Math.min(Math.min(Math.max(tx0, tx1), Math.max(ty0, ty1)), Math.max(tz0, tz1));
-        return near <= far * (1 + 8 * 0x1p-53) ? near : Intersect.MISS;
+        return near <= far * (1 + GRAZE) ? near : Intersect.MISS;
     }
 
     private static double nonZero(double component) {
@@ -219,7 +187,7 @@ public final class Bvh implements Aggregate {
 
     @Override
     public String toString() {
-        return "Bvh[" + leafPrimitives.length + " bounded, " + unbounded.length + " unbounded, " + nodeCount
+        return "Bvh[" + leaves.count() + " bounded, " + unbounded.count() + " unbounded, " + nodeCount
                 + " nodes, depth " + depth + "]";
     }
 }

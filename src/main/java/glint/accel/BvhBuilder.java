@@ -10,13 +10,15 @@ import java.util.Arrays;
  */
 final class BvhBuilder {
 
-    private static final int BINS = 12;
+    private static final int BINS = AggregatePolicy.BVH_BINS;
 
     private final int leafSize;
     private final int[] order;
     private final int[] unbounded;
     /** Box and centroid of the i-th bounded primitive (in {@link #order}'s numbering of slots). */
     private final double[] boxes, centroids;
+    /** Per slot of {@link #order}, once built: its primitive's box. */
+    private final double[] slotBoxes;
     private final double[] nodeBox;
     private final int[] links;
     private int used;
@@ -47,7 +49,9 @@ final class BvhBuilder {
         links = new int[2 * maxNodes];
         used = bounded > 0 ? 1 : 0;
         depth = bounded > 0 ? build(0, 0, bounded) : 0;
+        slotBoxes = new double[6 * bounded];
         for (int i = 0; i < bounded; i++) {
+            System.arraycopy(boxes, 6 * order[i], slotBoxes, 6 * i, 6);
             order[i] = boundedNumbers[order[i]];
         }
     }
@@ -68,6 +72,11 @@ final class BvhBuilder {
         return depth;
     }
 
+    /** Each slot's primitive's box (min x, y, z, max x, y, z), 6 doubles a slot in {@link #order}'s order. */
+    double[] slotBoxes() {
+        return slotBoxes;
+    }
+
     int[] order() {
         return order;
     }
@@ -84,7 +93,7 @@ final class BvhBuilder {
             links[2 * node + 1] = count;
             return 0;
         }
-        int axis = widestCentroidAxis(first, count);
+        int axis = Boxes.widestAxis(centroids, 3, order, first, first + count);
         int split = partition(first, count, axis);
         if (split <= first || split >= first + count) {
             sortByAxis(first, count, axis);
@@ -100,34 +109,10 @@ final class BvhBuilder {
     }
 
     private void fitBox(int node, int first, int count) {
-        int b = 6 * node;
-        Arrays.fill(nodeBox, b, b + 3, Double.POSITIVE_INFINITY);
-        Arrays.fill(nodeBox, b + 3, b + 6, Double.NEGATIVE_INFINITY);
+        Boxes.empty(nodeBox, 6 * node);
         for (int slot = first; slot < first + count; slot++) {
-            int i = 6 * order[slot];
-            for (int axis = 0; axis < 3; axis++) {
-                nodeBox[b + axis] = Math.min(nodeBox[b + axis], boxes[i + axis]);
-                nodeBox[b + 3 + axis] = Math.max(nodeBox[b + 3 + axis], boxes[i + 3 + axis]);
-            }
+            Boxes.grow(nodeBox, 6 * node, boxes, 6 * order[slot]);
         }
-    }
-
-    private int widestCentroidAxis(int first, int count) {
-        int widest = 0;
-        double widestSpread = -1;
-        for (int axis = 0; axis < 3; axis++) {
-            double lo = Double.POSITIVE_INFINITY, hi = Double.NEGATIVE_INFINITY;
-            for (int slot = first; slot < first + count; slot++) {
-                double c = centroids[3 * order[slot] + axis];
-                lo = Math.min(lo, c);
-                hi = Math.max(hi, c);
-            }
-            if (hi - lo > widestSpread) {
-                widestSpread = hi - lo;
-                widest = axis;
-            }
-        }
-        return widest;
     }
 
     /**
@@ -148,31 +133,31 @@ final class BvhBuilder {
         int[] binCount = new int[BINS];
         double[] binBox = new double[6 * BINS];
         for (int b = 0; b < BINS; b++) {
-            emptyBox(binBox, 6 * b);
+            Boxes.empty(binBox, 6 * b);
         }
         for (int slot = first; slot < first + count; slot++) {
             int bin = binOf(order[slot], axis, lo, scale);
             binCount[bin]++;
-            growBox(binBox, 6 * bin, boxes, 6 * order[slot]);
+            Boxes.grow(binBox, 6 * bin, boxes, 6 * order[slot]);
         }
         double bestCost = Double.POSITIVE_INFINITY;
         int bestBin = -1;
         double[] left = new double[6], right = new double[6];
         for (int split = 1; split < BINS; split++) {
-            emptyBox(left, 0);
-            emptyBox(right, 0);
+            Boxes.empty(left, 0);
+            Boxes.empty(right, 0);
             int nLeft = 0, nRight = 0;
             for (int b = 0; b < BINS; b++) {
                 if (b < split) {
-                    growBox(left, 0, binBox, 6 * b);
+                    Boxes.grow(left, 0, binBox, 6 * b);
                     nLeft += binCount[b];
                 } else {
-                    growBox(right, 0, binBox, 6 * b);
+                    Boxes.grow(right, 0, binBox, 6 * b);
                     nRight += binCount[b];
                 }
             }
             if (nLeft > 0 && nRight > 0) {
-                double cost = area(left) * nLeft + area(right) * nRight;
+                double cost = Boxes.halfArea(left) * nLeft + Boxes.halfArea(right) * nRight;
                 if (cost < bestCost) {
                     bestCost = cost;
                     bestBin = split;
@@ -206,23 +191,5 @@ final class BvhBuilder {
         for (int k = 0; k < count; k++) {
             order[first + k] = boxed[k];
         }
-    }
-
-    private static void emptyBox(double[] box, int at) {
-        Arrays.fill(box, at, at + 3, Double.POSITIVE_INFINITY);
-        Arrays.fill(box, at + 3, at + 6, Double.NEGATIVE_INFINITY);
-    }
-
-    private static void growBox(double[] box, int at, double[] other, int from) {
-        for (int axis = 0; axis < 3; axis++) {
-            box[at + axis] = Math.min(box[at + axis], other[from + axis]);
-            box[at + 3 + axis] = Math.max(box[at + 3 + axis], other[from + 3 + axis]);
-        }
-    }
-
-    /** Half the surface area of a box; 0 for an empty one. */
-    private static double area(double[] box) {
-        double x = box[3] - box[0], y = box[4] - box[1], z = box[5] - box[2];
-        return x < 0 ? 0 : x * y + y * z + z * x;
     }
 }

@@ -19,8 +19,6 @@ public final class Candidates {
     /** Per gathered primitive: the rays [firstRay, endRay) it is searched for. */
     private int[] firstRay = new int[16], endRay = new int[16];
     private int count;
-    /** A box's scratch, for the aggregates that gather into it. */
-    final double[] box = new double[6];
 
     /** How many were gathered. */
     public int count() {

@@ -23,8 +23,8 @@ final class CellCones {
 
     /** Cells along a cube face's side. */
     final int k;
-    /** Angle (radians) every cone is widened by. */
-    static final double SLACK = 1e-3;
+    /** Angle (radians) every cone is widened by ({@link AggregatePolicy#CELL_CONE_SLACK}). */
+    private static final double SLACK = AggregatePolicy.CELL_CONE_SLACK;
     private static final int SAMPLES = 64;
 
     /** Per cell: axis x, y, z, cos and sin of the half-angle. */

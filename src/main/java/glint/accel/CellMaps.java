@@ -54,7 +54,7 @@ final class CellMaps {
         }
         cones = CellCones.of(k);
         lists = new CellCones.Lists(k, cap);
-        tree = new BvhBuilder(p, 4);
+        tree = new BvhBuilder(p, AggregatePolicy.CELL_TREE_LEAF_SIZE);
         nodeBalls = nodeBalls(tree);
         waiting = new int[tree.depth() + 2];
     }

@@ -69,14 +69,12 @@ public final class EmptyInteriors extends AggregateFilter {
     }
 
     /**
-     * PlaneKind times primitives still empty up to which each plane is asked of each primitive; above
-     * it, of groups of them first ({@link Groups}).
+     * As {@link #findEmpty(Primitives)}, adding to {@code pairs[0]} the number of pairs it looked at;
+     * each plane is asked of groups of the primitives still empty ({@link Groups}) once planes times
+     * those primitives are more than {@link AggregatePolicy#EMPTY_PLANE_PAIRS_ONE_BY_ONE}.
      */
-    static final long MOST_PLANE_PAIRS_ONE_BY_ONE = 1 << 16;
-
-    /** As {@link #findEmpty(Primitives)}, adding to {@code pairs[0]} the number of pairs it looked at. */
     static boolean[] findEmpty(Primitives p, long[] pairs) {
-        return findEmpty(p, pairs, MOST_PLANE_PAIRS_ONE_BY_ONE);
+        return findEmpty(p, pairs, AggregatePolicy.EMPTY_PLANE_PAIRS_ONE_BY_ONE);
     }
 
     /** As {@link #findEmpty(Primitives, long[])}, planes asked of groups above {@code onePlaneByOne} pairs. */
@@ -84,7 +82,7 @@ public final class EmptyInteriors extends AggregateFilter {
         int n = p.count();
         boolean[] empty = new boolean[n];
         double[] boxes = new double[6 * n];
-        Integer[] boundedOnes = new Integer[n];
+        int[] boundedOnes = new int[n];
         int bounded = 0;
         for (int q = 0; q < n; q++) {
             p.bounds(q, boxes, 6 * q);
@@ -93,8 +91,8 @@ public final class EmptyInteriors extends AggregateFilter {
                 boundedOnes[bounded++] = q;
             }
         }
-        Integer[] sorted = Arrays.copyOf(boundedOnes, bounded);
-        int axis = widestAxis(boxes, sorted);
+        int axis = Boxes.widestAxis(boxes, 6, boundedOnes, 0, bounded);
+        Integer[] sorted = Arrays.stream(boundedOnes, 0, bounded).boxed().toArray(Integer[]::new);
         Arrays.sort(sorted, (a, b) -> Double.compare(boxes[6 * a + axis], boxes[6 * b + axis]));
         StillEmpty still = new StillEmpty(sorted, empty);
         double[] ball = new double[4];
@@ -105,7 +103,7 @@ public final class EmptyInteriors extends AggregateFilter {
                  j = empty[a] ? j + 1 : still.from(j + 1)) {
                 int b = sorted[j];
                 pairs[0]++;
-                if (boxesOverlap(boxes, a, b)) {
+                if (Boxes.overlap(boxes, 6 * a, 6 * b)) {
                     markIfReached(p, a, b, ball, empty, still);
                     markIfReached(p, b, a, ball, empty, still);
                 }
@@ -144,7 +142,7 @@ public final class EmptyInteriors extends AggregateFilter {
      * rounding. Far planes are so set aside a group at a time instead of member by member.
      */
     private static final class Groups {
-        static final int LEAF = 8;
+        static final int LEAF = AggregatePolicy.EMPTY_GROUP_LEAF;
         /** Beyond this size or distance, a group's ball is not trusted and its members are asked. */
         static final double LARGEST = 1e150;
 
@@ -279,31 +277,5 @@ public final class EmptyInteriors extends AggregateFilter {
             empty[a] = false;
             still.reached(a);
         }
-    }
-
-    private static int widestAxis(double[] boxes, Integer[] primitives) {
-        int widest = 0;
-        double widestSpread = -1;
-        for (int axis = 0; axis < 3; axis++) {
-            double lo = Double.POSITIVE_INFINITY, hi = Double.NEGATIVE_INFINITY;
-            for (int q : primitives) {
-                lo = Math.min(lo, boxes[6 * q + axis]);
-                hi = Math.max(hi, boxes[6 * q + axis]);
-            }
-            if (hi - lo > widestSpread) {
-                widestSpread = hi - lo;
-                widest = axis;
-            }
-        }
-        return widest;
-    }
-
-    private static boolean boxesOverlap(double[] boxes, int a, int b) {
-        for (int axis = 0; axis < 3; axis++) {
-            if (boxes[6 * a + axis] > boxes[6 * b + 3 + axis] || boxes[6 * b + axis] > boxes[6 * a + 3 + axis]) {
-                return false;
-            }
-        }
-        return true;
     }
 }

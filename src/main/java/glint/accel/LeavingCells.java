@@ -7,26 +7,18 @@ import java.util.Arrays;
 /**
  * A filter in front of another aggregate for rays that leave a closed primitive on its outer side
  * (reflected off a metal or glass sphere, or leaving a glass one). For each closed bounded primitive
- * S a cube map of direction cells (6 faces of {@link #K} x K) lists the bounded primitives a ray
- * starting within S's bounding ball, travelling in a direction of the cell, could meet; such a ray
- * tests the unbounded primitives and its cell's list instead of searching. A cell that would list
- * more than {@link #CAP} falls back to the search, as does a ray whose origin is not within the
- * ball the cells were worked out for. Worked out once, when the scene is compiled. Shadow rays
- * are searched as usual: answered from the cells, they took 0.90 to 1.02 of the render CPU a frame
- * on the default scene and glass-25 (4 runs), short of 5 %.
+ * S a cube map of direction cells (6 faces of {@link AggregatePolicy#LEAVING_CELLS} squared) lists
+ * the bounded primitives a ray starting within S's bounding ball, travelling in a direction of the
+ * cell, could meet; such a ray tests the unbounded primitives and its cell's list instead of
+ * searching. A cell that would list more than {@link AggregatePolicy#LEAVING_CELL_CAP} falls back
+ * to the search, as does a ray whose origin is not within the ball the cells were worked out for
+ * (S's bounding ball widened by {@link AggregatePolicy#SPAWN_MARGIN}). Worked out once, when the
+ * scene is compiled. Shadow rays are searched as usual: answered from the cells, they took 0.90 to
+ * 1.02 of the render CPU a frame on the default scene and glass-25 (4 runs), short of 5 %.
  */
 public final class LeavingCells extends CellFilter {
 
-    /** Cells along a cube face's side. */
-    static final int K = 8;
-    /** The most primitives a cell lists; a cell that would list more falls back. */
-    static final int CAP = 16;
-    /**
-     * How far off S's bounding ball (relative to max(1, |centre| + radius)) an origin may be and still
-     * use the cells: a spawned ray starts epsilon x max(1, |p|) off the surface (epsilon 1e-9 by
-     * default, a thousandth of this margin). An origin farther off is searched as usual (checked per ray).
-     */
-    private static final double OFFSET = 1e-6;
+    private static final int K = AggregatePolicy.LEAVING_CELLS;
 
     /** Per primitive: its first cell in {@link #cell}, or -1 if it has none. */
     private final int[] firstCell;
@@ -43,7 +35,7 @@ public final class LeavingCells extends CellFilter {
     public static Aggregate around(Aggregate searched) {
         Primitives p = searched.primitives();
         int n = p.count();
-        CellMaps maps = new CellMaps(p, K, CAP);
+        CellMaps maps = new CellMaps(p, K, AggregatePolicy.LEAVING_CELL_CAP);
         int[] firstCell = new int[n];
         Arrays.fill(firstCell, -1);
         double[] covered = new double[4 * n];
@@ -54,7 +46,8 @@ public final class LeavingCells extends CellFilter {
             }
             double cx = balls[4 * s], cy = balls[4 * s + 1], cz = balls[4 * s + 2];
             double r = balls[4 * s + 3];
-            double reach = r + OFFSET * Math.max(1, Math.sqrt(cx * cx + cy * cy + cz * cz) + r);
+            // S's bounding ball widened by the spawn margin
+            double reach = r + AggregatePolicy.SPAWN_MARGIN * Math.max(1, Math.sqrt(cx * cx + cy * cy + cz * cz) + r);
             firstCell[s] = maps.add(cx, cy, cz, reach, s);
             System.arraycopy(balls, 4 * s, covered, 4 * s, 3);
             covered[4 * s + 3] = reach * reach;

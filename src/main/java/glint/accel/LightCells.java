@@ -14,12 +14,6 @@ import glint.geometry.Hit;
 public final class LightCells extends CellFilter {
 
     /**
-     * The reach, relative to max(1, |L|): a spawned ray starts epsilon x max(1, |p|) off the surface
-     * (epsilon 1e-9 by default), so with the default epsilon every surface point up to a thousand
-     * times max(1, |L|) from the origin ends its shadow ray within reach.
-     */
-    static final double OFFSET = 1e-6;
-    /**
      * The longest shadow ray the cells answer, relative to the reach: the ray's end, computed in
      * doubles, is then off by well under a thousandth of the reach (a few rounding steps of
      * |o| + tMax), which the cells, worked out for twice the reach, cover. A longer ray could have its
@@ -46,7 +40,9 @@ public final class LightCells extends CellFilter {
      */
     public static Aggregate around(Aggregate searched, double lx, double ly, double lz, int k, int cap) {
         CellMaps maps = new CellMaps(searched.primitives(), k, cap);
-        double reach = OFFSET * Math.max(1, Math.sqrt(lx * lx + ly * ly + lz * lz));
+        // the spawn margin around the light: with the default epsilon, every surface point up to a
+        // thousand times max(1, |L|) from the origin ends its shadow ray within it
+        double reach = AggregatePolicy.SPAWN_MARGIN * Math.max(1, Math.sqrt(lx * lx + ly * ly + lz * lz));
         return maps.add(lx, ly, lz, 2 * reach, Hit.NONE) < 0 ? searched
                 : new LightCells(searched, maps, lx, ly, lz, reach);
     }

@@ -9,6 +9,8 @@ public final class TraversalStack {
 
     final int[] nodes;
     final double[] entries;
+    /** How many nodes wait, between the steps of one walk ({@link Bvh}). */
+    int waiting;
 
     TraversalStack(int capacity) {
         nodes = new int[capacity];

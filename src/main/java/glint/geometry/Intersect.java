@@ -12,18 +12,11 @@ public final class Intersect {
     }
 
     /**
-     * Nearest t > 0 where the ray meets the sphere. Follows Ray Tracing Gems ch. 7: the
-     * discriminant is r^2 - |f - (f.d) d|^2 (no cancellation between two large squares), and the
-     * root that would subtract nearly equal numbers is taken as c / q instead.
-     */
-    public static double sphere(double cx, double cy, double cz, double radius,
-                                double ox, double oy, double oz, double dx, double dy, double dz) {
-        return sphereBefore(cx, cy, cz, radius, ox, oy, oz, dx, dy, dz, MISS);
-    }
-
-    /**
-     * {@link #sphere}, but a miss also when the hit cannot come before {@code tMax}: the cheap
-     * rejections (sphere behind the ray, closest approach beyond tMax) run before any square root.
+     * Nearest t in (0, tMax) where the ray meets the sphere, else {@link #MISS}. Follows Ray Tracing
+     * Gems ch. 7: the discriminant is r^2 - |f - (f.d) d|^2 (no cancellation between two large
+     * squares), and the root that would subtract nearly equal numbers is taken as c / q instead.
+     * The cheap rejections (sphere behind the ray, closest approach beyond tMax) run before any
+     * square root.
      */
     public static double sphereBefore(double cx, double cy, double cz, double radius,
                                       double ox, double oy, double oz, double dx, double dy, double dz,
@@ -60,15 +53,10 @@ public final class Intersect {
     }
 
     /**
-     * Nearest t > 0 where the ray meets the plane n.p = offset. A ray parallel to the plane (or
-     * lying in it) misses; a nearly parallel one hits far away, never at NaN.
+     * Nearest t in (0, tMax) where the ray meets the plane n.p = offset, else {@link #MISS}. A ray
+     * parallel to the plane (or lying in it) misses; a nearly parallel one hits far away, never at
+     * NaN. Divides only for a hit.
      */
-    public static double plane(double nx, double ny, double nz, double offset,
-                               double ox, double oy, double oz, double dx, double dy, double dz) {
-        return planeBefore(nx, ny, nz, offset, ox, oy, oz, dx, dy, dz, MISS);
-    }
-
-    /** {@link #plane}, but a miss also at or beyond {@code tMax}; divides only for a hit. */
     public static double planeBefore(double nx, double ny, double nz, double offset,
                                      double ox, double oy, double oz, double dx, double dy, double dz,
                                      double tMax) {

@@ -11,21 +11,16 @@ import java.util.stream.IntStream;
 public final class Primitives {
 
     private final PrimitiveKind[] kinds;
-    /** The number of kind k's first primitive; firstOfKind[kinds.length] = count. */
-    private final int[] firstOfKind;
     private final int[] kindOf;
     private final int[] indexOf;
     private final int count;
 
     public Primitives(List<PrimitiveKind> kinds) {
         this.kinds = kinds.toArray(new PrimitiveKind[0]);
-        this.firstOfKind = new int[this.kinds.length + 1];
         int total = 0;
-        for (int k = 0; k < this.kinds.length; k++) {
-            firstOfKind[k] = total;
-            total += this.kinds[k].count();
+        for (PrimitiveKind kind : this.kinds) {
+            total += kind.count();
         }
-        firstOfKind[this.kinds.length] = total;
         this.count = total;
         this.kindOf = new int[total];
         this.indexOf = new int[total];
@@ -53,11 +48,6 @@ public final class Primitives {
     /** The kinds, in numbering order. */
     public List<PrimitiveKind> kinds() {
         return List.of(kinds);
-    }
-
-    /** The number of kind k's primitive i. */
-    public int number(int k, int i) {
-        return firstOfKind[k] + i;
     }
 
     public int kindOf(int primitive) {

@@ -1,7 +1,6 @@
 package glint.accel;
 
 import glint.geometry.Primitives;
-import glint.geometry.PrimitiveKind;
 import glint.geometry.Hit;
 /** Every ray tests every primitive: the brute force the renderer's aggregates are checked against. */
 public final class FlatList implements Aggregate {
@@ -18,17 +17,14 @@ public final class FlatList implements Aggregate {
         Primitives p = primitives;
         double nearest = tMax;
         int found = Hit.NONE;
-        for (int k = 0, kinds = p.kindCount(); k < kinds; k++) {
-            PrimitiveKind shape = p.kind(k);
-            for (int i = 0, n = shape.count(), first = p.number(k, 0); i < n; i++) {
-                if (first + i == skip) {
-                    continue;
-                }
-                double t = shape.intersect(i, ox, oy, oz, dx, dy, dz, nearest);
-                if (t < nearest) {
-                    nearest = t;
-                    found = first + i;
-                }
+        for (int q = 0; q < p.count(); q++) {
+            if (q == skip) {
+                continue;
+            }
+            double t = p.intersect(q, ox, oy, oz, dx, dy, dz, nearest);
+            if (t < nearest) {
+                nearest = t;
+                found = q;
             }
         }
         if (found == Hit.NONE) {
@@ -43,14 +39,11 @@ public final class FlatList implements Aggregate {
                                 int skip, double[] pass, TraversalStack stack) {
         Primitives p = primitives;
         double passed = 1;
-        for (int k = 0, kinds = p.kindCount(); k < kinds; k++) {
-            PrimitiveKind shape = p.kind(k);
-            for (int i = 0, n = shape.count(), first = p.number(k, 0); i < n; i++) {
-                if (first + i != skip && shape.intersect(i, ox, oy, oz, dx, dy, dz, tMax) < tMax) {
-                    passed *= pass[first + i];
-                    if (passed == 0) {
-                        return 0;
-                    }
+        for (int q = 0; q < p.count(); q++) {
+            if (q != skip && p.intersect(q, ox, oy, oz, dx, dy, dz, tMax) < tMax) {
+                passed *= pass[q];
+                if (passed == 0) {
+                    return 0;
                 }
             }
         }
@@ -60,7 +53,7 @@ public final class FlatList implements Aggregate {
     @Override
     public void gather(Frustum frustum, Candidates out, TraversalStack stack) {
         out.clear();
-        double[] box = out.box;
+        double[] box = new double[6];
         for (int q = 0; q < primitives.count(); q++) {
             if (!primitives.bounded(q)) {
                 out.add(q);

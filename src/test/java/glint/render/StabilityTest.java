@@ -14,12 +14,12 @@ class StabilityTest {
     void unitSphereAMillionUnitsAwayIsHitWhereItShouldBe() {
         double distance = 1e6;
         // head-on: t = distance - 1 exactly
-        assertEquals(distance - 1, Intersect.sphere(0, 0, distance, 1, 0, 0, 0, 0, 0, 1), 1e-9);
+        assertEquals(distance - 1, Intersect.sphereBefore(0, 0, distance, 1, 0, 0, 0, 0, 0, 1, Intersect.MISS), 1e-9);
         // off-axis rays at angles up to 0.9 of the angular radius: the hit lies on the sphere
         for (int i = -9; i <= 9; i++) {
             double angle = i / 10.0 * Math.asin(1 / distance);
             double dy = Math.sin(angle), dz = Math.cos(angle);
-            double t = Intersect.sphere(0, 0, distance, 1, 0, 0, 0, 0, dy, dz);
+            double t = Intersect.sphereBefore(0, 0, distance, 1, 0, 0, 0, 0, dy, dz, Intersect.MISS);
             double py = t * dy, pz = t * dz - distance;
             assertEquals(1, Math.sqrt(py * py + pz * pz), 1e-9, "hit on the surface at ray " + i);
             // analytic nearer root of t^2 - 2 t D cos(a) + D^2 - 1 = 0, in a cancellation-free form
@@ -30,7 +30,8 @@ class StabilityTest {
         }
         // just outside the angular radius: a miss
         double miss = 1.0001 * Math.asin(1 / distance);
-        assertEquals(Intersect.MISS, Intersect.sphere(0, 0, distance, 1, 0, 0, 0, 0, Math.sin(miss), Math.cos(miss)));
+        assertEquals(Intersect.MISS, Intersect.sphereBefore(0, 0, distance, 1, 0, 0, 0, 0, Math.sin(miss), Math.cos(miss),
+                Intersect.MISS));
     }
 
     @Test
@@ -80,7 +81,7 @@ class StabilityTest {
         int w = 80, h = 60;
         FrameBuffer frame = Renders.render(yaml, w, h, 1, 1, Shading.COOK_TORRANCE);
         assertGroundMatchesLambert(frame, w, h, 70, new double[] {0, 1, -5}, new double[] {0, 0, 5},
-                (ox, oy, oz, dx, dy, dz) -> Intersect.sphere(0, -r, 0, r, ox, oy, oz, dx, dy, dz),
+                (ox, oy, oz, dx, dy, dz) -> Intersect.sphereBefore(0, -r, 0, r, ox, oy, oz, dx, dy, dz, Intersect.MISS),
                 (px, py, pz) -> normalize(px, py + r, pz), new double[] {2, 6, 3}, 40, 0.5);
     }
 
@@ -96,7 +97,7 @@ class StabilityTest {
         int w = 80, h = 60;
         FrameBuffer frame = Renders.render(yaml, w, h, 1, 1, Shading.COOK_TORRANCE);
         assertGroundMatchesLambert(frame, w, h, 50, new double[] {0, 0.01, 0}, new double[] {0, 0.005, 1},
-                (ox, oy, oz, dx, dy, dz) -> Intersect.plane(0, 1, 0, 0, ox, oy, oz, dx, dy, dz),
+                (ox, oy, oz, dx, dy, dz) -> Intersect.planeBefore(0, 1, 0, 0, ox, oy, oz, dx, dy, dz, Intersect.MISS),
                 (px, py, pz) -> new double[] {0, 1, 0}, new double[] {0, 5, 50}, 500, 0.5);
     }
 
@@ -138,9 +139,8 @@ class StabilityTest {
         int surfacePixels = 0, wrong = 0;
         for (int y = 0; y < h; y++) {
             for (int x = 0; x < w; x++) {
-                glint.math.Ray ray = glint.math.Ray.calculateCameraRay(camera.position(), camera.orientation(), fov,
-                        w, h, x + 0.5, y + 0.5);
-                glint.math.Vector3d d = ray.direction();
+                glint.math.Vector3d d = glint.study.CameraRays.direction(camera.orientation(), fov, w, h, x + 0.5,
+                        y + 0.5);
                 double t = hit.t(eye[0], eye[1], eye[2], d.x(), d.y(), d.z());
                 double v = frame.get(x, y, 0);
                 if (t == Intersect.MISS) {

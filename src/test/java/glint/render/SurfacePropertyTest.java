@@ -32,7 +32,8 @@ class SurfacePropertyTest {
             double k = random.nextDouble(0, 0.999) * r;
             double ax = cx + k * aim[0], ay = cy + k * aim[1], az = cz + k * aim[2];
             double[] dir = normalize(ax - o[0], ay - o[1], az - o[2]);
-            double t = Intersect.sphere(cx, cy, cz, r, o[0], o[1], o[2], dir[0], dir[1], dir[2]);
+            double t = Intersect.sphereBefore(cx, cy, cz, r, o[0], o[1], o[2], dir[0], dir[1], dir[2],
+                    Intersect.MISS);
             if (t == Intersect.MISS) {
                 continue;
             }
@@ -43,15 +44,15 @@ class SurfacePropertyTest {
             // reflected: leaves the convex surface, must never meet the sphere again
             double[] refl = {dir[0] + 2 * cos * n[0], dir[1] + 2 * cos * n[1], dir[2] + 2 * cos * n[2]};
             assertEquals(1, Math.sqrt(refl[0] * refl[0] + refl[1] * refl[1] + refl[2] * refl[2]), 1e-12);
-            double back = Intersect.sphere(cx, cy, cz, r, p[0] + offset * n[0], p[1] + offset * n[1],
-                    p[2] + offset * n[2], refl[0], refl[1], refl[2]);
+            double back = Intersect.sphereBefore(cx, cy, cz, r, p[0] + offset * n[0], p[1] + offset * n[1],
+                    p[2] + offset * n[2], refl[0], refl[1], refl[2], Intersect.MISS);
             assertEquals(Intersect.MISS, back, () -> String.format(Locale.ROOT, "reflected ray re-hit (scale %g)", scale));
             // refracted: enters and must next meet the far side, 2 r cos(theta_t) away, not its own spot
             assertTrue(Optics.refract(dir[0], dir[1], dir[2], n[0], n[1], n[2], cos, 1 / 1.5, refracted));
             assertEquals(1, Math.sqrt(refracted[0] * refracted[0] + refracted[1] * refracted[1]
                     + refracted[2] * refracted[2]), 1e-12);
-            double inside = Intersect.sphere(cx, cy, cz, r, p[0] - offset * n[0], p[1] - offset * n[1],
-                    p[2] - offset * n[2], refracted[0], refracted[1], refracted[2]);
+            double inside = Intersect.sphereBefore(cx, cy, cz, r, p[0] - offset * n[0], p[1] - offset * n[1],
+                    p[2] - offset * n[2], refracted[0], refracted[1], refracted[2], Intersect.MISS);
             double cosT = -(refracted[0] * n[0] + refracted[1] * n[1] + refracted[2] * n[2]);
             assertEquals(2 * r * cosT, inside, 1e-6 * r + 4 * offset, "chord through the sphere");
         }
@@ -69,7 +70,8 @@ class SurfacePropertyTest {
             double[] o = {q[0] + scale * random.nextDouble(-1, 1), q[1] + scale * random.nextDouble(-1, 1),
                     q[2] + scale * random.nextDouble(-1, 1)};
             double[] dir = randomUnit(random);
-            double t = Intersect.plane(n[0], n[1], n[2], offsetOfPlane, o[0], o[1], o[2], dir[0], dir[1], dir[2]);
+            double t = Intersect.planeBefore(n[0], n[1], n[2], offsetOfPlane, o[0], o[1], o[2], dir[0], dir[1], dir[2],
+                    Intersect.MISS);
             if (t == Intersect.MISS) {
                 continue;
             }
@@ -83,13 +85,14 @@ class SurfacePropertyTest {
             double cos = -(dir[0] * f[0] + dir[1] * f[1] + dir[2] * f[2]);
             double offset = EPSILON * Math.max(1, Math.sqrt(p[0] * p[0] + p[1] * p[1] + p[2] * p[2]));
             double[] refl = {dir[0] + 2 * cos * f[0], dir[1] + 2 * cos * f[1], dir[2] + 2 * cos * f[2]};
-            double again = Intersect.plane(n[0], n[1], n[2], offsetOfPlane, p[0] + offset * f[0],
-                    p[1] + offset * f[1], p[2] + offset * f[2], refl[0], refl[1], refl[2]);
+            double again = Intersect.planeBefore(n[0], n[1], n[2], offsetOfPlane, p[0] + offset * f[0],
+                    p[1] + offset * f[1], p[2] + offset * f[2], refl[0], refl[1], refl[2], Intersect.MISS);
             assertEquals(Intersect.MISS, again, "reflected ray re-hit the plane");
             double[] refracted = new double[3];
             if (Optics.refract(dir[0], dir[1], dir[2], f[0], f[1], f[2], cos, 1 / 1.5, refracted)) {
-                double through = Intersect.plane(n[0], n[1], n[2], offsetOfPlane, p[0] - offset * f[0],
-                        p[1] - offset * f[1], p[2] - offset * f[2], refracted[0], refracted[1], refracted[2]);
+                double through = Intersect.planeBefore(n[0], n[1], n[2], offsetOfPlane, p[0] - offset * f[0],
+                        p[1] - offset * f[1], p[2] - offset * f[2], refracted[0], refracted[1], refracted[2],
+                        Intersect.MISS);
                 assertEquals(Intersect.MISS, through, "refracted ray re-hit the plane");
             }
         }

@@ -62,12 +62,14 @@ class OpticsTest {
         double thickness = 2, ior = 1.5, theta = Math.toRadians(40);
         double dx = Math.sin(theta), dz = Math.cos(theta);
         double ox = -dx / dz, oz = -1;
-        double t1 = Intersect.plane(0, 0, -1, 0, ox, 0, oz, dx, 0, dz); // entry face, normal facing the ray
+        // entry face, normal facing the ray
+        double t1 = Intersect.planeBefore(0, 0, -1, 0, ox, 0, oz, dx, 0, dz, Intersect.MISS);
         double px = ox + t1 * dx, pz = oz + t1 * dz;
         assertEquals(0, px, 1e-15);
         double[] inside = new double[3];
         assertTrue(Optics.refract(dx, 0, dz, 0, 0, -1, dz, 1 / ior, inside));
-        double t2 = Intersect.plane(0, 0, 1, thickness, px, 0, pz, inside[0], inside[1], inside[2]);
+        double t2 = Intersect.planeBefore(0, 0, 1, thickness, px, 0, pz, inside[0], inside[1], inside[2],
+                Intersect.MISS);
         double qx = px + t2 * inside[0], qz = pz + t2 * inside[2];
         assertEquals(thickness, qz, 1e-12);
         double[] outside = new double[3];
