@@ -103,6 +103,8 @@ class InterruptTest {
     /**
      * SIGTERM while a 7680 x 4320 PNG is being encoded (seconds of work after the render): the
      * write stops, the image there before is kept byte for byte, and nothing says it was written.
+     * 16 samples a pixel make the render outlast the run's first two quiet seconds, so the write's
+     * progress line, which the signal waits for, is shown however fast the machine encodes.
      */
     @Test
     void sigtermWhileTheImageIsWrittenKeepsTheOldImageAndSaysSo() throws Exception {
@@ -112,7 +114,7 @@ class InterruptTest {
         Path config = Files.writeString(dir.resolve("empty.properties"), "");
         Path scene = Files.writeString(dir.resolve("sky.yaml"), "camera: {position: [0, 1, -4], look_at: [0, 1, 0]}\n");
         List<String> err = stop("TERM", "writing the image: ", "--config", config.toString(), "--scene", scene.toString(),
-                "--output", output.toString(), "--width", "7680", "--height", "4320", "--spp", "1");
+                "--output", output.toString(), "--width", "7680", "--height", "4320", "--spp", "16");
         assertEquals(143, Integer.parseInt(err.remove(err.size() - 1)), err.toString());
         assertStoppedWithOneLine(err);
         assertEquals("", Files.readString(dir.resolve("out.txt")), "no 'wrote' line");
