@@ -137,7 +137,7 @@ public final class RenderScene {
 
     /**
      * The scene's primitives kind by kind, one kind per shape type of the registry (in its order);
-     * the objects in that order are added to {@code inOrder}.
+     * each primitive's object, in that order, is added to {@code inOrder}.
      */
     private static List<PrimitiveKind> kinds(Scene scene, Registry registry, List<SceneObject> inOrder) {
         List<PrimitiveKind> kinds = new ArrayList<>();
@@ -146,7 +146,9 @@ public final class RenderScene {
             for (SceneObject o : scene.objects()) {
                 if (type.holds(o.shape())) {
                     shapes.add(o.shape());
-                    inOrder.add(o);
+                    for (int k = type.primitives(o.shape()); k > 0; k--) {
+                        inOrder.add(o);
+                    }
                 }
             }
             kinds.add(type.compile(shapes));

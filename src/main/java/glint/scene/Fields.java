@@ -56,6 +56,17 @@ public final class Fields {
         return length;
     }
 
+    /** A number the mapping must have. */
+    public double number(String key) throws InputException {
+        return yaml.number(required(key), key);
+    }
+
+    /** An error about the value of {@code key} (which the mapping has), at its line and column. */
+    public InputException error(String key, String problem) {
+        Node value = entries.get(key);
+        return yaml.error(value != null ? value : node, problem);
+    }
+
     private Node required(String key) throws InputException {
         return yaml.required(node, entries, key, what);
     }

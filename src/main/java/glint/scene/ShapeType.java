@@ -5,17 +5,27 @@ import glint.input.InputException;
 import java.util.ArrayList;
 import java.util.List;
 import java.util.function.Function;
+import java.util.function.ToIntFunction;
 
 /**
  * A kind of primitive, registered once in {@link Registry}: how scene files write one (its
  * {@code type:} name and its keys besides {@code type} and {@code material}), the shape that
- * reading one gives, and the primitive kind a scene's shapes of this type compile to.
+ * reading one gives, the primitive kind a scene's shapes of this type compile to, and how many
+ * primitives each shape compiles to (one, or for a shape made of many, such as a mesh, its count:
+ * each of them gets the shape's material).
  */
 public record ShapeType<S extends Shape>(String name, Class<S> shapeClass, List<String> keys,
-                                         Reader<S> reader, Function<List<S>, PrimitiveKind> compiler) {
+                                         Reader<S> reader, Function<List<S>, PrimitiveKind> compiler,
+                                         ToIntFunction<S> primitiveCount) {
 
     public ShapeType {
         keys = List.copyOf(keys);
+    }
+
+    /** A type whose shapes compile to one primitive each. */
+    public ShapeType(String name, Class<S> shapeClass, List<String> keys, Reader<S> reader,
+                     Function<List<S>, PrimitiveKind> compiler) {
+        this(name, shapeClass, keys, reader, compiler, shape -> 1);
     }
 
     /** Reads one shape from its mapping's values. */
@@ -29,12 +39,27 @@ public record ShapeType<S extends Shape>(String name, Class<S> shapeClass, List<
         return shapeClass.isInstance(shape);
     }
 
-    /** All of a scene's shapes of this type (in their order) as one primitive kind, in flat arrays. */
+    /** How many primitives {@code shape}, of this type, compiles to. */
+    public int primitives(Shape shape) {
+        return primitiveCount.applyAsInt(shapeClass.cast(shape));
+    }
+
+    /**
+     * All of a scene's shapes of this type (in their order) as one primitive kind, in flat arrays:
+     * the primitives of each shape in turn.
+     */
     public PrimitiveKind compile(List<? extends Shape> shapes) {
         List<S> typed = new ArrayList<>(shapes.size());
+        int expected = 0;
         for (Shape shape : shapes) {
             typed.add(shapeClass.cast(shape));
+            expected += primitives(shape);
         }
-        return compiler.apply(typed);
+        PrimitiveKind kind = compiler.apply(typed);
+        if (kind.count() != expected) {
+            throw new IllegalStateException("the " + name + " kind holds " + kind.count()
+                    + " primitives, but its shapes count " + expected);
+        }
+        return kind;
     }
 }

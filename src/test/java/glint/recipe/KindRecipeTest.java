@@ -71,6 +71,48 @@ class KindRecipeTest {
     }
 
     @Test
+    void aShapeOfManyPrimitivesGivesEachOfThemTheShapesMaterial() {
+        // two rows of discs of their own colours before a blue wall, all facing a light along +z:
+        // each disc's centre shows 1 / pi x irradiance 2 in its row's colour
+        Registry registry = REGISTRY.with(DiscRow.TYPE);
+        String yaml = """
+                camera: {position: [0, 0, 0], look_at: [0, 0, 1], fov: 40}
+                lights:
+                  - {type: directional, direction: [0, 0, 1], intensity: 2}
+                objects:
+                  - {type: disc_row, first: [-1.5, 0.8, 5], step: [1.5, 0, 0], count: 3, radius: 0.5, material: {type: matte, color: [1, 0, 0]}}
+                  - {type: plane, point: [0, 0, 10], normal: [0, 0, -1], material: {type: matte, color: [0, 0, 1]}}
+                  - {type: disc_row, first: [-0.75, -0.8, 5], step: [1.5, 0, 0], count: 2, radius: 0.5, material: {type: matte, color: [0, 1, 0]}}
+                """;
+        int w = 80, h = 60;
+        FrameBuffer frame = Recipes.render(registry, yaml, w, h, 1);
+        double lit = 2 / Math.PI;
+        for (double x : new double[] {-1.5, 0, 1.5}) {
+            assertColour(frame, pixel(x, 0.8, w, h), lit, 0, 0);
+        }
+        for (double x : new double[] {-0.75, 0.75}) {
+            assertColour(frame, pixel(x, -0.8, w, h), 0, lit, 0);
+        }
+        assertColour(frame, pixel(0, -0.8, w, h), 0, 0, lit); // between the second row's discs: the wall
+        assertEquals("recipe.yaml:2:64: count must be a whole number from 1 to 100, got 2.5",
+                Recipes.error(registry, "objects:\n  - {type: disc_row, first: [0, 0, 5], step: [1, 0, 0], count: 2.5, radius: 1}\n"));
+    }
+
+    /** The pixel (x, y) of a w x h image whose camera ray meets the point (x, y, 5), the camera's as above. */
+    private static int[] pixel(double x, double y, int w, int h) {
+        double half = Math.tan(Math.toRadians(20));
+        return new int[] {(int) Math.floor((x / 5 / half + 1) / 2 * w),
+            (int) Math.floor((1 - y / 5 / (half * h / w)) / 2 * h)};
+    }
+
+    private static void assertColour(FrameBuffer frame, int[] pixel, double r, double g, double b) {
+        String where = "pixel " + pixel[0] + ", " + pixel[1];
+        assertEquals(r, frame.get(pixel[0], pixel[1], 0), 1e-6, where);
+        assertEquals(g, frame.get(pixel[0], pixel[1], 1), 1e-6, where);
+        assertEquals(b, frame.get(pixel[0], pixel[1], 2), 1e-6, where);
+    }
+
+    @Test
     void aDiscIsReadWithTheLoadersChecksAndMessages() {
         assertEquals("recipe.yaml:2:5: missing required key 'radius' in disc",
                 Recipes.error(REGISTRY, "objects:\n  - {type: disc, center: [0, 0, 5], normal: [0, 0, 1]}\n"));
