@@ -2,6 +2,7 @@ package glint.accel;
 
 import glint.geometry.Primitives;
 import glint.geometry.Hit;
+
 /**
  * What every ray asks of the scene's geometry: its nearest hit, and how much light passes along
  * it up to a distance (a shadow ray). Rays are unit length, world space; {@code skip} is the

@@ -1,6 +1,7 @@
 package glint.accel;
 
 import glint.geometry.Primitives;
+
 /**
  * An aggregate in front of another that answers some queries itself (nearest hits for
  * {@link EmptyInteriors} and {@link LeavingCells}, shadow rays for {@link LightCells}) and hands

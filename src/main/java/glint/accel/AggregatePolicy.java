@@ -1,6 +1,7 @@
 package glint.accel;
 
 import glint.geometry.Primitives;
+
 /**
  * The one place that decides how a scene's rays search its primitives, and every threshold and
  * margin of the structures that search them. Each says what it was measured on, or that it was

@@ -1,8 +1,9 @@
 package glint.accel;
 
-import glint.geometry.Primitives;
-import glint.geometry.Intersect;
 import glint.geometry.Hit;
+import glint.geometry.Intersect;
+import glint.geometry.Primitives;
+
 /**
  * A bounding volume hierarchy over the bounded primitives, in flat arrays; the unbounded ones
  * (planes) are tested by every ray before it. Nodes split at the best of a few binned

@@ -1,6 +1,7 @@
 package glint.accel;
 
 import glint.geometry.Hit;
+
 /**
  * A filter in front of another aggregate for shadow rays towards one point light L: a cube map of
  * direction cells around L lists the bounded primitives a ray starting within the ball (L, reach),

@@ -4,7 +4,6 @@ import glint.config.Config;
 import glint.config.ConfigLoader;
 import glint.config.Flags;
 import glint.input.InputException;
-import glint.render.RenderSettings;
 import java.io.PrintWriter;
 import java.nio.file.Files;
 import java.nio.file.Path;

@@ -2,6 +2,7 @@ package glint.accel;
 
 import glint.geometry.Primitives;
 import glint.geometry.Hit;
+
 /** Every ray tests every primitive: the brute force the renderer's aggregates are checked against. */
 public final class FlatList implements Aggregate {
 

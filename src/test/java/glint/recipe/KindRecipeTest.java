@@ -4,6 +4,7 @@ import static org.junit.jupiter.api.Assertions.assertEquals;
 import static org.junit.jupiter.api.Assertions.assertTrue;
 
 import glint.render.FrameBuffer;
+import glint.render.Renders;
 import glint.scene.Registry;
 import org.junit.jupiter.api.Test;
 
@@ -32,7 +33,7 @@ class KindRecipeTest {
         int inside = 0, outside = 0;
         for (int y = 0; y < h; y++) {
             for (int x = 0; x < w; x++) {
-                double[] d = Recipes.cameraRay(40, w, h, x, y);
+                double[] d = Renders.axisCameraRay(40, w, h, x, y);
                 double t = 5 / d[2];
                 double r = Math.hypot(t * d[0], t * d[1]); // distance from the disc's centre on its plane
                 if (r < 0.98) {

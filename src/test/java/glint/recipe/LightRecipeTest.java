@@ -4,6 +4,7 @@ import static org.junit.jupiter.api.Assertions.assertEquals;
 import static org.junit.jupiter.api.Assertions.assertTrue;
 
 import glint.render.FrameBuffer;
+import glint.render.Renders;
 import glint.scene.Registry;
 import org.junit.jupiter.api.Test;
 
@@ -31,7 +32,7 @@ class LightRecipeTest {
         int lit = 0, shadowed = 0;
         for (int y = 0; y < h; y++) {
             for (int x = 0; x < w; x++) {
-                double[] d = Recipes.cameraRay(60, w, h, x, y);
+                double[] d = Renders.axisCameraRay(60, w, h, x, y);
                 if (d[1] >= 0 || segmentMissBy(new double[3], scale(d, 100)) < 0.02) {
                     continue; // the ray misses the floor, or meets the ball or nearly so
                 }

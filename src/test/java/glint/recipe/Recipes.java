@@ -5,7 +5,6 @@ import glint.input.InputException;
 import glint.render.FrameBuffer;
 import glint.render.RenderScene;
 import glint.render.RenderSettings;
-import glint.render.Renders;
 import glint.render.Tracer;
 import glint.scene.Registry;
 import glint.scene.Scene;
@@ -45,10 +44,5 @@ final class Recipes {
             tracer.render(compiled, frame, 1, 0, 3);
         }
         return frame;
-    }
-
-    /** The camera ray through pixel (x, y) of a camera at the origin looking along +z ({@link Renders#axisCameraRay}). */
-    static double[] cameraRay(double fovDegrees, int width, int height, int x, int y) {
-        return Renders.axisCameraRay(fovDegrees, width, height, x, y);
     }
 }

@@ -8,7 +8,6 @@ import glint.config.Shading;
 import glint.accel.Candidates;
 import glint.accel.FlatList;
 import glint.accel.Frustum;
-import glint.geometry.Hit;
 import glint.geometry.Intersect;
 import glint.accel.TraversalStack;
 import java.util.Random;

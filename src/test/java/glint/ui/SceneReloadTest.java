@@ -7,7 +7,6 @@ import glint.config.Config;
 import glint.image.Srgb;
 import glint.math.Vector3d;
 import glint.scene.Scene;
-import java.io.IOException;
 import java.io.PrintWriter;
 import java.io.StringWriter;
 import java.nio.file.Files;
