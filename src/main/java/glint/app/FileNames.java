@@ -3,6 +3,7 @@ package glint.app;
 import glint.input.InputException;
 import java.nio.charset.Charset;
 import java.nio.charset.StandardCharsets;
+import java.nio.file.Files;
 import java.nio.file.InvalidPathException;
 import java.nio.file.Path;
 import java.util.List;
@@ -52,6 +53,22 @@ final class FileNames {
                     ? "a file name cannot hold the character NUL, got " + InputException.quotePath(name)
                     : localeProblem(name));
         }
+    }
+
+    /**
+     * Why a file name typed with a slash at its end is refused, or null ({@code new.png/}), which names a folder: as
+     * {@code cp}, {@code tee} and the shell's {@code >} refuse it, and not, as the path it would
+     * become, the file {@code new.png}. A folder of that name is left to the checks that say it is one.
+     */
+    static String folderNameProblem(String typed) {
+        if (!typed.endsWith("/") || Files.isDirectory(Path.of(typed))) {
+            return null;
+        }
+        String name = typed.replaceFirst("/+$", "");
+        return InputException.quotePath(typed) + " ends in '/', so it names a folder, and "
+                + (Files.exists(Path.of(name)) ? InputException.quotePath(name) + " is a file"
+                        : "there is no folder " + InputException.quotePath(name))
+                + "; write the file name without the '/'";
     }
 
     /** A name that cannot be a file name here; the message says why in words. */

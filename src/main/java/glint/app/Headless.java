@@ -119,12 +119,17 @@ final class Headless {
         long need = memoryNeeded(config, bytesPerPixel);
         long available = freeHeap - HEAP_RESERVE;
         if (need > available) {
+            String needed = megabytes(need), free = megabytes(Math.max(0, available));
+            if (needed.equals(free)) { // the difference is less than a megabyte
+                needed = String.format(Locale.ROOT, "%,d bytes", need);
+                free = String.format(Locale.ROOT, "%,d bytes", Math.max(0, available));
+            }
             throw new InputException("glint", 0, 0, String.format(Locale.ROOT,
                     "%dx%d at %d %s with %d %s needs about %s of memory; the Java heap has %s free "
                     + "(render fewer pixels, samples or threads, or start Java with a larger -Xmx)",
                     config.displayWidth(), config.displayHeight(), config.samples(),
                     config.samples() == 1 ? "sample" : "samples", config.effectiveThreads(),
-                    config.effectiveThreads() == 1 ? "thread" : "threads", megabytes(need), megabytes(Math.max(0, available))));
+                    config.effectiveThreads() == 1 ? "thread" : "threads", needed, free));
         }
     }
 

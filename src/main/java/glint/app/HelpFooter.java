@@ -1,5 +1,6 @@
 package glint.app;
 
+import glint.config.JarCommand;
 import glint.ui.KeyBindings;
 import java.util.ArrayList;
 import java.util.List;
@@ -7,22 +8,21 @@ import java.util.List;
 /** The end of {@code --help}: a few example commands and the window's keys (from {@link KeyBindings}). */
 final class HelpFooter {
 
-    private static final String JAR = "java -jar target/glint.jar";
-
     private HelpFooter() {
     }
 
     /** The footer's lines. */
     static List<String> lines() {
+        String jar = JarCommand.java();
         List<String> lines = new ArrayList<>();
         lines.add("");
         lines.add("Examples:");
         lines.add("  Open the window on the config's scene, or on another one:");
-        lines.add("    " + JAR);
-        lines.add("    " + JAR + " --scene scenes/glass.yaml");
+        lines.add("    " + jar);
+        lines.add("    " + jar + " --scene scenes/glass.yaml");
         lines.add("  Render a still to a file; time 10 frames:");
-        lines.add("    " + JAR + " --scene scenes/metals.yaml --output metals.png");
-        lines.add("    " + JAR + " --scene scenes/field.yaml --bench 10");
+        lines.add("    " + jar + " --scene scenes/metals.yaml --output metals.png");
+        lines.add("    " + jar + " --scene scenes/field.yaml --bench 10");
         lines.add("  Settings rank: a flag, then the scene's render: block, then the config.");
         lines.add("");
         lines.add("Window keys (Enter renders the view as a still; the window goes on):");

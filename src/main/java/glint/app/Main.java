@@ -3,6 +3,7 @@ package glint.app;
 import glint.config.Config;
 import glint.config.ConfigLoader;
 import glint.config.Flags;
+import glint.config.JarCommand;
 import glint.input.InputException;
 import java.io.PrintWriter;
 import java.nio.file.Files;
@@ -55,6 +56,10 @@ public final class Main implements Callable<Integer> {
     @Option(names = "--bench", paramLabel = "N", description = "render N frames of the still camera headless and time them")
     Integer bench;
 
+    /** The parsed command line, for the file names as they were typed. */
+    @CommandLine.Spec
+    CommandLine.Model.CommandSpec spec;
+
     /** Where the modes write their report lines and diagnostics; set by {@link #run}. */
     private PrintWriter out = new PrintWriter(System.out, true);
     private PrintWriter err = new PrintWriter(System.err, true);
@@ -80,7 +85,7 @@ public final class Main implements Callable<Integer> {
             if (String.valueOf(e.getMessage()).endsWith(FileNames.FIX)) {
                 return BAD_INPUT; // the options are right: the locale is not
             }
-            err.println("Try 'java -jar target/glint.jar --help' for the options.");
+            err.println(InputException.printable("Try '" + JarCommand.java() + " --help' for the options."));
             return BAD_INPUT;
         });
         cli.setExecutionExceptionHandler((e, c, p) -> {
@@ -155,6 +160,12 @@ public final class Main implements Callable<Integer> {
         notEmpty("--scene", scene);
         notEmpty("--config", config);
         notEmpty("--output", output);
+        for (String option : List.of("--scene", "--config", "--output")) {
+            String problem = typed(option) == null ? null : FileNames.folderNameProblem(typed(option));
+            if (problem != null) {
+                throw new InputException("glint", 0, 0, option + ": " + problem);
+            }
+        }
         Config settings = overrides(loadConfig());
         Path scenePath = scene != null ? scene : sceneFromConfig(settings);
         if (output != null && bench != null) {
@@ -186,6 +197,16 @@ public final class Main implements Callable<Integer> {
         return Files.exists(fallback) ? ConfigLoader.load(fallback) : Config.defaults();
     }
 
+    /** A file option's value as it was typed (the last one given), or null when it was not. */
+    private String typed(String option) {
+        var matched = spec.commandLine().getParseResult().matchedOption(option);
+        if (matched == null || matched.originalStringValues().isEmpty()) {
+            return null;
+        }
+        List<String> values = matched.originalStringValues();
+        return values.get(values.size() - 1);
+    }
+
     /** A path option given as an empty string would mean the current folder. */
     private static void notEmpty(String option, Path path) throws InputException {
         if (path != null && path.toString().isEmpty()) {
@@ -211,6 +232,12 @@ public final class Main implements Callable<Integer> {
         }
         Path resolved = configured.isAbsolute() || config == null || config.getParent() == null
                 ? configured : config.getParent().resolve(configured);
+        String folderName = FileNames.folderNameProblem(settings.scene().endsWith("/") ? resolved + "/" : "");
+        if (folderName != null) {
+            InputException at = configFile != null ? ConfigLoader.errorAt(configFile, "scene", "")
+                    : new InputException("glint", 0, 0, "");
+            throw new InputException(at.file(), at.line(), at.column(), "scene: " + folderName);
+        }
         if (configFile == null || Files.exists(resolved)) {
             return resolved;
         }

@@ -29,9 +29,10 @@ final class OutputFile {
             long size = ImageWriter.pfmBytes(width, height);
             long limit = fileSizeLimit(Path.of("/proc/self/limits"));
             if (size > limit) {
+                String[] sizes = TextFiles.sizes(size, limit);
                 throw refused(String.format(Locale.ROOT, "a %dx%d PFM is %s, more than the largest file this process may "
                         + "write (%s, ulimit -f); render a smaller image, a PNG, or raise the limit",
-                        width, height, TextFiles.size(size), TextFiles.size(limit)));
+                        width, height, sizes[0], sizes[1]));
             }
         }
     }

@@ -1,6 +1,7 @@
 package glint.app;
 
 import glint.config.Config;
+import glint.config.JarCommand;
 import glint.config.Flags;
 import glint.input.InputException;
 import glint.ui.ConfigSource;
@@ -56,7 +57,7 @@ final class WindowLauncher {
 
     private static int noDisplay(PrintWriter err, String why) {
         err.println("glint: " + why + "; render a still with "
-                + "--output FILE.png (for example: java -jar target/glint.jar --output out.png)");
+                + "--output FILE.png (for example: " + JarCommand.java() + " --output out.png)");
         return Main.FAILURE;
     }
 }

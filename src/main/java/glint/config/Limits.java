@@ -36,8 +36,16 @@ public record Limits(long maxImagePixels, long maxSceneBytes, int maxObjects, in
         if (width * height <= maxImagePixels) {
             return null;
         }
+        String size = megapixels(width * height), largest = megapixels(maxImagePixels);
+        if (size.equals(largest)) { // 7681x4320 beside 7680x4320: the difference shows only in pixels
+            size = String.format(java.util.Locale.ROOT, "%,d pixels", width * height);
+            largest = String.format(java.util.Locale.ROOT, "%,d pixels", maxImagePixels);
+        }
         return String.format(java.util.Locale.ROOT,
-                "%dx%d is %.1f megapixels; the largest image allowed is %.1f megapixels (config key max_image_pixels)",
-                width, height, width * height / 1e6, maxImagePixels / 1e6);
+                "%dx%d is %s; the largest image allowed is %s (config key max_image_pixels)", width, height, size, largest);
+    }
+
+    private static String megapixels(long pixels) {
+        return String.format(java.util.Locale.ROOT, "%.1f megapixels", pixels / 1e6);
     }
 }

@@ -21,9 +21,16 @@ final class PropertiesText {
     private int line = 1;
     private int lineStart;
 
+    /** A UTF-8 byte-order mark, which some editors put before the first line. */
+    private static final char BYTE_ORDER_MARK = '\uFEFF';
+
     private PropertiesText(String file, String text) {
         this.file = file;
         this.text = text;
+        if (!text.isEmpty() && text.charAt(0) == BYTE_ORDER_MARK) { // not part of the first key
+            pos = 1;
+            lineStart = 1;
+        }
     }
 
     /** Every key with its last value and the position of the line that set it last. */
@@ -49,7 +56,7 @@ final class PropertiesText {
                 }
                 continue;
             }
-            int keyLine = line, keyColumn = pos - lineStart + 1;
+            int keyLine = line, keyColumn = column(pos);
             String key = token(true);
             skipWhitespace();
             if (pos < text.length() && (text.charAt(pos) == '=' || text.charAt(pos) == ':')) {
@@ -107,8 +114,13 @@ final class PropertiesText {
                 return (char) Integer.parseInt(hex, 16);
             }
         }
-        throw new InputException(file, line, start - lineStart + 1,
+        throw new InputException(file, line, column(start),
                 "a \\u escape needs four hex digits, as in \\u00e9");
+    }
+
+    /** The column (from 1, in characters: an emoji is one) of index {@code at} of the current line. */
+    private int column(int at) {
+        return text.codePointCount(lineStart, at) + 1;
     }
 
     private void newLine() {

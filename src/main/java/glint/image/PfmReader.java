@@ -7,7 +7,7 @@ import java.nio.ByteOrder;
 import java.nio.file.Files;
 import java.nio.file.Path;
 
-/** Reads a colour Portable Float Map ("PF") into a frame buffer (rows top to bottom). */
+/** Reads a colour Portable Float Map ("PF") into a frame buffer (rows top to bottom), every float as the file has it. */
 public final class PfmReader {
 
     private PfmReader() {
@@ -27,9 +27,10 @@ public final class PfmReader {
         ByteBuffer body = ByteBuffer.wrap(bytes, pos[0], bytes.length - pos[0])
                 .order(scale < 0 ? ByteOrder.LITTLE_ENDIAN : ByteOrder.BIG_ENDIAN);
         FrameBuffer frame = new FrameBuffer(w, h);
+        float[] rgb = frame.rgb(); // the floats as they are in the file, an infinity or NaN too
         for (int y = h - 1; y >= 0; y--) {
-            for (int x = 0; x < w; x++) {
-                frame.set(x, y, body.getFloat(), body.getFloat(), body.getFloat());
+            for (int i = 3 * y * w, end = i + 3 * w; i < end; i++) {
+                rgb[i] = body.getFloat();
             }
         }
         return frame;

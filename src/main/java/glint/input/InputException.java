@@ -67,7 +67,26 @@ public final class InputException extends Exception {
 
     /** What the user wrote, in quotes, cut to its first 60 characters: {@code 'text'} or {@code 'text...'}. */
     public static String quote(String text) {
-        return "'" + head(text, MAX_QUOTED) + (text.length() > MAX_QUOTED ? "...'" : "'");
+        return "'" + cut(text) + "'";
+    }
+
+    /** What the user wrote, cut to its first 60 characters (code points): {@code text} or {@code text...}. */
+    public static String cut(String text) {
+        return text.codePointCount(0, text.length()) > MAX_QUOTED ? head(text, MAX_QUOTED) + "..." : text;
+    }
+
+    /**
+     * A number for a message that says it is beyond {@code limit}: with {@code digits} significant
+     * digits, or as many more as it takes to read differently from the limit (1.0000001e30 is not
+     * shown as 1.00e+30 beside a limit of 1e30).
+     */
+    public static String beyond(double value, double limit, int digits) {
+        for (int d = digits; ; d++) {
+            String shown = String.format(java.util.Locale.ROOT, "%." + d + "g", value);
+            if (d >= 17 || !shown.equals(String.format(java.util.Locale.ROOT, "%." + d + "g", limit))) {
+                return shown;
+            }
+        }
     }
 
     /**
@@ -75,14 +94,11 @@ public final class InputException extends Exception {
      * {@code ...} (the end names the file, the start where it is).
      */
     public static String cutPath(String path) {
-        if (path.length() <= MAX_PATH) {
+        int length = path.codePointCount(0, path.length());
+        if (length <= MAX_PATH) {
             return path;
         }
-        int from = path.length() - MAX_QUOTED;
-        if (Character.isLowSurrogate(path.charAt(from))) {
-            from++;
-        }
-        return head(path, MAX_QUOTED) + "..." + path.substring(from);
+        return head(path, MAX_QUOTED) + "..." + path.substring(path.offsetByCodePoints(0, length - MAX_QUOTED));
     }
 
     /** A file name in quotes, cut as by {@link #cutPath}. */
@@ -103,11 +119,25 @@ public final class InputException extends Exception {
         return m.appendTail(sb).toString();
     }
 
+    /**
+     * The message with every word (a run without spaces) longer than 60 characters cut as by
+     * {@link #cut}: for messages made elsewhere (the YAML reader's) that echo a name the user wrote.
+     */
+    public static String cutLongWords(String message) {
+        java.util.regex.Matcher m = java.util.regex.Pattern.compile("\\S{" + (MAX_QUOTED + 1) + ",}").matcher(message);
+        StringBuilder sb = new StringBuilder();
+        while (m.find()) {
+            m.appendReplacement(sb, java.util.regex.Matcher.quoteReplacement(cut(m.group())));
+        }
+        return m.appendTail(sb).toString();
+    }
+
+    /** The first {@code max} characters (code points) of the text. */
     private static String head(String text, int max) {
-        if (text.length() <= max) {
+        if (text.codePointCount(0, text.length()) <= max) {
             return text;
         }
-        return text.substring(0, Character.isHighSurrogate(text.charAt(max - 1)) ? max - 1 : max);
+        return text.substring(0, text.offsetByCodePoints(0, max));
     }
 
     public String file() {

@@ -90,6 +90,9 @@ public final class TextFiles {
      * file looks like UTF-16.
      */
     public static String utf8(String name, byte[] bytes) throws InputException {
+        if (looksLikeUtf32(bytes)) { // before UTF-16: UTF-32's byte-order mark begins with UTF-16's
+            throw new InputException(name, 1, 1, "not UTF-8 text: the file looks like UTF-32 (save it as UTF-8)");
+        }
         if (looksLikeUtf16(bytes)) {
             throw new InputException(name, 1, 1, "not UTF-8 text: the file looks like UTF-16 (save it as UTF-8)");
         }
@@ -122,6 +125,22 @@ public final class TextFiles {
         return text;
     }
 
+    /**
+     * Four-byte text: its first characters (up to 16) each four bytes, two of them NUL on the same side,
+     * as in a UTF-32 byte-order mark ({@code 00 00 FE FF}, {@code FF FE 00 00}) and every character
+     * below U+10000. UTF-8 text has no NUL, and UTF-16 no two in a row in its first characters.
+     */
+    private static boolean looksLikeUtf32(byte[] b) {
+        int units = Math.min(16, b.length / 4);
+        boolean bigEndian = units > 0, littleEndian = units > 0;
+        for (int i = 0; i < 4 * units; i += 4) {
+            boolean highZero = b[i] == 0 && b[i + 1] == 0, lowZero = b[i + 2] == 0 && b[i + 3] == 0;
+            bigEndian &= highZero && !lowZero;
+            littleEndian &= lowZero && !highZero;
+        }
+        return bigEndian || littleEndian;
+    }
+
     /** Two-byte text: a UTF-16 byte-order mark, or a NUL in one of the first two bytes. */
     private static boolean looksLikeUtf16(byte[] b) {
         if (b.length >= 2 && ((b[0] == (byte) 0xFE && b[1] == (byte) 0xFF) || (b[0] == (byte) 0xFF && b[1] == (byte) 0xFE))) {
@@ -145,20 +164,22 @@ public final class TextFiles {
     }
 
     /**
-     * An error at the first line longer than {@code maxChars} characters, or null. Very long lines
+     * An error at the first line longer than {@code maxChars} characters (code points), or null. Very long lines
      * make the YAML reader slow (its time grows with the square of a line's length).
      */
     public static InputException lineTooLong(String name, String text, int maxChars) {
-        int line = 1, start = 0;
+        int line = 1, length = 0; // in characters (code points): an emoji is one
         for (int i = 0; i <= text.length(); i++) {
             if (i == text.length() || text.charAt(i) == '\n') {
-                if (i - start > maxChars) {
+                if (length > maxChars) {
                     return new InputException(name, line, maxChars + 1, String.format(Locale.ROOT,
                             "line %d is %,d characters long; the longest line accepted is %,d (break it into shorter lines)",
-                            line, i - start, maxChars));
+                            line, length, maxChars));
                 }
                 line++;
-                start = i + 1;
+                length = 0;
+            } else if (!Character.isLowSurrogate(text.charAt(i))) {
+                length++;
             }
         }
         return null;
@@ -169,9 +190,15 @@ public final class TextFiles {
      * read the same.
      */
     public static String fileIsLargerThan(long size, long max, String largest) {
-        boolean same = size(size).equals(size(max));
-        return "the file is " + (same ? String.format(Locale.ROOT, "%,d bytes", size) : size(size)) + "; " + largest
-                + " is " + (same ? String.format(Locale.ROOT, "%,d bytes", max) : size(max));
+        String[] sizes = sizes(size, max);
+        return "the file is " + sizes[0] + "; " + largest + " is " + sizes[1];
+    }
+
+    /** Two sizes for a message that compares them: as {@link #size}, or in bytes when they would read the same. */
+    public static String[] sizes(long a, long b) {
+        boolean same = size(a).equals(size(b));
+        return same ? new String[] {String.format(Locale.ROOT, "%,d bytes", a), String.format(Locale.ROOT, "%,d bytes", b)}
+                : new String[] {size(a), size(b)};
     }
 
     /** A size for messages: "512 bytes", "12.5 KB", "8.0 MB" (1 KB = 1024 bytes). */

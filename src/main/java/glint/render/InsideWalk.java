@@ -63,9 +63,9 @@ final class InsideWalk {
                 }
             }
             v.radiance.set(sumR, sumG, sumB);
-            r = sumR;
-            g = sumG;
-            b = sumB;
+            r = v.radiance.r; // as set (bounded), as the recursion passes it on
+            g = v.radiance.g;
+            b = v.radiance.b;
         }
         return it.vertex(hitsLeft).radiance;
     }

@@ -5,7 +5,6 @@ import glint.math.Vector3d;
 import java.util.ArrayList;
 import java.util.LinkedHashSet;
 import java.util.List;
-import java.util.Locale;
 import java.util.Map;
 import java.util.Set;
 import org.snakeyaml.engine.v2.nodes.Node;
@@ -66,9 +65,8 @@ final class CameraReader {
         }
         double distance = view.isFinite() ? view.length() : Double.POSITIVE_INFINITY;
         if (!(distance <= SceneLoader.LONGEST && distance >= SceneLoader.SHORTEST)) {
-            throw yaml.error(m.getOrDefault("look_at", node), String.format(Locale.ROOT,
-                    "look_at is %s from the camera position; it must be between 1e-150 and 1e150 away",
-                    distance(position, lookAt)));
+            throw yaml.error(m.getOrDefault("look_at", node), "look_at is " + distance(position, lookAt)
+                    + " from the camera position; it must be between 1e-150 and 1e150 away");
         }
         Vector3d upChecked = SceneLoader.lengthSafe(up);
         if (upChecked.length() == 0
@@ -85,6 +83,6 @@ final class CameraReader {
         double largest = Math.max(Math.abs(dx), Math.max(Math.abs(dy), Math.abs(dz)));
         double length = 2 * largest * Math.sqrt((dx / largest) * (dx / largest) + (dy / largest) * (dy / largest)
                 + (dz / largest) * (dz / largest));
-        return String.format(Locale.ROOT, "%.2g", length);
+        return InputException.beyond(length, length > 1 ? SceneLoader.LONGEST : SceneLoader.SHORTEST, 2);
     }
 }

@@ -9,7 +9,6 @@ import java.util.ArrayList;
 import java.util.LinkedHashMap;
 import java.util.LinkedHashSet;
 import java.util.List;
-import java.util.Locale;
 import java.util.Map;
 import java.util.Optional;
 import java.util.Set;
@@ -38,17 +37,14 @@ public final class SceneLoader {
      * stay normal doubles, so intersections and normals neither underflow to 0 nor overflow.
      */
     static final double SHORTEST = 1e-150, LONGEST = 1e150;
-    private static final Set<String> MATERIAL_KEYS =
-            ordered("type", "color", "kd", "ks", "kt", "shininess", "ior", "roughness");
 
     private final String file;
     private final YamlTree yaml;
     private final CameraReader cameras;
     private final SceneLimits limits;
     private final Map<String, ShapeType<?>> shapeTypes = new LinkedHashMap<>();
-    private final Map<String, MaterialType> materialTypes = new LinkedHashMap<>();
     private final Map<String, LightType<?>> lightTypes = new LinkedHashMap<>();
-    private final Map<String, Material> materials = new LinkedHashMap<>(); // presets first, for hints
+    private final MaterialReader materials;
 
     private SceneLoader(String file, SceneLimits limits, Registry registry) {
         this.file = file;
@@ -57,10 +53,7 @@ public final class SceneLoader {
         this.limits = limits;
         registry.shapes().forEach(type -> shapeTypes.put(type.name(), type));
         registry.lights().forEach(type -> lightTypes.put(type.name(), type));
-        for (MaterialType type : registry.materials()) {
-            materialTypes.put(type.name(), type);
-            materials.put(type.name(), type.preset());
-        }
+        this.materials = new MaterialReader(yaml, registry);
     }
 
     /** Loads a scene file; {@code path} is also how the file is named in error messages. */
@@ -112,36 +105,41 @@ public final class SceneLoader {
         return TextFiles.utf8(path.toString(), bytes);
     }
 
+    /** The most aliases of lists or mappings a scene may have: an alias bomb's copies grow exponentially. */
+    static final int MAX_ALIASES = 50;
+
     private static Node compose(String file, String text, SceneLimits limits) throws InputException {
         LoadSettings settings = LoadSettings.builder()
                 .setLabel(file)
                 .setAllowDuplicateKeys(true) // reported by YamlTree with a position
-                .setMaxAliasesForCollections(50)
+                .setMaxAliasesForCollections(MAX_ALIASES)
                 .setAllowRecursiveKeys(false)
                 .setCodePointLimit((int) Math.min(Integer.MAX_VALUE, limits.maxFileBytes()))
                 .setUseMarks(true)
                 .build();
         Optional<Node> root;
         try {
-            Parser parser = new TagRefusingParser(new ParserImpl(settings, new StreamReader(settings, text)));
+            Parser parser = new TagRefusingParser(new AliasCountingParser(
+                    new ParserImpl(settings, new StreamReader(settings, text)), MAX_ALIASES));
             root = new Composer(settings, parser).getSingleNode();
+        } catch (AliasCountingParser.TooManyAliases e) {
+            throw new InputException(file, e.line, e.column, TOO_MANY_ALIASES);
         } catch (TagRefusingParser.TagFound e) {
             throw new InputException(file, e.line, e.column, "YAML tags such as " + InputException.quote(e.tag)
                     + " are not supported (write the value without it; a number is written plainly, a name too)");
         } catch (MarkedYamlEngineException e) {
             Mark mark = e.getProblemMark().or(e::getContextMark).orElse(null);
             String what = e.getProblem() != null ? e.getProblem() : "malformed YAML";
-            String problem = "YAML syntax error: " + what
-                    + (e.getContext() != null ? " (" + e.getContext() + ")" : "")
-                    + (what.contains("<block end>") ? "; check the indentation" : "");
+            String problem = InputException.cutLongWords("YAML syntax error: " + what
+                    + (e.getContext() != null && !e.getContext().isEmpty() ? " (" + e.getContext() + ")" : "")
+                    + (what.contains("<block end>") ? "; check the indentation" : ""));
             throw mark == null
                     ? new InputException(file, 0, 0, problem)
                     : new InputException(file, mark.getLine() + 1, mark.getColumn() + 1, problem);
         } catch (YamlEngineException e) {
             String message = String.valueOf(e.getMessage());
-            throw new InputException(file, 0, 0, message.startsWith("Number of aliases")
-                    ? "YAML error: more than 50 aliases of lists or mappings (an alias bomb?); write the values out"
-                    : "YAML error: " + message);
+            throw new InputException(file, 0, 0, message.startsWith("Number of aliases") ? TOO_MANY_ALIASES
+                    : "YAML error: " + InputException.cutLongWords(message));
         } catch (StackOverflowError e) {
             throw new InputException(file, 0, 0, "the YAML is nested too deeply to read");
         }
@@ -152,10 +150,13 @@ public final class SceneLoader {
         return root.get();
     }
 
+    private static final String TOO_MANY_ALIASES = "YAML error: more than " + MAX_ALIASES
+            + " aliases of lists or mappings (an alias bomb?); write the values out";
+
     private Scene scene(Node root) throws InputException {
         Map<String, Node> top = yaml.mapping(root, "the scene", TOP_KEYS);
         if (top.containsKey("materials")) {
-            namedMaterials(top.get("materials"));
+            materials.namedMaterials(top.get("materials"));
         }
         // "camera:" with nothing after it, like "camera: {}", keeps every default
         Camera camera = top.containsKey("camera") && !YamlTree.isNull(top.get("camera"))
@@ -189,86 +190,6 @@ public final class SceneLoader {
         return new Scene(camera, background, ambient, lights, objects, views, render);
     }
 
-    private void namedMaterials(Node node) throws InputException {
-        if (YamlTree.isNull(node)) {
-            return;
-        }
-        if (!(node instanceof MappingNode map)) {
-            throw yaml.error(node, "expected a mapping of material names to materials, got " + YamlTree.describe(node));
-        }
-        Set<String> seen = new LinkedHashSet<>();
-        for (var tuple : map.getValue()) {
-            String name = yaml.string(tuple.getKeyNode(), "a material name");
-            if (materialTypes.containsKey(name)) {
-                throw yaml.error(tuple.getKeyNode(), "material name " + InputException.quote(name)
-                        + " is a preset and cannot be redefined (choose another name)");
-            }
-            if (!seen.add(name)) {
-                throw yaml.error(tuple.getKeyNode(), "duplicate material name " + InputException.quote(name));
-            }
-            materials.put(name, materialMap(tuple.getValueNode(), "material " + InputException.quote(name)));
-        }
-    }
-
-    private Material material(Node node) throws InputException {
-        if (node instanceof ScalarNode && !YamlTree.isNull(node)) {
-            String name = yaml.string(node, "material");
-            Material found = materials.get(name);
-            if (found == null) {
-                throw yaml.error(node, "unknown material " + InputException.quote(name) + Suggestions.hint(name, materials.keySet()));
-            }
-            return found;
-        }
-        return materialMap(node, "material");
-    }
-
-    private Material materialMap(Node node, String what) throws InputException {
-        Map<String, Node> m = yaml.mapping(node, what, MATERIAL_KEYS);
-        Node typeNode = m.get("type");
-        if (typeNode == null) {
-            throw yaml.error(node, "missing required key 'type' in " + what
-                    + " (one of: " + String.join(", ", materialTypes.keySet()) + ")");
-        }
-        String typeName = yaml.string(typeNode, "material type");
-        if (!materialTypes.containsKey(typeName)) {
-            throw yaml.error(typeNode, "unknown material type " + InputException.quote(typeName)
-                    + Suggestions.hint(typeName, materialTypes.keySet()));
-        }
-        Material p = materialTypes.get(typeName).preset();
-        Vector3d color = m.containsKey("color") ? yaml.color(m.get("color"), "color") : p.color();
-        double kd = atLeastZero(m, "kd", p.kd());
-        double ks = atLeastZero(m, "ks", p.ks());
-        double kt = atLeastZero(m, "kt", p.kt());
-        double shininess = atLeastZero(m, "shininess", p.shininess());
-        double ior = p.ior();
-        if (m.containsKey("ior")) {
-            ior = yaml.number(m.get("ior"), "ior");
-            if (!(ior > 0)) {
-                throw yaml.error(m.get("ior"), "ior must be > 0, got " + YamlTree.source(m.get("ior"), ior));
-            }
-        }
-        double roughness = p.roughness();
-        if (m.containsKey("roughness")) {
-            roughness = yaml.number(m.get("roughness"), "roughness");
-            if (roughness < 0 || roughness > 1) {
-                throw yaml.error(m.get("roughness"), "roughness must lie in [0, 1], got "
-                        + YamlTree.source(m.get("roughness"), roughness));
-            }
-        }
-        return new Material(p.type(), color, kd, ks, kt, shininess, ior, roughness);
-    }
-
-    private double atLeastZero(Map<String, Node> m, String key, double fallback) throws InputException {
-        if (!m.containsKey(key)) {
-            return fallback;
-        }
-        double value = yaml.number(m.get(key), key);
-        if (value < 0) {
-            throw yaml.error(m.get(key), key + " must be >= 0, got " + YamlTree.source(m.get(key), value));
-        }
-        return value;
-    }
-
     private SceneObject object(Node node) throws InputException {
         ShapeType<?> type = shapeTypes.get(kind(node, "object", shapeTypes.keySet()));
         Set<String> keys = ordered("type");
@@ -276,11 +197,7 @@ public final class SceneLoader {
         keys.add("material");
         Map<String, Node> m = yaml.mapping(node, type.name(), keys);
         Shape shape = type.reader().read(new Fields(yaml, node, m, type.name()));
-        return new SceneObject(shape, materialOf(m));
-    }
-
-    private Material materialOf(Map<String, Node> m) throws InputException {
-        return m.containsKey("material") ? material(m.get("material")) : materials.get("matte");
+        return new SceneObject(shape, materials.of(m));
     }
 
     private Light light(Node node) throws InputException {
@@ -302,9 +219,9 @@ public final class SceneLoader {
         }
         double brightest = color.maxComponent() * intensity;
         if (brightest > MAX_RADIANCE) {
-            throw yaml.error(m.containsKey("intensity") ? m.get("intensity") : m.get("color"), String.format(Locale.ROOT,
-                    "color x intensity must be at most 1e30, got %.3g (the image stores radiance as float, "
-                    + "up to 3.4e38)", brightest));
+            throw yaml.error(m.containsKey("intensity") ? m.get("intensity") : m.get("color"),
+                    "color x intensity must be at most 1e30, got " + InputException.beyond(brightest, MAX_RADIANCE, 3)
+                    + " (the image stores radiance as float, up to 3.4e38)");
         }
         return type.reader().read(new Fields(yaml, node, m, what), color, intensity);
     }
@@ -314,6 +231,7 @@ public final class SceneLoader {
         if (!(node instanceof MappingNode map)) {
             throw yaml.error(node, "expected a mapping for " + what + ", got " + YamlTree.describe(node));
         }
+        Node mergeKey = null;
         for (var tuple : map.getValue()) {
             if (tuple.getKeyNode() instanceof ScalarNode k && k.getValue().equals("type")) {
                 String type = yaml.string(tuple.getValueNode(), what + " type");
@@ -323,6 +241,12 @@ public final class SceneLoader {
                 }
                 return type;
             }
+            if (mergeKey == null && YamlTree.isMergeKey(tuple.getKeyNode())) {
+                mergeKey = tuple.getKeyNode();
+            }
+        }
+        if (mergeKey != null) { // its type may be among the keys it would merge
+            throw yaml.mergeKeyError(mergeKey, what);
         }
         throw yaml.error(node, "missing required key 'type' in " + what + " (one of: " + String.join(", ", types) + ")");
     }
@@ -334,8 +258,9 @@ public final class SceneLoader {
     private Vector3d radiance(Node node, String what) throws InputException {
         Vector3d c = yaml.color(node, what);
         if (c.maxComponent() > MAX_RADIANCE) {
-            throw yaml.error(node, String.format(Locale.ROOT, "%s must be at most 1e30 in each component, got %.3g "
-                    + "(the image stores radiance as float, up to 3.4e38)", what, c.maxComponent()));
+            throw yaml.error(node, what + " must be at most 1e30 in each component, got "
+                    + InputException.beyond(c.maxComponent(), MAX_RADIANCE, 3)
+                    + " (the image stores radiance as float, up to 3.4e38)");
         }
         return c;
     }

@@ -55,9 +55,8 @@ final class YamlTree {
                 throw error(keyNode, "expected a plain key in " + what + ", got " + describe(keyNode));
             }
             String key = keyScalar.getValue();
-            if (key.equals("<<") && keyScalar.isPlain()) {
-                throw error(keyNode, "merge keys (<<) are not supported in " + what
-                        + "; write the keys out (an alias of a whole mapping, such as *name, works)");
+            if (isMergeKey(keyScalar)) {
+                throw mergeKeyError(keyNode, what);
             }
             if (!allowed.contains(key)) {
                 throw error(keyNode, "unknown key " + InputException.quote(key) + " in " + what
@@ -68,6 +67,17 @@ final class YamlTree {
             }
         }
         return entries;
+    }
+
+    /** Whether a key is YAML's merge key, {@code <<} written plainly. */
+    static boolean isMergeKey(Node key) {
+        return key instanceof ScalarNode s && s.isPlain() && s.getValue().equals("<<");
+    }
+
+    /** The error for a merge key in the mapping {@code what}, at the key. */
+    InputException mergeKeyError(Node key, String what) {
+        return error(key, "merge keys (<<) are not supported in " + what
+                + "; write the keys out (an alias of a whole mapping, such as *name, works)");
     }
 
     /** The mapping's value for a key it must have. */
@@ -140,9 +150,12 @@ final class YamlTree {
         return c;
     }
 
-    /** A number as the user wrote it (for range messages), e.g. "0" rather than "0.0". */
+    /**
+     * A number as the user wrote it (for range messages), e.g. "0" rather than "0.0", cut after 60
+     * characters as every value a message echoes.
+     */
     static String source(Node node, double value) {
-        return node instanceof ScalarNode s ? s.getValue().trim() : String.valueOf(value);
+        return node instanceof ScalarNode s ? InputException.cut(s.getValue().trim()) : String.valueOf(value);
     }
 
     static String describe(Node node) {

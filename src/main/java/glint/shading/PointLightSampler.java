@@ -3,6 +3,12 @@ package glint.shading;
 /** A point light (its vector the position): inverse-square irradiance along the direction to it. */
 public final class PointLightSampler implements LightSampler {
 
+    /**
+     * The largest 1/d^2 taken, that of a light 1e-125 away: nearer, the irradiance of a light of
+     * 1e30 (the brightest) from each of 100,000 lights stays a finite double.
+     */
+    static final double LARGEST_SCALE = 1e250;
+
     @Override
     public boolean sample(double[] vector, double[] power, int at, double px, double py, double pz,
                           LightSample out) {
@@ -16,7 +22,7 @@ public final class PointLightSampler implements LightSampler {
         out.dirX = lx * inv;
         out.dirY = ly * inv;
         out.dirZ = lz * inv;
-        double scale = inv * inv;
+        double scale = Math.min(inv * inv, LARGEST_SCALE);
         out.irradianceR = power[at] * scale;
         out.irradianceG = power[at + 1] * scale;
         out.irradianceB = power[at + 2] * scale;

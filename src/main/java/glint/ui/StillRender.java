@@ -1,14 +1,19 @@
 package glint.ui;
 
 import glint.config.Config;
+import glint.config.JarCommand;
 import glint.image.ImageWriter;
+import glint.input.InputException;
 import glint.render.FrameBuffer;
 import glint.render.RenderScene;
 import glint.render.Tracer;
 import glint.scene.Camera;
 import java.io.IOException;
 import java.io.PrintWriter;
+import java.nio.file.AccessDeniedException;
+import java.nio.file.FileSystemException;
 import java.nio.file.Files;
+import java.nio.file.NoSuchFileException;
 import java.nio.file.Path;
 import java.util.Locale;
 import java.util.Optional;
@@ -54,10 +59,10 @@ final class StillRender implements AutoCloseable {
         String settings = String.format(Locale.ROOT, "%dx%d, %d spp, %s, depth %d", still.displayWidth(),
                 still.displayHeight(), still.samples(), still.shading().key(), still.recursionMax());
         String recipe = "still: the same image headless, with this camera in " + scenePath + ":\n"
-                + String.format(Locale.ROOT, "  java -jar target/glint.jar --scene %s --width %d --height %d --spp %d"
-                        + " --shading %s --depth %d --output %s%n", scenePath, still.displayWidth(),
-                        still.displayHeight(), still.samples(), still.shading().key(), still.recursionMax(),
-                        png.getFileName())
+                + String.format(Locale.ROOT, "  %s --scene %s --width %d --height %d --spp %d"
+                        + " --shading %s --depth %d --output %s%n", JarCommand.java(), JarCommand.word(scenePath.toString()),
+                        still.displayWidth(), still.displayHeight(), still.samples(), still.shading().key(),
+                        still.recursionMax(), JarCommand.word(png.getFileName().toString()))
                 + CameraBlock.yaml(printed);
         Path pfmFile = pfm ? png.resolveSibling(png.getFileName().toString().replaceFirst("\\.png$", ".pfm")) : null;
         return new Job(scene, still.displayWidth(), still.displayHeight(), still.samples(), still.effectiveThreads(),
@@ -151,17 +156,42 @@ final class StillRender implements AutoCloseable {
         }
     }
 
-    /** Written aside and renamed when complete, as headless stills are; the aside file never stays. */
+    /**
+     * Written aside and renamed when complete, as headless stills are; the aside file never stays. A
+     * failure names the image, never the aside file: {@code /photos/a.png: permission denied}.
+     */
     private void write(FrameBuffer frame, Path file) throws IOException {
-        Path temp = ImageWriter.temporaryBeside(file);
+        Path temp;
+        try {
+            temp = ImageWriter.temporaryBeside(file);
+        } catch (IOException e) {
+            throw new IOException(why(e, file), e);
+        }
         try {
             if (cancelled) {
                 throw new CancellationException();
             }
             ImageWriter.write(frame, file, temp);
+        } catch (IOException e) {
+            throw new IOException(why(e, file), e);
         } finally {
             Files.deleteIfExists(temp);
         }
+    }
+
+    /** Why {@code file} could not be written, in words, naming it. */
+    static String why(IOException e, Path file) {
+        String name = InputException.cutPath(file.toString());
+        if (e instanceof AccessDeniedException) {
+            return name + ": permission denied";
+        }
+        if (e instanceof NoSuchFileException) {
+            return name + ": no such folder";
+        }
+        if (e instanceof FileSystemException f && f.getReason() != null) {
+            return name + ": " + f.getReason();
+        }
+        return name + ": " + (e.getMessage() != null ? e.getMessage() : e.toString());
     }
 
     /** Cancels a still under way and waits (a bounded time) until its thread has cleaned up. */

@@ -335,10 +335,14 @@ class ConfigLoaderTest {
 
     @Test
     void anImageLargerThanTheLimitIsRefusedWhereItsSizeIsSet() {
-        // 7680 x 4320 = 33,177,600 pixels is the default limit; one more row is too many
-        assertError("config.properties:2:1: display_width x display_height: 7680x4321 is 33.2 megapixels; "
-                + "the largest image allowed is 33.2 megapixels (config key max_image_pixels)",
+        // 7680 x 4320 = 33,177,600 pixels is the default limit; one more row is too many, 7680 pixels
+        // more, which megapixels to one decimal would round away (33.2 and 33.2): so the pixels are shown
+        assertError("config.properties:2:1: display_width x display_height: 7680x4321 is 33,185,280 pixels; "
+                + "the largest image allowed is 33,177,600 pixels (config key max_image_pixels)",
                 "display_height=4321\ndisplay_width=7680\n");
+        assertError("config.properties:2:1: display_width x display_height: 7680x4400 is 33.8 megapixels; "
+                + "the largest image allowed is 33.2 megapixels (config key max_image_pixels)",
+                "display_height=4400\ndisplay_width=7680\n");
     }
 
     @Test
@@ -419,6 +423,51 @@ class ConfigLoaderTest {
         Path utf16 = Files.write(dir.resolve("u.properties"), "threads=2\n".getBytes(java.nio.charset.StandardCharsets.UTF_16LE));
         e = assertThrows(InputException.class, () -> ConfigLoader.load(utf16));
         assertEquals(utf16 + ":1:1: not UTF-8 text: the file looks like UTF-16 (save it as UTF-8)", e.getMessage());
+    }
+
+    @Test
+    void aConfigSavedAsUtf8WithAByteOrderMarkIsRead(@TempDir Path dir) throws IOException, InputException {
+        byte[] bom = {(byte) 0xEF, (byte) 0xBB, (byte) 0xBF};
+        Path file = dir.resolve("bom.properties");
+        Files.write(file, bom);
+        Files.writeString(file, "threads=3\nsamples=9\n", java.nio.file.StandardOpenOption.APPEND);
+        Config c = ConfigLoader.load(file);
+        assertEquals(3, c.threads());
+        assertEquals(9, c.samples());
+        // a mistake on its first line is at column 1, the mark not counted
+        Files.write(file, bom);
+        Files.writeString(file, "threds=3\n", java.nio.file.StandardOpenOption.APPEND);
+        InputException e = assertThrows(InputException.class, () -> ConfigLoader.load(file));
+        assertEquals(file + ":1:1: unknown key 'threds' (did you mean 'threads'?)", e.getMessage());
+    }
+
+    @Test
+    void columnsCountCharactersNotUtf16Units() {
+        // "name=😀😀" is 7 characters (9 UTF-16 units): the escape starts at column 8
+        assertError("config.properties:1:8: a \\u escape needs four hex digits, as in \\u00e9", "name=😀😀\\uZZZZ\n");
+    }
+
+    @Test
+    void aUtf32ConfigIsNamedUtf32(@TempDir Path dir) throws IOException {
+        Path utf32 = Files.write(dir.resolve("u.properties"), "threads=2\n".getBytes(java.nio.charset.Charset.forName("UTF-32")));
+        InputException e = assertThrows(InputException.class, () -> ConfigLoader.load(utf32));
+        assertEquals(utf32 + ":1:1: not UTF-8 text: the file looks like UTF-32 (save it as UTF-8)", e.getMessage());
+        Path littleEndian = Files.write(dir.resolve("le.properties"),
+                "threads=2\n".getBytes(java.nio.charset.Charset.forName("UTF-32LE")));
+        e = assertThrows(InputException.class, () -> ConfigLoader.load(littleEndian));
+        assertEquals(littleEndian + ":1:1: not UTF-8 text: the file looks like UTF-32 (save it as UTF-8)", e.getMessage());
+    }
+
+    @Test
+    void theKeysTableOfConfigMdListsEveryKeyInOrder() throws IOException {
+        // the message for an unknown key lists KEYS; config.md says it lists the table's keys
+        List<String> documented = Files.readAllLines(Path.of("docs/config.md")).stream()
+                .dropWhile(line -> !line.equals("## Keys"))
+                .filter(line -> line.startsWith("| `"))
+                .takeWhile(line -> line.startsWith("| `"))
+                .map(line -> line.substring(3, line.indexOf('`', 3)))
+                .toList();
+        assertEquals(List.copyOf(ConfigLoader.KEYS), documented);
     }
 
     @Test

@@ -439,6 +439,166 @@ class SceneLoaderErrorTest {
                 """);
     }
 
+    // ---------------------------------------------------------------- values too large to mean anything
+
+    @Test
+    void aMaterialColourAbove1e30IsRefused() {
+        // "  m: {type: metal, color: " is 26 characters
+        assertError("scenes/x.yaml:2:27: color must be at most 1e30 in each component, got 1.00e+300 (a material's "
+                + "color is the share of the light it sends back, 1 for all of it)", """
+                materials:
+                  m: {type: metal, color: [0, 1e300, 0]}
+                """);
+    }
+
+    @Test
+    void aMaterialColourOf1e30IsAllowed() throws InputException {
+        Scene scene = SceneLoader.parse(FILE, """
+                objects:
+                  - {type: sphere, center: [0, 0, 0], radius: 1, material: {type: matte, color: [1e30, 0, 1e30]}}
+                """);
+        assertEquals(1e30, scene.objects().get(0).material().color().x());
+    }
+
+    @Test
+    void phongCoefficientsAbove1e30AreRefused() {
+        // "  m: {type: matte, kt: " is 23 characters
+        assertError("scenes/x.yaml:2:24: kt must be at most 1e30, got 2e30 (the share of the light it sends back, 1 for "
+                + "all of it)", """
+                materials:
+                  m: {type: matte, kt: 2e30}
+                """);
+        assertError("scenes/x.yaml:2:24: kd must be at most 1e30, got 1.0000001e30 (the share of the light it sends "
+                + "back, 1 for all of it)", """
+                materials:
+                  m: {type: matte, kd: 1.0000001e30}
+                """);
+    }
+
+    @Test
+    void aShininessAbove1e6IsRefused() {
+        assertError("scenes/x.yaml:2:31: shininess must be at most 1e6, got 1000001 (the highlight's exponent: 10 "
+                + "is broad, 1000 a point)", """
+                materials:
+                  m: {type: metal, shininess: 1000001}
+                """);
+    }
+
+    @Test
+    void anIorOutsideATenthToAHundredIsRefused() {
+        assertError("scenes/x.yaml:2:29: ior must lie between 0.1 and 100 (water is 1.33, glass 1.5, diamond 2.4), "
+                + "got 0.05", """
+                materials:
+                  clear: {type: glass, ior: 0.05}
+                """);
+        assertError("scenes/x.yaml:2:29: ior must lie between 0.1 and 100 (water is 1.33, glass 1.5, diamond 2.4), "
+                + "got 101", """
+                materials:
+                  clear: {type: glass, ior: 101}
+                """);
+    }
+
+    @Test
+    void aBackgroundJustAboveTheLimitShowsTheDifference() {
+        // %.3g would print 1.00e+30, the limit itself
+        assertError("scenes/x.yaml:1:13: background must be at most 1e30 in each component, got 1.000001e+30 "
+                + "(the image stores radiance as float, up to 3.4e38)", """
+                background: [0, 1.000001e30, 0]
+                """);
+    }
+
+    @Test
+    void aCameraJustFartherThanTheLimitShowsTheDifference() {
+        // "  look_at: " is 11 characters; %.2g would print 1.0e+150, the limit itself
+        assertError("scenes/x.yaml:3:12: look_at is 1.01e+150 from the camera position; it must be between 1e-150 "
+                + "and 1e150 away", """
+                camera:
+                  position: [0, 0, 0]
+                  look_at: [0, 0, 1.01e150]
+                """);
+    }
+
+    // ---------------------------------------------------------------- what is echoed, cut
+
+    @Test
+    void aNumberThousandsOfDigitsLongIsCutInTheMessage() {
+        String digits = "1" + "0".repeat(200) + "." + "0".repeat(5000); // 1e200
+        InputException e = failure("objects:\n  - {type: sphere, center: [0, 0, 0], radius: " + digits + "}\n");
+        assertEquals("scenes/x.yaml:2:47: radius must lie between 1e-150 and 1e150 (its square must be a normal double), "
+                + "got " + digits.substring(0, 60) + "...", e.getMessage());
+    }
+
+    @Test
+    void anUndefinedAliasOfAThousandCharactersIsCutInTheMessage() {
+        String name = "a".repeat(1000);
+        assertError("scenes/x.yaml:1:11: YAML syntax error: found undefined alias " + "a".repeat(60) + "...",
+                "objects: [*" + name + "]\n");
+    }
+
+    // ---------------------------------------------------------------- merge keys and aliases
+
+    @Test
+    void aMergeKeyInAnObjectWithoutATypeIsAMergeKeyError() {
+        // the type would come from the merged mapping: the merge key is what is wrong
+        assertError("scenes/x.yaml:3:6: merge keys (<<) are not supported in object; write the keys out (an alias "
+                + "of a whole mapping, such as *name, works)", """
+                objects:
+                  - &ball {type: sphere, center: [0, 1, 0], radius: 1}
+                  - {<<: *ball, center: [2, 1, 0]}
+                """);
+    }
+
+    @Test
+    void aMergeKeyInALightWithATypeIsAMergeKeyErrorOfItsType() {
+        // "  - {type: point, " is 18 characters
+        assertError("scenes/x.yaml:3:19: merge keys (<<) are not supported in point light; write the keys out (an "
+                + "alias of a whole mapping, such as *name, works)", """
+                lights:
+                  - &lamp {type: point, position: [0, 5, 0]}
+                  - {type: point, <<: *lamp}
+                """);
+    }
+
+    @Test
+    void theAliasBeyondFiftyIsReportedWhereItStands() {
+        StringBuilder text = new StringBuilder("objects:\n  - {type: sphere, center: &c [0, 0, 0], radius: 1}\n");
+        for (int i = 0; i < 60; i++) {
+            text.append("  - {type: sphere, center: *c, radius: 1}\n");
+        }
+        // aliases 1 to 50 on lines 3 to 52; the 51st on line 53, after "  - {type: sphere, center: " (27 characters)
+        assertError("scenes/x.yaml:53:28: YAML error: more than 50 aliases of lists or mappings (an alias bomb?); "
+                + "write the values out", text.toString());
+    }
+
+    @Test
+    void aliasesOfNumbersAreNotCounted() throws InputException {
+        StringBuilder text = new StringBuilder("objects:\n  - {type: sphere, center: [0, 0, 0], radius: &r 1}\n");
+        for (int i = 0; i < 60; i++) {
+            text.append("  - {type: sphere, center: [").append(i).append(", 0, 0], radius: *r}\n");
+        }
+        assertEquals(61, SceneLoader.parse(FILE, text.toString()).objects().size());
+    }
+
+    // ---------------------------------------------------------------- characters, not UTF-16 units
+
+    @Test
+    void columnsCountCharactersNotUtf16Units() {
+        // two emoji (each two UTF-16 units) before the bad value: "  😀😀: {type: matte, kd: " is 24 characters
+        assertError("scenes/x.yaml:2:25: kd must be >= 0, got -1", """
+                materials:
+                  😀😀: {type: matte, kd: -1}
+                """);
+    }
+
+    @Test
+    void aCommentOf40001EmojiIsALineOf40001Characters() throws InputException {
+        // 80,004 UTF-16 units, under the limit of 65,536 characters
+        SceneLoader.parse(FILE, "# " + "😀".repeat(40_001) + "\nobjects: []\n");
+        InputException e = failure("objects: []\n# " + "😀".repeat(65_535) + "\n");
+        assertEquals("scenes/x.yaml:2:65537: line 2 is 65,537 characters long; the longest line accepted is 65,536 "
+                + "(break it into shorter lines)", e.getMessage());
+    }
+
     @Test
     void negativeColorComponent() {
         assertError("scenes/x.yaml:1:13: background must not have negative components, got [0.0, -0.1, 0.0]",
