@@ -42,6 +42,17 @@ class HeadlessTest {
     }
 
     @Test
+    void aShortfallOfLessThanAMegabyteIsShownInBytes() {
+        Config c = Config.defaults().withSize(1920, 1080).withSamples(4096).withThreads(2);
+        // 159,006,720 bytes needed, 100,000 fewer free (with the 32 MB kept aside): both would read 152 MB
+        long free = 159_006_720L - 100_000 + (32L << 20);
+        InputException e = assertThrows(InputException.class, () -> Headless.checkMemory(c, 16, free));
+        assertEquals("glint: 1920x1080 at 4096 samples with 2 threads needs about 159,006,720 bytes of memory; the Java "
+                + "heap has 158,906,720 bytes free (render fewer pixels, samples or threads, or start Java with a larger "
+                + "-Xmx)", e.getMessage());
+    }
+
+    @Test
     void theLargestImageAllowedFitsTheSizeArithmetic() throws InputException {
         // 26,457 x 26,457 = 699,972,849 pixels, under max_image_pixels' ceiling of 700,000,000: no int overflows
         Config c = Config.defaults().withSize(26_457, 26_457).withSamples(1).withThreads(1);

@@ -16,6 +16,7 @@ import java.nio.charset.StandardCharsets;
 import java.nio.file.Files;
 import java.nio.file.Path;
 import java.util.Arrays;
+import java.util.List;
 import javax.imageio.ImageIO;
 import org.junit.jupiter.api.BeforeEach;
 import org.junit.jupiter.api.Test;
@@ -367,6 +368,50 @@ class MainTest {
         Result r = run("--config", config.toString(), "--scene", dir.resolve("none.yaml").toString(),
                 "--output", folder.toString());
         assertEquals(2, r.status());
+        assertEquals("glint: --output: '" + folder + "' is a folder; expected an image file name such as out.png",
+                r.firstErrLine());
+    }
+
+    @Test
+    void anOutputNameEndingInASlashIsRefusedAsCpRefusesIt() throws IOException {
+        Path scene = write("tiny.yaml", TINY_SCENE);
+        Path old = Files.writeString(dir.resolve("old.png"), "old");
+        // "new.png/" would become the path new.png, and "old.png/" replace old.png: cp and > refuse both
+        Result r = run("--config", config.toString(), "--scene", scene.toString(), "--output", dir + "/new.png/");
+        assertEquals(2, r.status());
+        assertEquals("glint: --output: '" + dir + "/new.png/' ends in '/', so it names a folder, and there is no folder '"
+                + dir + "/new.png'; write the file name without the '/'", r.firstErrLine());
+        r = run("--config", config.toString(), "--scene", scene.toString(), "--output=" + dir + "/old.png/");
+        assertEquals(2, r.status());
+        assertEquals("glint: --output: '" + dir + "/old.png/' ends in '/', so it names a folder, and '" + dir
+                + "/old.png' is a file; write the file name without the '/'", r.firstErrLine());
+        assertEquals("old", Files.readString(old));
+        try (var files = Files.list(dir)) {
+            assertEquals(List.of("empty.properties", "old.png", "tiny.yaml"),
+                    files.map(f -> f.getFileName().toString()).sorted().toList(), "nothing written");
+        }
+        r.assertNoStackTrace();
+    }
+
+    @Test
+    void aSceneOrConfigNameEndingInASlashIsRefused() throws IOException {
+        Path scene = write("tiny.yaml", TINY_SCENE);
+        Result r = run("--config", config.toString(), "--scene", scene + "/", "--output", dir.resolve("x.png").toString());
+        assertEquals(2, r.status());
+        assertEquals("glint: --scene: '" + scene + "/' ends in '/', so it names a folder, and '" + scene
+                + "' is a file; write the file name without the '/'", r.firstErrLine());
+        r = run("--config", config + "/", "--scene", scene.toString(), "--output", dir.resolve("x.png").toString());
+        assertEquals(2, r.status());
+        assertEquals("glint: --config: '" + config + "/' ends in '/', so it names a folder, and '" + config
+                + "' is a file; write the file name without the '/'", r.firstErrLine());
+        Path cfg = write("slash.properties", "threads=1\nscene=tiny.yaml/\n");
+        r = run("--config", cfg.toString(), "--output", dir.resolve("x.png").toString());
+        assertEquals(2, r.status());
+        assertEquals(cfg + ":2:1: scene: '" + scene + "/' ends in '/', so it names a folder, and '" + scene
+                + "' is a file; write the file name without the '/'", r.firstErrLine());
+        // a folder named with its slash is a folder, as before
+        Path folder = Files.createDirectory(dir.resolve("renders.png"));
+        r = run("--config", config.toString(), "--scene", scene.toString(), "--output", folder + "/");
         assertEquals("glint: --output: '" + folder + "' is a folder; expected an image file name such as out.png",
                 r.firstErrLine());
     }

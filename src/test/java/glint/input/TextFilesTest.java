@@ -43,6 +43,13 @@ class TextFilesTest {
     }
 
     @Test
+    void twoSizesThatWouldReadTheSameAreGivenInBytes() {
+        // a PFM of 4,097 bytes under a limit of 4,096: "4.0 KB, more than 4.0 KB" would say nothing
+        assertEquals(java.util.List.of("4,097 bytes", "4,096 bytes"), java.util.List.of(TextFiles.sizes(4097, 4096)));
+        assertEquals(java.util.List.of("234.4 KB", "4.0 KB"), java.util.List.of(TextFiles.sizes(240_012, 4096)));
+    }
+
+    @Test
     void messagesNeverHoldLineBreaksOrTerminalEscapes() {
         // ESC [2J clears the screen; U+202E turns the text after it around
         assertEquals("f:1:2: unknown 'a\\nb\\r\\t\\u001b[2J\\u202e'",
@@ -54,6 +61,37 @@ class TextFilesTest {
     void quotedUserTextIsCutToSixtyCharacters() {
         assertEquals("'" + "k".repeat(60) + "...'", InputException.quote("k".repeat(8 << 20)));
         assertEquals("'short'", InputException.quote("short"));
+    }
+
+    @Test
+    void cutTextCountsCharactersNotUtf16Units() {
+        // 60 emoji are 120 UTF-16 units and 60 characters: shown whole; 61 are cut after the 60th
+        assertEquals("'" + "😀".repeat(60) + "'", InputException.quote("😀".repeat(60)));
+        assertEquals("'" + "😀".repeat(60) + "...'", InputException.quote("😀".repeat(61)));
+        String path = "/" + "😀".repeat(200) + ".png";
+        assertEquals("/" + "😀".repeat(59) + "..." + "😀".repeat(56) + ".png", InputException.cutPath(path));
+    }
+
+    @Test
+    void aNumberBeyondALimitShowsAsManyDigitsAsTellThemApart() {
+        assertEquals("2.00e+30", InputException.beyond(2e30, 1e30, 3));
+        assertEquals("1.0000001e+30", InputException.beyond(1.0000001e30, 1e30, 3));
+        assertEquals("3.0e+160", InputException.beyond(3e160, 1e150, 2));
+        assertEquals("1.0000000000000002e+30", InputException.beyond(Math.nextUp(1e30), 1e30, 3));
+    }
+
+    @Test
+    void aUtf32FileIsNamedUtf32NotUtf16() {
+        for (String charset : java.util.List.of("UTF-32", "UTF-32BE", "UTF-32LE")) {
+            InputException e = assertThrows(InputException.class, () -> TextFiles.utf8("f",
+                    "objects: []\n".getBytes(java.nio.charset.Charset.forName(charset))));
+            assertEquals("f:1:1: not UTF-8 text: the file looks like UTF-32 (save it as UTF-8)", e.getMessage(), charset);
+        }
+        for (String charset : java.util.List.of("UTF-16", "UTF-16BE", "UTF-16LE")) {
+            InputException e = assertThrows(InputException.class, () -> TextFiles.utf8("f",
+                    "objects: []\n".getBytes(java.nio.charset.Charset.forName(charset))));
+            assertEquals("f:1:1: not UTF-8 text: the file looks like UTF-16 (save it as UTF-8)", e.getMessage(), charset);
+        }
     }
 
     @Test

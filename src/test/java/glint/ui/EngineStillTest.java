@@ -52,12 +52,17 @@ class EngineStillTest {
 
     /** An engine whose stills take {@code samples} samples a pixel. */
     private void open(int samples) throws InputException {
+        open(samples, shots);
+    }
+
+    /** An engine whose stills take {@code samples} samples a pixel and go to {@code folder}. */
+    private void open(int samples, Path folder) throws InputException {
         if (engine != null) {
             engine.close();
         }
         Config config = Config.defaults().withSize(W, H).withSamples(samples).withThreads(2);
         SceneSource source = new SceneSource(sceneFile, () -> config);
-        engine = new Engine(config, source.loadScene(), source, input, presenter, new Screenshots(shots), clock,
+        engine = new Engine(config, source.loadScene(), source, input, presenter, new Screenshots(folder), clock,
                 new PrintWriter(err, true));
         engine.printTo(new PrintWriter(out, true));
     }
@@ -146,5 +151,47 @@ class EngineStillTest {
         stepUntil("still: rendering");
         engine.close(); // as the loop's end does: cancels the still and waits for its thread
         assertEquals(List.of(), files(), "no image and no hidden part file");
+    }
+
+    @Test
+    void aStillThatCannotBeWrittenNamesTheImageAndWhyNeverItsTemporaryFile() throws Exception {
+        Path notAFolder = Files.writeString(dir.resolve("not-a-folder"), "");
+        open(1, notAFolder);
+        input.command(Action.RENDER_STILL);
+        stepUntil("still not written: ");
+        String image = Pattern.quote(notAFolder + "/") + "ball-\\d{8}-\\d{6}-\\d{3}\\.png";
+        assertTrue(message().matches("still not written: " + image + ": Not a directory"), message());
+        assertTrue(err.toString().contains("glint: " + message() + "\n"), err::toString);
+        assertFalse(err.toString().contains(".part"), err::toString);
+    }
+
+    @Test
+    void aStillInAReadOnlyFolderSaysPermissionDenied() throws Exception {
+        org.junit.jupiter.api.Assumptions.assumeFalse("root".equals(System.getProperty("user.name")),
+                "root may write in a read-only folder");
+        Path readOnly = Files.createDirectory(dir.resolve("read-only"));
+        Files.setPosixFilePermissions(readOnly, java.nio.file.attribute.PosixFilePermissions.fromString("r-xr-xr-x"));
+        try {
+            open(1, readOnly);
+            input.command(Action.RENDER_STILL);
+            stepUntil("still not written: ");
+            String image = Pattern.quote(readOnly + "/") + "ball-\\d{8}-\\d{6}-\\d{3}\\.png";
+            assertTrue(message().matches("still not written: " + image + ": permission denied"), message());
+            try (var list = Files.list(readOnly)) {
+                assertEquals(List.of(), list.toList());
+            }
+        } finally {
+            Files.setPosixFilePermissions(readOnly, java.nio.file.attribute.PosixFilePermissions.fromString("rwxr-xr-x"));
+        }
+    }
+
+    @Test
+    void whyAStillFailedNamesTheImageNotTheFileTheSystemNamed() {
+        Path png = Path.of("/photos/ball.png");
+        assertEquals("/photos/ball.png: permission denied",
+                StillRender.why(new java.nio.file.AccessDeniedException("/photos/.ball.png.3a8.part"), png));
+        assertEquals("/photos/ball.png: No space left on device", StillRender.why(
+                new java.nio.file.FileSystemException("/photos/.ball.png.3a8.part", null, "No space left on device"), png));
+        assertEquals("/photos/ball.png: File too large", StillRender.why(new IOException("File too large"), png));
     }
 }
