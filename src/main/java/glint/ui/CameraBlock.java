@@ -10,7 +10,9 @@ import java.math.RoundingMode;
 /**
  * A camera written as the {@code camera:} block of a scene file (key C): position, a look_at one unit
  * ahead, the camera's up and its field of view. Pasted into a scene, or under {@code views:}, it gives the
- * same picture: the numbers keep six decimals, a hundred-thousandth of a degree of the view.
+ * same picture: the numbers keep six decimals, a hundred-thousandth of a degree of the view. A scene far
+ * smaller or larger than a unit (a position of 5e-20, or 1e20) keeps its numbers whole instead, and a
+ * camera far from the origin looks at a point as much farther ahead as six decimals need.
  */
 final class CameraBlock {
 
@@ -36,7 +38,7 @@ final class CameraBlock {
     /** The camera as an item of a scene's {@code views:} list, indented as under the key: {@code - {...}}. */
     static String viewItem(Camera camera) {
         Vector3d p = camera.position();
-        return "  - {position: " + vector(p) + ", look_at: " + vector(p.add(camera.orientation().forward()))
+        return "  - {position: " + vector(p) + ", look_at: " + vector(lookAt(camera))
                 + ", up: " + vector(camera.orientation().up()) + ", fov: " + number(camera.fovDegrees()) + "}";
     }
 
@@ -44,24 +46,50 @@ final class CameraBlock {
     static Camera asPrinted(Camera camera) {
         try {
             return SceneLoader.parse("camera", yaml(camera)).camera();
-        } catch (InputException e) { // cannot happen: the block of a camera is a valid scene
-            throw new IllegalStateException(e.getMessage(), e);
+        } catch (InputException e) { // a camera no block can hold (turned, 1e300 out): the still is of it as it is
+            return camera;
         }
     }
 
     /** The block, four lines under {@code camera:}, each ending in a newline. */
     static String yaml(Camera camera) {
         Vector3d p = camera.position();
-        Vector3d forward = camera.orientation().forward();
         return "camera:\n"
                 + "  position: " + vector(p) + "\n"
-                + "  look_at: " + vector(p.add(forward)) + "\n"
+                + "  look_at: " + vector(lookAt(camera)) + "\n"
                 + "  up: " + vector(camera.orientation().up()) + "\n"
                 + "  fov: " + number(camera.fovDegrees()) + "\n";
     }
 
+    /**
+     * A point ahead of the camera: one unit, or a millionth of the position's distance from the origin
+     * when that is more (at 1e20, one unit ahead would round to the position itself), at most 1e150,
+     * the farthest a scene's look_at may be.
+     */
+    private static Vector3d lookAt(Camera camera) {
+        Vector3d p = camera.position();
+        return p.add(camera.orientation().forward().scale(Math.min(1e150, Math.max(1, largest(p) * 1e-6))));
+    }
+
+    private static double largest(Vector3d v) {
+        return Math.max(Math.abs(v.x()), Math.max(Math.abs(v.y()), Math.abs(v.z())));
+    }
+
+    /**
+     * Six decimals when the vector's largest number is of a size six decimals keep (1e-3 to 1e15);
+     * otherwise every number whole, as the shortest decimal that reads back as it is.
+     */
     private static String vector(Vector3d v) {
-        return "[" + number(v.x()) + ", " + number(v.y()) + ", " + number(v.z()) + "]";
+        double largest = largest(v);
+        if (largest == 0 || largest >= 1e-3 && largest < 1e15) {
+            return "[" + number(v.x()) + ", " + number(v.y()) + ", " + number(v.z()) + "]";
+        }
+        return "[" + whole(v.x()) + ", " + whole(v.y()) + ", " + whole(v.z()) + "]";
+    }
+
+    /** The shortest decimal that reads back as x: {@code 5.0E-20}; 0 as {@code 0}. */
+    static String whole(double x) {
+        return x == 0 ? "0" : Double.toString(x);
     }
 
     /** Six decimals at most, no trailing zeros, no minus zero. */

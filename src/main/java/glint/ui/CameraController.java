@@ -38,6 +38,11 @@ public final class CameraController {
     public static final double ORBIT_MISS_DISTANCE = 5;
 
     private static final double MAX_ELEVATION_SIN = Math.cos(Math.toRadians(PITCH_LIMIT_DEGREES));
+    /**
+     * The camera flies no farther from the origin than this in any coordinate (unless a scene put it
+     * farther, and then no farther out): the longest length a scene has, so key C's block of it reads back.
+     */
+    static final double FARTHEST = 1e150;
 
     private Vector3d position;
     private Quaternion orientation;
@@ -250,6 +255,11 @@ public final class CameraController {
         return Math.abs(pitch) < 1e-12 ? 0 : pitch; // at the bound: no turn, not a rounding error's worth
     }
 
+    /** The largest coordinate's size, NaN or infinity when there is one. */
+    private static double farthest(Vector3d p) {
+        return Math.max(Math.abs(p.x()), Math.max(Math.abs(p.y()), Math.abs(p.z())));
+    }
+
     private boolean move(InputFrame in) {
         double speed = speed() * (in.fast() ? FAST_FACTOR : 1);
         Vector3d local = new Vector3d(
@@ -259,12 +269,13 @@ public final class CameraController {
         if (local.x() == 0 && local.y() == 0 && local.z() == 0) {
             return false;
         }
-        if (freeFlight) {
-            position = position.add(orientation.rotate(local));
-        } else { // R and F along the world's up: a pitched camera does not drift forwards or back
-            position = position.add(orientation.rotate(new Vector3d(local.x(), 0, local.z())))
-                    .add(new Vector3d(0, local.y(), 0));
+        Vector3d moved = freeFlight ? position.add(orientation.rotate(local))
+                // R and F along the world's up: a pitched camera does not drift forwards or back
+                : position.add(orientation.rotate(new Vector3d(local.x(), 0, local.z()))).add(new Vector3d(0, local.y(), 0));
+        if (!(farthest(moved) <= Math.max(FARTHEST, farthest(position)))) { // a move_speed of 1e308: it stays
+            return false;
         }
+        position = moved;
         return true;
     }
 }

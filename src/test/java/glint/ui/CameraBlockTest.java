@@ -57,4 +57,27 @@ class CameraBlockTest {
         assertEquals("-1250.5", CameraBlock.number(-1250.5));
         assertEquals("100000000", CameraBlock.number(1e8));
     }
+
+    @Test
+    void aCameraOfATinyOrAHugeSceneRoundTripsItsNumbersWhole() throws InputException {
+        // six decimals would print 5e-20 as 0, and one unit ahead of 1e20 is 1e20 itself (look_at = position)
+        for (double scale : new double[] {5e-20, 1e-140, 1e20, 3e149}) {
+            Camera camera = Camera.lookAt(new Vector3d(0, scale, -scale), new Vector3d(0, 0, scale), Vector3d.UNIT_Y, 60);
+            String block = CameraBlock.yaml(camera);
+            Camera read = SceneLoader.parse("pasted.yaml", block).camera();
+            assertEquals(camera.position(), read.position(), block);
+            assertNear(camera.orientation().forward(), read.orientation().forward(), 2e-6, "forward of " + block);
+            String views = CameraBlock.blocks(camera);
+            assertEquals(camera.position(), SceneLoader.parse("views.yaml", views).views().get(0).camera().position());
+        }
+        // looking along (0, -5e-20, 1e-19), normalised: one unit ahead of a position of 1e-20 is that direction
+        assertEquals("""
+                camera:
+                  position: [0, 5.0E-20, -5.0E-20]
+                  look_at: [0, -0.447214, 0.894427]
+                  up: [0, 0.894427, 0.447214]
+                  fov: 60
+                """, CameraBlock.yaml(Camera.lookAt(new Vector3d(0, 5e-20, -5e-20), new Vector3d(0, 0, 5e-20),
+                Vector3d.UNIT_Y, 60)));
+    }
 }

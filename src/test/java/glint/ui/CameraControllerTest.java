@@ -338,4 +338,22 @@ class CameraControllerTest {
         assertEquals(90 - CameraController.PITCH_LIMIT_DEGREES, elevationDegrees(c), 1e-9);
         assertTrue(c.camera().orientation().forward().x() > 0, "still heading +x");
     }
+
+    @Test
+    void flightStopsAt1e150FromTheOriginWhereTheCameraCanStillBeWritten() throws Exception {
+        // move_speed 1e308, the largest a config takes: a second forward would be 1e308, two infinity
+        CameraController fast = new CameraController(new Camera(Vector3d.ZERO, Quaternion.IDENTITY, 60), 1e308, TURN);
+        assertFalse(fast.apply(hold(Action.FORWARD, 1)), "no move beyond 1e150, the longest length of a scene");
+        assertFalse(fast.apply(new InputFrame.Builder().hold(Action.FORWARD, 1).hold(Action.RIGHT, 1).build()));
+        assertEquals(Vector3d.ZERO, fast.camera().position());
+        CameraController far = new CameraController(new Camera(Vector3d.ZERO, Quaternion.IDENTITY, 60), 1e149, TURN);
+        assertTrue(far.apply(hold(Action.FORWARD, 10)));
+        assertEquals(new Vector3d(0, 0, 1e150), far.camera().position());
+        assertTrue(far.apply(hold(Action.BACK, 1)), "back towards the origin");
+        assertFalse(far.apply(hold(Action.FORWARD, 2)));
+        assertEquals(new Vector3d(0, 0, 9e149), far.camera().position());
+        // key C's block of that camera reads back as a scene
+        String block = CameraBlock.yaml(far.camera());
+        assertEquals(far.camera().position(), glint.scene.SceneLoader.parse("c.yaml", block).camera().position(), block);
+    }
 }
