@@ -4,8 +4,8 @@ package glint.shading;
 public final class PointLightSampler implements LightSampler {
 
     /**
-     * The largest 1/d^2 taken, that of a light 1e-125 away: nearer, the irradiance of a light of
-     * 1e30 (the brightest) from each of 100,000 lights stays a finite double.
+     * The largest 1/d^2 taken: a light nearer than 1e-125 lights as one 1e-125 away, so that 100,000
+     * lights of 1e30, the brightest, still sum to a finite double (1e285), which no factor of 0 makes NaN.
      */
     static final double LARGEST_SCALE = 1e250;
 
