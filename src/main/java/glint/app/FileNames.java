@@ -93,8 +93,7 @@ final class FileNames {
         for (String variable : List.of("LC_ALL", "LC_CTYPE", "LANG")) {
             String value = System.getenv(variable);
             if (value != null && !value.isEmpty()) {
-                return variable + "=" + (value.length() > InputException.MAX_QUOTED
-                        ? value.substring(0, InputException.MAX_QUOTED) + "..." : value);
+                return variable + "=" + InputException.cut(value);
             }
         }
         return "none set, so POSIX";
