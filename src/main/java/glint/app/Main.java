@@ -76,6 +76,12 @@ public final class Main implements Callable<Integer> {
         cli.registerConverter(Integer.class, Main::wholeNumber);
         cli.registerConverter(Path.class, Main::fileName);
         cli.setParameterExceptionHandler((e, a) -> {
+            if (e instanceof CommandLine.UnmatchedArgumentException unmatched) {
+                UnknownArguments.lines(unmatched.getUnmatched(), cli.getCommandSpec())
+                        .forEach(problem -> err.println(line("glint: " + problem)));
+                err.println("Try 'java -jar target/glint.jar --help' for the options.");
+                return BAD_INPUT;
+            }
             err.println(line("glint: " + e.getMessage()));
             if (String.valueOf(e.getMessage()).endsWith(FileNames.FIX)) {
                 return BAD_INPUT; // the options are right: the locale is not

@@ -76,7 +76,7 @@ class MainTest {
     void unknownOption() {
         Result r = run("--bogus");
         assertEquals(Main.BAD_INPUT, r.status());
-        assertEquals("glint: Unknown option: '--bogus'", r.firstErrLine());
+        assertEquals("glint: unknown option '--bogus'", r.firstErrLine());
         assertTrue(r.err().contains("--help"));
         r.assertNoStackTrace();
     }
