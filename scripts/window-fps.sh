@@ -15,7 +15,7 @@ set -e
 cd "$(dirname "$0")/.."
 w=${1:-800}
 h=${2:-600}
-scene=${3:-scenes/default.yaml}
+scene=${3:-scenes/bench/spec-example.yaml}
 out=target/window-fps
 mkdir -p "$out"
 printf 'debug=true\n' > "$out/fps.properties"

@@ -161,7 +161,7 @@ class OutputSafetyTest {
      */
     @Test
     void aFileSizeLimitRefusesAPfmBeforeTheWorkAndAPngAtTheEndKeepingTheOldImage() throws Exception {
-        Files.writeString(dir.resolve("scene.yaml"), Files.readString(Path.of("scenes/default.yaml")));
+        Files.writeString(dir.resolve("scene.yaml"), Files.readString(Path.of("scenes/bench/spec-example.yaml")));
         Files.writeString(dir.resolve("old.pfm"), "old");
         Files.writeString(dir.resolve("old.png"), "old");
         List<String> common = List.of("--config", config.toString(), "--scene", "scene.yaml", "--spp", "1", "--threads", "1");
