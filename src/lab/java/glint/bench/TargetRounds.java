@@ -14,7 +14,7 @@ import java.util.stream.Collectors;
 import java.util.stream.Stream;
 
 /**
- * Measures the frame-time targets of docs/benchmarks.md as they are stated: rounds of
+ * Measures the frame-time targets of docs/records/benchmarks.md as they are stated: rounds of
  * {@code --bench N} (800x600, 1 sample, depth 5), each run in a fresh JVM, for the spec's example scene,
  * 25 glass spheres and 1,000 spheres with 1 and 2 threads, one run after another; then prints the
  * table: the median of the rounds' medians (and of their p95), every round's median, and the
