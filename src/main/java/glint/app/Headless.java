@@ -1,6 +1,7 @@
 package glint.app;
 
 import glint.config.Config;
+import glint.config.LightTransport;
 import glint.config.Flags;
 import glint.image.ImageWriter;
 import glint.input.InputException;
@@ -87,9 +88,9 @@ final class Headless {
             }
             long elapsed = System.nanoTime() - start;
             progress.close(); // a bar on the terminal is cleared first
-            out.printf(Locale.ROOT, "wrote %s (%dx%d, %d spp, %d threads, %s, depth %d) in %.1f ms%n",
+            out.printf(Locale.ROOT, "wrote %s (%dx%d, %d spp, %d threads, %s%s, depth %d) in %.1f ms%n",
                     InputException.printable(output.toString()), frame.width(), frame.height(), config.samples(), config.effectiveThreads(),
-                    config.shading().key(), config.recursionMax(), elapsed / 1e6);
+                    config.shading().key(), config.transport() == LightTransport.PATH ? ", path" : "", config.recursionMax(), elapsed / 1e6);
             out.flush();
             return Main.OK;
         } finally {
