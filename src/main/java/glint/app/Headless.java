@@ -1,6 +1,7 @@
 package glint.app;
 
 import glint.config.Config;
+import glint.config.LightTransport;
 import glint.config.Flags;
 import glint.image.ImageWriter;
 import glint.input.InputException;
@@ -140,11 +141,14 @@ final class Headless {
         return String.format(Locale.ROOT, "%,d MB", (bytes + (1 << 20) - 1) >> 20);
     }
 
-    /** What a run renders with, as its report line says it: {@code 800x600, 4 spp, 2 threads, cook-torrance, depth 16}. */
+    /**
+     * What a run renders with, as its report line says it: {@code 800x600, 4 spp, 2 threads, cook-torrance, depth 16}
+     * ({@code cook-torrance, path, depth 16} with the path integrator).
+     */
     static String settingsOf(Config config) {
-        return String.format(Locale.ROOT, "%dx%d, %d spp, %d threads, %s, depth %d", config.displayWidth(),
+        return String.format(Locale.ROOT, "%dx%d, %d spp, %d threads, %s%s, depth %d", config.displayWidth(),
                 config.displayHeight(), config.samples(), config.effectiveThreads(), config.shading().key(),
-                config.recursionMax());
+                config.transport() == LightTransport.PATH ? ", path" : "", config.recursionMax());
     }
 
     static int bench(Path scenePath, ViewChoice view, Config settings, Flags flags, int frames, PrintWriter out,

@@ -52,6 +52,9 @@ public final class Main implements Callable<Integer> {
     @Option(names = "--shading", paramLabel = "MODEL", description = "cook-torrance or phong")
     String shading;
 
+    @Option(names = "--integrator", paramLabel = "NAME", description = "whitted (direct light, mirrors, glass) or path (light that bounces)")
+    String integrator;
+
     @Option(names = "--bench", paramLabel = "N", description = "render N frames of the still camera headless and time them")
     Integer bench;
 
@@ -248,7 +251,7 @@ public final class Main implements Callable<Integer> {
 
     /** The command line's settings, which rank above the scene's render: block and the config. */
     private Flags flags() {
-        return new Flags(width, height, spp, threads, depth, shading);
+        return new Flags(width, height, spp, threads, depth, shading, integrator);
     }
 
     private Config overrides(Config c) throws InputException {

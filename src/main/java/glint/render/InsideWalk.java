@@ -15,16 +15,16 @@ import glint.shading.Surface;
  * The kind gives each chord in closed form ({@link PrimitiveKind#chordInside}), so no bounce searches the
  * scene; where the cosine at a bounce is the one before (every bounce of a sphere), the boundary's
  * factors and the bend of the ray leaving are not worked out again. The radiance is what
- * {@link Integrator#trace} would find, to rounding, and the roulette's numbers are drawn in the same
+ * {@link WhittedIntegrator#trace} would find, to rounding, and the roulette's numbers are drawn in the same
  * order: first each bounce's reflected ray, going in, then each leaving ray, from the deepest bounce
  * out, as the recursion draws them. Bounce k uses the path vertex of its level, as the recursion
  * would, and a ray leaving it overwrites only the deeper ones, which are done with by then.
  */
 final class InsideWalk {
 
-    private final Integrator it;
+    private final WhittedIntegrator it;
 
-    InsideWalk(Integrator integrator) {
+    InsideWalk(WhittedIntegrator integrator) {
         this.it = integrator;
     }
 

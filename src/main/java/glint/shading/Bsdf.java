@@ -26,6 +26,28 @@ public interface Bsdf {
     default void boundary(ShadingContext c, PathVertex v) {
     }
 
+    // ------------------------------------------------------------ the BSDF as a function of directions
+    // wo and wi are unit world directions away from surface s (wo towards where the light goes, the
+    // reverse of the incoming ray), s's normal faces wo; the material is s.material.
+
+    /** f(wo, wi) of the material's lobes that are not delta, per channel, into {@code f} (0 where none). */
+    void evaluate(Materials m, Surface s, double woX, double woY, double woZ, double wiX, double wiY, double wiZ,
+                  Rgb f);
+
+    /** The density per solid angle with which {@link #sample} picks wi; 0 for a delta lobe's. */
+    double pdf(Materials m, Surface s, double woX, double woY, double woZ, double wiX, double wiY, double wiZ);
+
+    /**
+     * Samples a direction wi for wo from the uniform numbers u1, u2 (the direction) and uLobe (which
+     * lobe), into {@code out}: wi, the weight f cos / pdf, the pdf and whether a delta lobe chose it.
+     * False where no direction is sampled (it would point into the surface): the path ends.
+     */
+    boolean sample(Materials m, Surface s, double woX, double woY, double woZ, double u1, double u2, double uLobe,
+                   BsdfSample out);
+
+    /** Whether every lobe of material {@code material} is a delta (a mirror, smooth glass): no light sample sees it. */
+    boolean isDelta(Materials m, int material);
+
     /** Whether light passes through the material (the phong model's shadow rays pass kt of it). */
     default boolean transmits() {
         return false;

@@ -35,4 +35,50 @@ public final class Dielectric implements Bsdf {
     public boolean transmits() {
         return true;
     }
+
+    /** Smooth glass has only delta lobes. */
+    @Override
+    public void evaluate(Materials m, Surface s, double woX, double woY, double woZ, double wiX, double wiY,
+                         double wiZ, Rgb f) {
+        f.set(0, 0, 0);
+    }
+
+    @Override
+    public double pdf(Materials m, Surface s, double woX, double woY, double woZ, double wiX, double wiY,
+                      double wiZ) {
+        return 0;
+    }
+
+    /**
+     * Reflects with probability F (the Fresnel reflectance, 1 past the critical angle), weight 1;
+     * otherwise refracts, weight the material's tint: each lobe's factor over its probability.
+     */
+    @Override
+    public boolean sample(Materials m, Surface s, double woX, double woY, double woZ, double u1, double u2,
+                          double uLobe, BsdfSample out) {
+        int material = s.material;
+        double eta = Optics.eta(m.ior(material), s.front);
+        double cos = s.cosIncident;
+        double reflectance = m.exactFresnel() ? Optics.fresnelDielectric(cos, eta) : Optics.schlickDielectric(cos, eta);
+        out.pdf = 0;
+        out.delta = true;
+        double[] refracted = out.half;
+        if (uLobe >= reflectance && Optics.refract(-woX, -woY, -woZ, s.nx, s.ny, s.nz, cos, eta, refracted)) {
+            out.wiX = refracted[0];
+            out.wiY = refracted[1];
+            out.wiZ = refracted[2];
+            out.setWeight(m.color(material, 0), m.color(material, 1), m.color(material, 2));
+            out.transmitted = true;
+            return true;
+        }
+        Conductor.mirror(s, woX, woY, woZ, out);
+        out.setWeight(1, 1, 1);
+        out.transmitted = false;
+        return true;
+    }
+
+    @Override
+    public boolean isDelta(Materials m, int material) {
+        return true;
+    }
 }

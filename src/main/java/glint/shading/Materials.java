@@ -14,8 +14,10 @@ public final class Materials {
     private final double[] color; // 3 per material, linear RGB
     private final double[] kd, ks, kt, shininess, ior;
     private final double[] alpha; // GGX alpha = roughness^2; 0: no highlight
+    private final boolean exactFresnel;
 
-    private Materials(List<Parameters> materials) {
+    private Materials(List<Parameters> materials, boolean exactFresnel) {
+        this.exactFresnel = exactFresnel;
         int n = materials.size();
         bsdf = new Bsdf[n];
         color = new double[3 * n];
@@ -47,7 +49,17 @@ public final class Materials {
 
     /** The materials numbered in the order given. */
     public static Materials of(List<Parameters> materials) {
-        return new Materials(new ArrayList<>(materials));
+        return of(materials, true);
+    }
+
+    /** The materials numbered in the order given; glass reflects by the exact Fresnel equations or by Schlick's. */
+    public static Materials of(List<Parameters> materials, boolean exactFresnel) {
+        return new Materials(new ArrayList<>(materials), exactFresnel);
+    }
+
+    /** Whether a glass boundary reflects by the exact Fresnel equations (else by Schlick's). */
+    public boolean exactFresnel() {
+        return exactFresnel;
     }
 
     public int count() {

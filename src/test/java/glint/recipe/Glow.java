@@ -3,6 +3,10 @@ package glint.recipe;
 import glint.math.Vector3d;
 import glint.scene.MaterialType;
 import glint.shading.Bsdf;
+import glint.shading.BsdfSample;
+import glint.shading.Materials;
+import glint.shading.Rgb;
+import glint.shading.Surface;
 import glint.shading.PathVertex;
 import glint.shading.ShadingContext;
 
@@ -23,5 +27,29 @@ final class Glow implements Bsdf {
 
     @Override
     public void scatter(ShadingContext c, PathVertex v, double dx, double dy, double dz, int hitsLeft, double weight) {
+    }
+
+    /** It reflects nothing: no lobe to evaluate or sample. */
+    @Override
+    public void evaluate(Materials m, Surface s, double woX, double woY, double woZ, double wiX, double wiY,
+                         double wiZ, Rgb f) {
+        f.set(0, 0, 0);
+    }
+
+    @Override
+    public double pdf(Materials m, Surface s, double woX, double woY, double woZ, double wiX, double wiY,
+                      double wiZ) {
+        return 0;
+    }
+
+    @Override
+    public boolean sample(Materials m, Surface s, double woX, double woY, double woZ, double u1, double u2,
+                          double uLobe, BsdfSample out) {
+        return false;
+    }
+
+    @Override
+    public boolean isDelta(Materials m, int material) {
+        return true;
     }
 }
