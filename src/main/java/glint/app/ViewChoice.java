@@ -48,39 +48,39 @@ final class ViewChoice {
 
     /** {@code view 2 'from above'}: the chosen view, for a report line; empty for the scene's camera. */
     String describe(Scene scene) {
-        if (given == null) {
-            return "";
+        int i = given == null ? -1 : indexIn(scene.views());
+        return i < 0 ? "" : "view " + (i + 1) + " " + InputException.quote(scene.views().get(i).name());
+    }
+
+    /** Where the chosen view is in {@code views}: by its number, or else by its name; -1 when it is not there. */
+    private int indexIn(List<View> views) {
+        if (isNumber()) {
+            long n = given.length() > 9 ? Long.MAX_VALUE : Long.parseLong(given);
+            return n >= 1 && n <= views.size() ? (int) n - 1 : -1;
         }
-        List<View> views = scene.views();
         for (int i = 0; i < views.size(); i++) {
-            if (views.get(i).name().equals(given) || Integer.toString(i + 1).equals(given)) {
-                return "view " + (i + 1) + " " + InputException.quote(views.get(i).name());
+            if (views.get(i).name().equals(given)) {
+                return i;
             }
         }
-        return "";
+        return -1;
     }
 
     private View view(List<View> views, String file) throws InputException {
+        int i = indexIn(views);
+        if (i >= 0) {
+            return views.get(i);
+        }
         String what = "--view " + (isNumber() ? given : InputException.quote(given)) + ": ";
         if (views.isEmpty()) {
             throw new InputException("glint", 0, 0, what + InputException.quotePath(file)
                     + " has no views (a scene lists them under views:, docs/scene-format.md#views)");
         }
         if (isNumber()) {
-            long n = given.length() > 9 ? Long.MAX_VALUE : Long.parseLong(given);
-            if (n < 1 || n > views.size()) {
-                throw new InputException("glint", 0, 0, what + InputException.quotePath(file) + " has "
-                        + count(views.size()) + ", from 1 to " + views.size() + ": " + listed(views));
-            }
-            return views.get((int) n - 1);
+            throw new InputException("glint", 0, 0, what + InputException.quotePath(file) + " has "
+                    + count(views.size()) + ", from 1 to " + views.size() + ": " + listed(views));
         }
-        List<String> names = new ArrayList<>();
-        for (View v : views) {
-            if (v.name().equals(given)) {
-                return v;
-            }
-            names.add(v.name());
-        }
+        List<String> names = views.stream().map(View::name).toList();
         String close = Suggestions.closest(given, names);
         throw new InputException("glint", 0, 0, what + InputException.quotePath(file) + " has no view of that name"
                 + (close != null ? " (did you mean " + InputException.quote(close) + "?)" : "; its "
