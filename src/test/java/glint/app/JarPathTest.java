@@ -68,7 +68,7 @@ class JarPathTest {
         // from the folder above the jar's: relative to it, in quotes for the space
         Child.Result r = run(dir, "my jars/glint-1.jar", "--bogus");
         assertEquals(2, r.status(), r.err());
-        assertEquals(List.of("glint: Unknown option: '--bogus'",
+        assertEquals(List.of("glint: unknown option '--bogus'",
                 "Try 'java -jar \"my jars/glint-1.jar\" --help' for the options."), r.err().lines().toList());
         // from elsewhere: the absolute path
         Path elsewhere = Files.createDirectory(dir.resolve("elsewhere"));
