@@ -93,12 +93,18 @@ final class AccuracyChart {
         return knob == StudyConfig.Knob.DEPTH ? c.samples() == shipped.samples() : c.depth() == depth;
     }
 
-    /** Writes the panels in a grid of {@code columns}, each with the same series, the front named by {@code frontLabel}. */
+    /**
+     * Writes the panels in a grid of {@code columns}, each with the same series, the front named by
+     * {@code frontLabel}; with {@code legendBelow} each panel's legend goes under its plot (taller
+     * panels), else into the plot's top right corner, which expensive and inaccurate methods leave empty.
+     */
     static void write(List<Panel> panels, List<Series> series, Function<StudyConfig, String> frontLabel, int columns,
-                      int panelWidth, Path file) throws IOException {
+                      int panelWidth, boolean legendBelow, Path file) throws IOException {
         List<XYChart> charts = new ArrayList<>();
         for (Panel panel : panels) {
-            charts.add(chart(panel, series, frontLabel, panelWidth));
+            charts.add(legendBelow
+                    ? chart(panel, series, frontLabel, panelWidth, 620, Styler.LegendPosition.OutsideS)
+                    : chart(panel, series, frontLabel, panelWidth, 520, Styler.LegendPosition.InsideNE));
         }
         int rows = (charts.size() + columns - 1) / columns;
         if (rows * columns != charts.size()) {
@@ -107,12 +113,13 @@ final class AccuracyChart {
         Charts.save(charts, rows, columns, file);
     }
 
-    private static XYChart chart(Panel panel, List<Series> series, Function<StudyConfig, String> frontLabel, int width) {
+    private static XYChart chart(Panel panel, List<Series> series, Function<StudyConfig, String> frontLabel, int width,
+                                 int height, Styler.LegendPosition legend) {
         List<Measurement> ms = panel.points();
         XYChart chart = Charts.chart(panel.title(), "render CPU per frame, ms (both render threads)",
-                panel.metric().name(), true, true, width, 520);
+                panel.metric().name(), true, true, width, height);
         chart.getStyler().setLegendFont(new java.awt.Font(java.awt.Font.SANS_SERIF, java.awt.Font.PLAIN, 10));
-        Charts.legendInside(chart, Styler.LegendPosition.InsideNE); // expensive and inaccurate: empty
+        chart.getStyler().setLegendPosition(legend);
         chart.getStyler().setMarkerSize(6);
         double[] x = new double[ms.size()], y = new double[ms.size()];
         for (int i = 0; i < ms.size(); i++) {
@@ -123,7 +130,7 @@ final class AccuracyChart {
         chart.getStyler().setXAxisMin(min(x) / 1.6);
         chart.getStyler().setXAxisMax(max(x) * 1.6);
         chart.getStyler().setYAxisMin(min(y) / 2.5);
-        chart.getStyler().setYAxisMax(max(y) * 6); // and for the legend
+        chart.getStyler().setYAxisMax(max(y) * (legend == Styler.LegendPosition.InsideNE ? 6 : 2.5));
         List<Integer> front = Pareto.front(x, y, FRONT_TOLERANCE);
         XYSeries band = chart.addSeries("Pareto front", pick(x, front), pick(y, front));
         band.setLineColor(new Color(255, 120, 120, 110));

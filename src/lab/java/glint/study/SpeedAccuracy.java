@@ -74,6 +74,10 @@ public final class SpeedAccuracy {
             System.err.println("SpeedAccuracy: --docs and --out both choose the output folder; give one");
             System.exit(2);
         }
+        if (docs && !only.isEmpty()) {
+            System.err.println("SpeedAccuracy: --scene leaves scenes out of the tables; run --docs with all of them");
+            System.exit(2);
+        }
         long start = System.nanoTime();
         List<StudyScene> scenes = select(scenes(root), only);
         Plan plan = Plan.of(quick, runs);
@@ -127,7 +131,7 @@ public final class SpeedAccuracy {
             if (methods.contains(config)) {
                 againstPhysics.add(m);
             }
-            if (!config.isPath()) {
+            if (StudyConfigs.againstWhitted(config)) {
                 againstWhitted.add(new Measurement(scene.name(), config, m.millis(), m.cpuMillis(),
                         ImageErrors.of(frame, whitted)));
             }

@@ -44,6 +44,16 @@ public final class StudyConfigs {
     }
 
     /**
+     * Whether the configuration is measured against Whitted's own converged image: Whitted along
+     * depth (at the shipped samples) and along samples (at the shipped depth), and its other knobs;
+     * not the path tracer, nor ray casting at other samples than the shipped ones.
+     */
+    public static boolean againstWhitted(StudyConfig config) {
+        StudyConfig shipped = StudyConfig.shipped();
+        return !config.isPath() && (config.depth() != 1 || config.samples() == shipped.samples());
+    }
+
+    /**
      * A smaller set for a short run, every family still there: ray casting at 1 and 4 samples, Whitted
      * at depths 2 and 16 and at 1 sample, the path tracer at 1 to 64 samples, and the cut-off.
      */

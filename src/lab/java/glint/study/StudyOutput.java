@@ -34,8 +34,8 @@ final class StudyOutput {
                     AccuracyChart.Metric.FLIP)) {
                 panels.add(new AccuracyChart.Panel(name + ": " + metric.name() + " against physics", r.physics(), metric));
             }
-            AccuracyChart.write(panels, AccuracyChart.methodSeries(), c -> c.methodLabel(), panels.size(),
-                    PANEL_WIDTH, images.resolve("accuracy-" + name + ".png"));
+            AccuracyChart.write(panels, AccuracyChart.methodSeries(), StudyConfig::methodLabel, panels.size(),
+                    PANEL_WIDTH, true, images.resolve("accuracy-" + name + ".png"));
             verdicts.add(AccuracyReport.verdict(name, r.physics()));
             validation.append(r.validation());
             tables.append("#### ").append(name).append("\n\n").append(AccuracyReport.methodsTable(r.physics()))
@@ -45,7 +45,7 @@ final class StudyOutput {
         }
         int columns = whittedPanels.size() % 2 == 0 ? 2 : 1;
         AccuracyChart.write(whittedPanels, AccuracyChart.whittedSeries(), StudyConfig::label, columns, PANEL_WIDTH + 160,
-                images.resolve("accuracy-whitted.png"));
+                false, images.resolve("accuracy-whitted.png"));
         GeneratedSection.write(doc, "accuracy-verdict", AccuracyReport.verdictTable(verdicts));
         if (validation.length() > 0) {
             GeneratedSection.write(doc, "accuracy-validation", PhysicsValidation.HEADER + validation);
