@@ -23,6 +23,8 @@ final class HelpFooter {
         lines.add("  Render a still to a file; time 10 frames:");
         lines.add("    " + JAR + " --scene scenes/metals.yaml --output metals.png");
         lines.add("    " + JAR + " --scene scenes/field.yaml --bench 10");
+        lines.add("  Light that bounces (the path integrator), 64 samples a pixel:");
+        lines.add("    " + JAR + " --integrator path --spp 64 --output bounce.png");
         lines.add("  Settings rank: a flag, then the scene's render: block, then the config.");
         lines.add("");
         lines.add("Window keys (Enter renders the view as a still; the window goes on):");
