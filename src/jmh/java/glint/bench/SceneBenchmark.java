@@ -1,5 +1,6 @@
 package glint.bench;
 
+import glint.config.LightTransport;
 import glint.input.InputException;
 import glint.render.FrameBuffer;
 import glint.scene.SceneLoader;
@@ -21,8 +22,8 @@ import org.openjdk.jmh.annotations.Warmup;
 
 /**
  * The target scenes of docs/benchmarks.md: the default scene, 25 glass spheres, 1,000 spheres;
- * 800x600, 1 sample per pixel, depth 5, cook-torrance, 1 and 2 threads. Run with -prof gc to see
- * the allocation per frame.
+ * 800x600, 1 sample per pixel, depth 5, cook-torrance, 1 and 2 threads, Whitted's integrator and
+ * the path tracer. Run with -prof gc to see the allocation per frame.
  */
 @State(Scope.Benchmark)
 @BenchmarkMode(Mode.AverageTime)
@@ -38,6 +39,9 @@ public class SceneBenchmark {
     @Param({"1", "2"})
     public int threads;
 
+    @Param({"whitted", "path"})
+    public String integrator;
+
     private BenchFrames frames;
 
     @Setup(Level.Trial)
@@ -48,7 +52,8 @@ public class SceneBenchmark {
             default -> null;
         };
         frames = new BenchFrames(text == null ? SceneLoader.load(Path.of("scenes/default.yaml"))
-                : SceneLoader.parse(scene, text), BenchScenes.SETTINGS, threads);
+                : SceneLoader.parse(scene, text), BenchScenes.SETTINGS.withTransport(LightTransport.byKey(integrator)),
+                threads);
     }
 
     @TearDown(Level.Trial)
