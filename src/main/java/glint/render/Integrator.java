@@ -7,6 +7,7 @@ import glint.accel.TraversalStack;
 import glint.geometry.Hit;
 import glint.geometry.Intersect;
 import glint.geometry.Primitives;
+import glint.shading.LightQuery;
 import glint.shading.LightSample;
 import glint.shading.Lights;
 import glint.shading.Materials;
@@ -20,7 +21,7 @@ import glint.shading.Surface;
  * {@link WhittedIntegrator} and {@link PathIntegrator} say what the rays bring back. All vectors are
  * world space, directions unit length.
  */
-abstract class Integrator {
+abstract class Integrator implements LightQuery {
 
     RenderScene scene;
     Aggregate aggregate;
@@ -121,15 +122,24 @@ abstract class Integrator {
      * it that reaches s, through the shadow pass of whatever its shadow ray meets; 0 where the light
      * is behind the surface or blocked.
      */
+    @Override
     public final double lightReaching(Surface s, int i, LightSample out) {
         double cosine = lights.sample(i, s.px, s.py, s.pz, s.nx, s.ny, s.nz, out);
         if (!(cosine > 0)) { // NaN too: no light from an undefined direction
             return 0;
         }
         out.cosine = cosine;
+        return transmittance(s, out, i);
+    }
+
+    /**
+     * The fraction of light i, sampled as {@code light}, that reaches surface s: a shadow ray from s
+     * towards the light, up to it, through the scene's shadow pass of each primitive it meets.
+     */
+    private double transmittance(Surface s, LightSample light, int i) {
         rays++;
-        return shadowAggregate[i].transmittance(s.nearX(), s.nearY(), s.nearZ(), out.dirX, out.dirY, out.dirZ,
-                out.distance, s.skipNear, scene.shadowPass, stack);
+        return shadowAggregate[i].transmittance(s.nearX(), s.nearY(), s.nearZ(), light.dirX, light.dirY, light.dirZ,
+                light.distance, s.skipNear, scene.shadowPass, stack);
     }
 
     Primitives primitives() {

@@ -3,6 +3,7 @@ package glint.render;
 import glint.geometry.Hit;
 import glint.shading.Bsdf;
 import glint.shading.BsdfSample;
+import glint.shading.DirectLight;
 import glint.shading.LightSample;
 import glint.shading.Rgb;
 import glint.shading.Surface;
@@ -30,6 +31,7 @@ final class PathIntegrator extends Integrator {
     private final LightSample light = new LightSample();
     private final BsdfSample sampled = new BsdfSample();
     private final Rgb f = new Rgb();
+    private final Rgb lit = new Rgb();
     private final Rgb radiance = new Rgb();
     private final PathSamples random = new PathSamples();
 
@@ -73,11 +75,17 @@ final class PathIntegrator extends Integrator {
         for (int vertex = 1; ; vertex++) {
             describe(hit, ox, oy, oz, dx, dy, dz, s);
             Bsdf bsdf = materials.bsdf(s.material);
-            if (!bsdf.isDelta(materials, s.material)) {
-                directLight(bsdf, s, -dx, -dy, -dz);
+            if (materials.emits(s.material)) {
+                bsdf.emitted(materials, s, f);
                 sumR += throughputR * f.r;
                 sumG += throughputG * f.g;
                 sumB += throughputB * f.b;
+            }
+            if (!materials.isDelta(s.material)) {
+                DirectLight.sum(this, lights, materials, bsdf, s, -dx, -dy, -dz, light, f, lit);
+                sumR += throughputR * lit.r;
+                sumG += throughputG * lit.g;
+                sumB += throughputB * lit.b;
             }
             if (vertex >= hitsLeft) {
                 break;
@@ -114,25 +122,6 @@ final class PathIntegrator extends Integrator {
             }
         }
         radiance.set(sumR, sumG, sumB);
-    }
-
-    /**
-     * The light every light sends from surface s towards wo, into {@link #f}: f(wo, wi) x its
-     * irradiance x n.wi x the fraction its shadow ray passes, summed.
-     */
-    private void directLight(Bsdf bsdf, Surface s, double woX, double woY, double woZ) {
-        double r = 0, g = 0, b = 0;
-        for (int i = 0, n = lights.count(); i < n; i++) {
-            double pass = lightReaching(s, i, light);
-            if (pass > 0) {
-                bsdf.evaluate(materials, s, woX, woY, woZ, light.dirX, light.dirY, light.dirZ, f);
-                double k = pass * light.cosine;
-                r += f.r * light.irradianceR * k;
-                g += f.g * light.irradianceG * k;
-                b += f.b * light.irradianceB * k;
-            }
-        }
-        f.set(r, g, b);
     }
 
     /** Paths whose radiance was not finite and counted as black, so far. */

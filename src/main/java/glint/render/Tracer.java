@@ -113,23 +113,24 @@ public final class Tracer implements AutoCloseable {
     }
 
     /**
-     * Renders only sample {@code pass} (0 .. samples - 1) of each pixel's stratified pattern for
-     * frame index 0. The average of passes 0 .. samples - 1 equals {@code render(..., samples, 0, ...)}:
-     * the window refines progressively towards the still image.
+     * Renders only pass {@code pass} of a progressive image: sample {@code pass mod samples} of each
+     * pixel's stratified pattern of frame index {@code pass / samples}. The average of passes 0 ..
+     * samples - 1 equals {@code render(..., samples, 0, ...)}: the window refines progressively towards
+     * the still image, and past it (the path integrator) through the patterns of later frames.
      */
     public void renderPass(RenderScene renderScene, FrameBuffer target, int samples, int pass, int divider) {
-        if (pass < 0 || pass >= samples) {
-            throw new IllegalArgumentException("pass " + pass + " outside 0.." + (samples - 1));
-        }
-        run(renderScene, target, samples, pass, 1, 0, divider);
+        renderPasses(renderScene, target, samples, pass, 1, divider);
     }
 
-    /** Passes {@code first} .. {@code first + count - 1} in one go: their average (the window, when passes are quick). */
+    /**
+     * Passes {@code first} .. {@code first + count - 1} in one go, all of one pattern: their average
+     * (the window, when passes are quick).
+     */
     public void renderPasses(RenderScene renderScene, FrameBuffer target, int samples, int first, int count, int divider) {
-        if (first < 0 || count < 1 || first + count > samples) {
-            throw new IllegalArgumentException("passes " + first + " + " + count + " outside 0.." + (samples - 1));
+        if (first < 0 || count < 1 || first % samples + count > samples) {
+            throw new IllegalArgumentException("passes " + first + " + " + count + " outside one pattern of " + samples);
         }
-        run(renderScene, target, samples, first, count, 0, divider);
+        run(renderScene, target, samples, first % samples, count, first / samples, divider);
     }
 
     private void run(RenderScene renderScene, FrameBuffer target, int samples, int first, int count,

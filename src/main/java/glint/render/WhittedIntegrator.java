@@ -29,7 +29,7 @@ final class WhittedIntegrator extends Integrator implements ShadingContext {
     private final InsideWalk walk = new InsideWalk(this);
 
     private double minWeight;
-    private boolean exactFresnel, roulette;
+    private boolean roulette;
 
     // the camera ray whose path is being traced, which seeds its random decisions, and how many it made
     private int pathPixel, pathFrame, pathSample, pathDraws;
@@ -38,7 +38,6 @@ final class WhittedIntegrator extends Integrator implements ShadingContext {
     void prepared(RenderSettings settings) {
         model = settings.shading() == Shading.PHONG ? PHONG : COOK_TORRANCE;
         minWeight = settings.minWeight();
-        exactFresnel = settings.glassFresnel() == RenderSettings.GlassFresnel.EXACT;
         roulette = settings.pruning() == RenderSettings.Pruning.ROULETTE;
         if (vertices.length <= settings.recursionMax()) {
             PathVertex[] grown = new PathVertex[settings.recursionMax() + 1];
@@ -65,8 +64,7 @@ final class WhittedIntegrator extends Integrator implements ShadingContext {
      * expected value; with the plain cut-off, 0. The caller traces the child with weight
      * {@code childWeight x keep} and scales its radiance by {@code keep} when that is above 0.
      */
-    @Override
-    public double keep(double childWeight) {
+    double keep(double childWeight) {
         if (childWeight >= minWeight) {
             return 1;
         }
@@ -111,7 +109,12 @@ final class WhittedIntegrator extends Integrator implements ShadingContext {
     private Rgb shadeHit(PathVertex v, double ox, double oy, double oz, double dx, double dy, double dz,
                          int hitsLeft, double weight) {
         describe(v.hit, ox, oy, oz, dx, dy, dz, v.surface);
-        model.shade(this, v, dx, dy, dz, hitsLeft, weight);
+        model.direct(this, v, dx, dy, dz);
+        if (hitsLeft > 1) {
+            model.specular(this, v);
+            scatter(v, dx, dy, dz, hitsLeft, weight);
+        }
+        v.radiance.set(v.sum.r, v.sum.g, v.sum.b);
         return v.radiance;
     }
 
@@ -125,8 +128,12 @@ final class WhittedIntegrator extends Integrator implements ShadingContext {
                 weight, s.skipNear, s.insideNear);
     }
 
-    @Override
-    public void addReflected(Surface s, double dx, double dy, double dz, int hitsLeft, double weight, double fR,
+    /**
+     * Adds to {@code sum} the light mirrored at s (the mirror direction of d), weighted by the
+     * factor fR, fG, fB per channel: the ray, of path weight weight x the largest factor, is traced
+     * if {@link #keep} keeps it. {@code hitsLeft} counts this surface.
+     */
+    void addReflected(Surface s, double dx, double dy, double dz, int hitsLeft, double weight, double fR,
                              double fG, double fB, Rgb sum) {
         double childWeight = weight * Math.max(fR, Math.max(fG, fB));
         double keep = keep(childWeight);
@@ -139,17 +146,16 @@ final class WhittedIntegrator extends Integrator implements ShadingContext {
     }
 
     /**
-     * Adds to {@code v.sum} what v's boundary (its factors from {@link ShadingModel#boundary})
-     * reflects and refracts: the reflected ray through {@link #addReflected}, then the refracted one,
-     * of path weight weight x the tint's largest channel, traced if {@link #keep} keeps it.
+     * Adds to {@code v.sum} what the single rays of v's surface (their factors from
+     * {@link ShadingModel#specular}) bring back: the reflected ray through {@link #addReflected}, then
+     * the refracted one, of path weight weight x the tint's largest channel, traced if {@link #keep}
+     * keeps it. {@code hitsLeft} (at least 2) counts this surface.
      */
-    @Override
-    public void scatter(PathVertex v, double dx, double dy, double dz, int hitsLeft, double weight) {
-        if (hitsLeft <= 1) {
-            return;
-        }
+    private void scatter(PathVertex v, double dx, double dy, double dz, int hitsLeft, double weight) {
         Rgb sum = v.sum;
-        addReflected(v.surface, dx, dy, dz, hitsLeft, weight, v.reflect, v.reflect, v.reflect, sum);
+        if (v.reflectMax() > 0) {
+            addReflected(v.surface, dx, dy, dz, hitsLeft, weight, v.reflectR, v.reflectG, v.reflectB, sum);
+        }
         double childWeight = weight * Math.max(v.transmitR, Math.max(v.transmitG, v.transmitB));
         double keep = childWeight > 0 ? keep(childWeight) : 0;
         if (keep > 0) {
@@ -199,10 +205,5 @@ final class WhittedIntegrator extends Integrator implements ShadingContext {
     @Override
     public double ambient(int channel) {
         return channel == 0 ? scene.ambientR : channel == 1 ? scene.ambientG : scene.ambientB;
-    }
-
-    @Override
-    public boolean exactFresnel() {
-        return exactFresnel;
     }
 }

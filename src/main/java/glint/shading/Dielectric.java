@@ -7,28 +7,18 @@ package glint.shading;
 public final class Dielectric implements Bsdf {
 
     @Override
-    public void direct(ShadingContext c, PathVertex v, double dx, double dy, double dz) {
-        v.sum.set(0, 0, 0);
-    }
-
-    @Override
-    public void scatter(ShadingContext c, PathVertex v, double dx, double dy, double dz, int hitsLeft, double weight) {
-        boundary(c, v);
-        c.scatter(v, dx, dy, dz, hitsLeft, weight);
-    }
-
-    @Override
-    public void boundary(ShadingContext c, PathVertex v) {
-        Surface s = v.surface;
-        Materials m = c.materials();
+    public void specular(Materials m, Surface s, PathVertex v) {
         int material = s.material;
         v.eta = Optics.eta(m.ior(material), s.front);
-        double reflectance = c.exactFresnel() ? Optics.fresnelDielectric(s.cosIncident, v.eta)
-                : Optics.schlickDielectric(s.cosIncident, v.eta);
-        v.reflect = reflectance;
-        v.transmitR = (1 - reflectance) * m.color(material, 0);
-        v.transmitG = (1 - reflectance) * m.color(material, 1);
-        v.transmitB = (1 - reflectance) * m.color(material, 2);
+        double reflectance = reflectance(m, s.cosIncident, v.eta);
+        v.setReflect(reflectance, reflectance, reflectance);
+        v.setTransmit((1 - reflectance) * m.color(material, 0), (1 - reflectance) * m.color(material, 1),
+                (1 - reflectance) * m.color(material, 2));
+    }
+
+    /** The Fresnel reflectance at cosine cos and ratio eta: exact, or Schlick's where the scene says. */
+    private static double reflectance(Materials m, double cos, double eta) {
+        return m.exactFresnel() ? Optics.fresnelDielectric(cos, eta) : Optics.schlickDielectric(cos, eta);
     }
 
     @Override
@@ -59,7 +49,7 @@ public final class Dielectric implements Bsdf {
         int material = s.material;
         double eta = Optics.eta(m.ior(material), s.front);
         double cos = s.cosIncident;
-        double reflectance = m.exactFresnel() ? Optics.fresnelDielectric(cos, eta) : Optics.schlickDielectric(cos, eta);
+        double reflectance = reflectance(m, cos, eta);
         out.pdf = 0;
         out.delta = true;
         double[] refracted = out.half;

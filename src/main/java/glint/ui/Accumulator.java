@@ -13,7 +13,10 @@ final class Accumulator {
     private int width;
     private int height;
     private double[] sum;
+    /** Per pixel: the sum over calls of count x the square of the call's mean luminance, for the noise estimate. */
+    private double[] lumaSquares;
     private int passes;
+    private int calls;
     private int weight = 1; // passes in the frame being added
 
     /** Starts over for a width x height view. */
@@ -21,12 +24,15 @@ final class Accumulator {
         if (sum == null || newWidth != width || newHeight != height) {
             sum = null; // the old one can go before the new one is taken
             sum = new double[3 * newWidth * newHeight];
+            lumaSquares = new double[newWidth * newHeight];
             width = newWidth;
             height = newHeight;
         } else {
             java.util.Arrays.fill(sum, 0);
+            java.util.Arrays.fill(lumaSquares, 0);
         }
         passes = 0;
+        calls = 0;
     }
 
     /** Passes added since the last reset. */
@@ -42,6 +48,7 @@ final class Accumulator {
     /** Counts {@code count} more passes, traced in one go: their average is added with weight {@code count}. */
     void beginPasses(int count) {
         passes += count;
+        calls++;
         weight = count;
     }
 
@@ -55,7 +62,10 @@ final class Accumulator {
         double[] s = sum;
         double inverse = 1.0 / passes;
         double w = weight;
+        double[] squares = lumaSquares;
         for (int p = from, i = 3 * from; p < to; p++, i += 3) {
+            double luma = luma(in[i], in[i + 1], in[i + 2]);
+            squares[p] += w * luma * luma;
             double r = s[i] + w * in[i];
             double g = s[i + 1] + w * in[i + 1];
             double b = s[i + 2] + w * in[i + 2];
@@ -65,5 +75,30 @@ final class Accumulator {
             rgb[p] = SrgbEncoder.code((float) (r * inverse)) << 16 | SrgbEncoder.code((float) (g * inverse)) << 8
                     | SrgbEncoder.code((float) (b * inverse));
         }
+    }
+
+    /**
+     * The noise left in the average, relative to its brightness: the standard error of each pixel's
+     * mean luminance, summed over the pixels, over their summed mean luminance; NaN before two calls.
+     * A call of c passes is one draw whose variance is the samples' over c, so the spread of the calls'
+     * means, each weighted by its c, estimates the samples' variance.
+     */
+    double relativeNoise() {
+        if (calls < 2) {
+            return Double.NaN;
+        }
+        double errors = 0, means = 0, n = passes;
+        for (int p = 0, i = 0; p < lumaSquares.length; p++, i += 3) {
+            double mean = luma(sum[i], sum[i + 1], sum[i + 2]) / n;
+            double variance = Math.max(0, (lumaSquares[p] - n * mean * mean) / (calls - 1));
+            errors += Math.sqrt(variance / n);
+            means += mean;
+        }
+        return means > 0 ? errors / means : Double.NaN;
+    }
+
+    /** Rec. 709 luminance of linear RGB. */
+    private static double luma(double r, double g, double b) {
+        return 0.2126 * r + 0.7152 * g + 0.0722 * b;
     }
 }

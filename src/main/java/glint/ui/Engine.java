@@ -236,7 +236,7 @@ public final class Engine implements Runnable, SceneWatcher.Listener {
                 commands.run(command, in);
             }
         }
-        int samples = view.settings().config.samples();
+        int samples = Refinement.passes(view.settings().still());
         boolean moving = moved || in.motionHeld() || start - lastMotion < MOTION_HOLD_NANOS;
         boolean frameDue = moving ? view.needFrame() : view.passesDone() < samples;
         if (frameDue && start < maker.retryAt()) { // the last try failed: the next one comes when the pause is over
