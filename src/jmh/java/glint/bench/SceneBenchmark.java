@@ -21,7 +21,7 @@ import org.openjdk.jmh.annotations.TearDown;
 import org.openjdk.jmh.annotations.Warmup;
 
 /**
- * The target scenes of docs/benchmarks.md: the default scene, 25 glass spheres, 1,000 spheres;
+ * The target scenes of docs/benchmarks.md: the spec's example scene, 25 glass spheres, 1,000 spheres;
  * 800x600, 1 sample per pixel, depth 5, cook-torrance, 1 and 2 threads, Whitted's integrator and
  * the path tracer. Run with -prof gc to see the allocation per frame.
  */
@@ -33,11 +33,12 @@ import org.openjdk.jmh.annotations.Warmup;
 @Fork(1)
 public class SceneBenchmark {
 
-    @Param({"default", "glass-25", "field-1000"})
+    @Param({"spec-example", "glass-25", "field-1000"})
     public String scene;
 
     @Param({"1", "2"})
-    public int threads;
+    /** The tracer's render threads (JMH's "Threads: 1 thread" is the one thread that calls the benchmark). */
+    public int renderThreads;
 
     @Param({"whitted", "path"})
     public String integrator;
@@ -51,9 +52,9 @@ public class SceneBenchmark {
             case "field-1000" -> BenchScenes.field(1000);
             default -> null;
         };
-        frames = new BenchFrames(text == null ? SceneLoader.load(Path.of("scenes/default.yaml"))
+        frames = new BenchFrames(text == null ? SceneLoader.load(Path.of("scenes/bench/spec-example.yaml"))
                 : SceneLoader.parse(scene, text), BenchScenes.SETTINGS.withTransport(LightTransport.byKey(integrator)),
-                threads);
+                renderThreads);
     }
 
     @TearDown(Level.Trial)

@@ -12,8 +12,8 @@ import java.util.concurrent.atomic.AtomicReference;
 
 /**
  * Renders frames with a persistent pool of {@link TracerWorker}s. A frame is split into
- * divider x divider tiles that the workers take in turn; every pixel is computed from its own
- * coordinates alone, so the image does not depend on the thread or tile count.
+ * divider x divider tiles that the workers take in turn, spread over the frame ({@link TileOrder}); every
+ * pixel is computed from its own coordinates alone, so the image does not depend on the thread or tile count.
  */
 public final class Tracer implements AutoCloseable {
 
@@ -44,6 +44,7 @@ public final class Tracer implements AutoCloseable {
     private volatile int sampleCount;
     private volatile int frameIndex;
     private volatile int divider;
+    private volatile int tileStride;
 
     public Tracer(int threads) {
         if (threads < 1) {
@@ -146,6 +147,7 @@ public final class Tracer implements AutoCloseable {
         failure.set(null);
         tilesDone.set(0);
         frameTiles = this.divider * this.divider;
+        tileStride = TileOrder.stride(frameTiles);
         if (cancelled) {
             throw new CancellationException("the render was cancelled");
         }
@@ -181,9 +183,10 @@ public final class Tracer implements AutoCloseable {
         }
     }
 
-    private void renderTile(TracerWorker worker, int tile) {
+    private void renderTile(TracerWorker worker, int handedOut) {
         FrameBuffer f = frame;
         int d = divider;
+        int tile = TileOrder.tile(handedOut, d * d, tileStride); // spread over the frame: progress is a fair sample
         int column = tile % d, row = tile / d;
         int x0 = column * f.width() / d, x1 = (column + 1) * f.width() / d;
         int y0 = row * f.height() / d, y1 = (row + 1) * f.height() / d;

@@ -54,7 +54,7 @@ final class Accumulator {
 
     /**
      * Adds pixels {@code from} (inclusive) to {@code to} (exclusive) of a pass to the sums and writes the
-     * average so far, as 8-bit sRGB, to {@code rgb} (0xRRGGBB a pixel). Ranges that do not overlap may be
+     * average so far, as dithered 8-bit sRGB, to {@code rgb} (0xRRGGBB a pixel). Ranges that do not overlap may be
      * done on different threads at once.
      */
     void addAndEncode(FrameBuffer pass, int[] rgb, int from, int to) {
@@ -63,6 +63,8 @@ final class Accumulator {
         double inverse = 1.0 / passes;
         double w = weight;
         double[] squares = lumaSquares;
+        int width = pass.width();
+        int x = from % width, y = from / width;
         for (int p = from, i = 3 * from; p < to; p++, i += 3) {
             double luma = luma(in[i], in[i + 1], in[i + 2]);
             squares[p] += w * luma * luma;
@@ -72,8 +74,11 @@ final class Accumulator {
             s[i] = r;
             s[i + 1] = g;
             s[i + 2] = b;
-            rgb[p] = SrgbEncoder.code((float) (r * inverse)) << 16 | SrgbEncoder.code((float) (g * inverse)) << 8
-                    | SrgbEncoder.code((float) (b * inverse));
+            rgb[p] = SrgbEncoder.pixel((float) (r * inverse), (float) (g * inverse), (float) (b * inverse), x, y);
+            if (++x == width) {
+                x = 0;
+                y++;
+            }
         }
     }
 

@@ -227,6 +227,9 @@ public final class Engine implements Runnable, SceneWatcher.Listener {
                     size.height()));
         }
         boolean moved = controller.apply(in);
+        if (in.seconds(Action.ZOOM_IN) > 0 || in.seconds(Action.ZOOM_OUT) > 0) { // Z or X held: the fov as it changes
+            status.note(controller.fovNote());
+        }
         if (moved) {
             lastMotion = start;
             view.cameraMoved();
