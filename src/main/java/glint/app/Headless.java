@@ -87,10 +87,14 @@ final class Headless {
             }
             long elapsed = System.nanoTime() - start;
             progress.close(); // a bar on the terminal is cleared first
-            out.printf(Locale.ROOT, "wrote %s (%dx%d, %d spp, %d threads, %s, depth %d) in %.1f ms%n",
-                    InputException.printable(output.toString()), frame.width(), frame.height(), config.samples(), config.effectiveThreads(),
-                    config.shading().key(), config.recursionMax(), elapsed / 1e6);
-            out.flush();
+            try {
+                out.printf(Locale.ROOT, "wrote %s (%dx%d, %d spp, %d threads, %s, depth %d) in %.1f ms%n",
+                        InputException.printable(output.toString()), frame.width(), frame.height(), config.samples(),
+                        config.effectiveThreads(), config.shading().key(), config.recursionMax(), elapsed / 1e6);
+                out.flush();
+            } catch (Output.Failure e) { // the image is there all the same
+                throw e.after(InputException.cutPath(output.toString()) + " was written");
+            }
             return Main.OK;
         } finally {
             if (temp != null) {

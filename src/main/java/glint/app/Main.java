@@ -24,6 +24,8 @@ public final class Main implements Callable<Integer> {
     public static final int OK = 0;
     public static final int FAILURE = 1;
     public static final int BAD_INPUT = 2;
+    /** Exit status when standard output's reader has gone ({@code | head -1}): 128 + SIGPIPE, as a shell reports it. */
+    public static final int READER_GONE = 141;
 
     @Option(names = "--scene", paramLabel = "FILE", description = "scene file (default: the config's 'scene')")
     Path scene;
@@ -61,7 +63,7 @@ public final class Main implements Callable<Integer> {
 
     public static void main(String[] args) {
         Interrupts.handleOtherEndingSignals();
-        System.exit(run(args, new PrintWriter(System.out, true), new PrintWriter(System.err, true)));
+        System.exit(run(args, Output.standard(), new PrintWriter(System.err, true)));
     }
 
     /** Runs the program and returns its exit status; nothing is written but to out and err. */
@@ -73,6 +75,13 @@ public final class Main implements Callable<Integer> {
         cli.getCommandSpec().usageMessage().footer(HelpFooter.text());
         cli.setOut(out);
         cli.setErr(err);
+        cli.setExecutionStrategy(parsed -> { // --help and --version, printed by the parser, can fail too
+            try {
+                return new CommandLine.RunLast().execute(parsed);
+            } catch (Output.Failure e) {
+                return outputFailed(e, err);
+            }
+        });
         cli.registerConverter(Integer.class, Main::wholeNumber);
         cli.registerConverter(Path.class, Main::fileName);
         cli.setParameterExceptionHandler((e, a) -> {
@@ -87,6 +96,9 @@ public final class Main implements Callable<Integer> {
             if (e instanceof InputException bad) {
                 err.println(bad.getMessage());
                 return BAD_INPUT;
+            }
+            if (e instanceof Output.Failure failure) {
+                return outputFailed(failure, err);
             }
             if (e instanceof Headless.WriteFailure failure) {
                 err.println(line("glint: " + failure.getMessage()));
@@ -109,6 +121,18 @@ public final class Main implements Callable<Integer> {
             err.println(outOfMemory(e));
             return FAILURE;
         }
+    }
+
+    /**
+     * Standard output failed: a reader that has gone ends the program quietly, as a Unix tool's
+     * SIGPIPE does; any other failure is a line on standard error and status 1.
+     */
+    private static int outputFailed(Output.Failure failure, PrintWriter err) {
+        if (failure.readerGone()) {
+            return READER_GONE;
+        }
+        err.println(line("glint: " + failure.getMessage()));
+        return FAILURE;
     }
 
     /** The most characters a line of a message from elsewhere (the parser, the system) is given. */
@@ -175,7 +199,7 @@ public final class Main implements Callable<Integer> {
             }
             return Headless.bench(scenePath, settings, flags(), bench, out, err);
         }
-        return WindowLauncher.open(scenePath, settings, flags(), () -> overrides(loadConfig()), err);
+        return WindowLauncher.open(scenePath, settings, flags(), () -> overrides(loadConfig()), out, err);
     }
 
     private Config loadConfig() throws InputException {

@@ -49,12 +49,26 @@ public final class GlintWindow {
      */
     public static GlintWindow open(Config config, SceneSource source, Screenshots screenshots, PrintWriter err)
             throws InputException, UnavailableException {
-        return open(config, source, screenshots, err, WindowHooks.NONE);
+        return open(config, source, screenshots, new PrintWriter(System.out, true), err, WindowHooks.NONE);
+    }
+
+    /**
+     * {@link #open(Config, SceneSource, Screenshots, PrintWriter)}, key C's camera and the stills' reports
+     * printed to {@code out}: a line it cannot take is said in the overlay and on {@code err}.
+     */
+    public static GlintWindow open(Config config, SceneSource source, Screenshots screenshots, PrintWriter out,
+                                   PrintWriter err) throws InputException, UnavailableException {
+        return open(config, source, screenshots, out, err, WindowHooks.NONE);
     }
 
     /** {@link #open(Config, SceneSource, Screenshots, PrintWriter)} with test hooks. */
     static GlintWindow open(Config config, SceneSource source, Screenshots screenshots, PrintWriter err,
                             WindowHooks hooks) throws InputException, UnavailableException {
+        return open(config, source, screenshots, new PrintWriter(System.out, true), err, hooks);
+    }
+
+    private static GlintWindow open(Config config, SceneSource source, Screenshots screenshots, PrintWriter out,
+                                    PrintWriter err, WindowHooks hooks) throws InputException, UnavailableException {
         String tooLarge = config.limits().imageSizeProblem(config.displayWidth(), config.displayHeight());
         if (tooLarge != null) { // refused before any memory or window is taken
             throw new InputException("glint", 0, 0, "display_width x display_height: " + tooLarge);
@@ -84,6 +98,7 @@ public final class GlintWindow {
         Engine engine = new Engine(config, scene, source, input, hooks.presenter().apply(display[0]), screenshots,
                 Clock.SYSTEM, err, hooks.trace());
         engine.paceRefinement(RefinePacing.windowInterval(config.targetFps())); // quick passes: several at once
+        engine.printTo(out);
         GlintWindow window = new GlintWindow(frame[0], display[0], engine, input, watcher);
         onEventThread(() -> {
             InputListener.attach(input, display[0]);
