@@ -62,12 +62,18 @@ public final class Main implements Callable<Integer> {
     private PrintWriter err = new PrintWriter(System.err, true);
 
     public static void main(String[] args) {
+        PrintWriter err = new PrintWriter(System.err, true);
+        ThreadFailures failures = ThreadFailures.install(err); // every thread's error: one line, status 1
         Interrupts.handleOtherEndingSignals();
-        System.exit(run(args, Output.standard(), new PrintWriter(System.err, true)));
+        System.exit(failures.status(run(args, Output.standard(), err, failures)));
     }
 
     /** Runs the program and returns its exit status; nothing is written but to out and err. */
     public static int run(String[] args, PrintWriter out, PrintWriter err) {
+        return run(args, out, err, new ThreadFailures(err));
+    }
+
+    private static int run(String[] args, PrintWriter out, PrintWriter err, ThreadFailures failures) {
         Main main = new Main();
         main.out = out;
         main.err = err;
@@ -105,7 +111,7 @@ public final class Main implements Callable<Integer> {
                 return FAILURE;
             }
             if (e.getCause() instanceof OutOfMemoryError) { // in a render thread
-                err.println(outOfMemory(e.getCause()));
+                failures.outOfMemory(e.getCause());
                 return FAILURE;
             }
             if (e instanceof java.nio.file.FileSystemException fs && fs.getFile() != null) {
@@ -118,7 +124,7 @@ public final class Main implements Callable<Integer> {
         try {
             return cli.execute(args);
         } catch (OutOfMemoryError e) {
-            err.println(outOfMemory(e));
+            failures.outOfMemory(e);
             return FAILURE;
         }
     }
@@ -147,8 +153,13 @@ public final class Main implements Callable<Integer> {
         return text.length() <= MAX_LINE ? text : text.substring(0, MAX_LINE - 3) + "...";
     }
 
-    private static String outOfMemory(Throwable e) {
-        return "glint: out of memory (" + e.getMessage() + "); render fewer pixels, samples or threads, "
+    /** How the line that memory ran out begins, and the line itself when not even its reason can be had. */
+    static final String OUT_OF_MEMORY_START = "glint: out of memory";
+    static final String OUT_OF_MEMORY = OUT_OF_MEMORY_START + "; render fewer pixels, samples or threads, "
+            + "or start Java with a larger -Xmx";
+
+    static String outOfMemory(Throwable e) {
+        return OUT_OF_MEMORY_START + " (" + e.getMessage() + "); render fewer pixels, samples or threads, "
                 + "or start Java with a larger -Xmx";
     }
 
