@@ -3,6 +3,7 @@ package glint.app;
 import glint.config.Config;
 import glint.config.Flags;
 import glint.image.ImageWriter;
+import glint.image.PartFile;
 import glint.input.InputException;
 import glint.render.FrameBuffer;
 import glint.render.RenderScene;
@@ -13,7 +14,6 @@ import glint.scene.SceneLoader;
 import java.io.IOException;
 import java.io.InterruptedIOException;
 import java.io.PrintWriter;
-import java.nio.file.Files;
 import java.nio.file.Path;
 import java.util.Arrays;
 import java.util.List;
@@ -53,7 +53,7 @@ final class Headless {
      */
     static int renderStill(Path scenePath, List<Path> inputs, Config settings, Flags flags, Path output,
                            PrintWriter out, PrintWriter err) throws InputException, IOException {
-        Path temp = null;
+        PartFile temp = null;
         try (Interrupts interrupts = Interrupts.install(err, "glint: interrupted; no image written");
              Progress progress = Progress.start(err)) {
             temp = OutputFile.prepare(output, inputs);
@@ -76,9 +76,9 @@ final class Headless {
                 return INTERRUPTED;
             }
             progress.step("writing the image", interrupts::writeProgress);
-            OutputFile.keepPermissions(output, temp);
+            OutputFile.keepPermissions(output, temp.path());
             try {
-                ImageWriter.write(frame, output, temp, interrupts);
+                ImageWriter.write(frame, output, temp.path(), interrupts);
             } catch (InterruptedIOException e) {
                 interrupts.report("glint: interrupted; no image written");
                 return INTERRUPTED;
@@ -98,7 +98,7 @@ final class Headless {
             return Main.OK;
         } finally {
             if (temp != null) {
-                Files.deleteIfExists(temp);
+                temp.close(); // wherever its folder is now: renamed during the render, it keeps nothing
             }
         }
     }

@@ -1,12 +1,11 @@
 package glint.app;
 
 import glint.image.ImageWriter;
+import glint.image.PartFile;
 import glint.render.Tracer;
 import java.io.IOException;
 import java.io.InterruptedIOException;
 import java.io.PrintWriter;
-import java.nio.file.Files;
-import java.nio.file.Path;
 import java.util.List;
 import java.util.concurrent.CountDownLatch;
 import java.util.concurrent.TimeUnit;
@@ -32,7 +31,7 @@ final class Interrupts implements AutoCloseable, ImageWriter.Watcher {
     private final PrintWriter err;
     private final String message;
     private volatile Tracer tracer;
-    private volatile Path temp;
+    private volatile PartFile temp;
     private volatile boolean stopping;
     private volatile boolean written;
     private volatile double writeProgress;
@@ -78,7 +77,7 @@ final class Interrupts implements AutoCloseable, ImageWriter.Watcher {
     }
 
     /** The tracer to cancel and the temporary file to delete if the program is stopped. */
-    void watch(Tracer renderer, Path temporaryFile) {
+    void watch(Tracer renderer, PartFile temporaryFile) {
         this.tracer = renderer;
         if (temporaryFile != null) {
             this.temp = temporaryFile;
@@ -149,13 +148,9 @@ final class Interrupts implements AutoCloseable, ImageWriter.Watcher {
     }
 
     private void deleteTemp() {
-        Path p = temp;
+        PartFile p = temp;
         if (p != null) {
-            try {
-                Files.deleteIfExists(p);
-            } catch (IOException e) {
-                // the JVM is exiting; nothing more can be done
-            }
+            p.delete();
         }
     }
 

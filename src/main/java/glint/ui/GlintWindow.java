@@ -159,12 +159,29 @@ public final class GlintWindow {
         SwingUtilities.invokeLater(frame::dispose);
     }
 
-    /** An unexpected failure on any thread (the event thread included) is one line, not a stack trace. */
+    /**
+     * An unexpected failure on any thread (the event thread included) is one line, not a stack trace. The
+     * program's main has set such a handler already (which also makes the exit status 1); a window opened
+     * without it gets this one.
+     */
     private static void oneLineErrors(PrintWriter err) {
-        Thread.setDefaultUncaughtExceptionHandler((thread, e) -> {
-            err.println("glint: unexpected error on " + thread.getName() + ": " + e);
-            err.flush();
-        });
+        Thread.UncaughtExceptionHandler now = Thread.getDefaultUncaughtExceptionHandler();
+        if (now == null || now instanceof OneLineErrors) { // none, or a window's before this one
+            Thread.setDefaultUncaughtExceptionHandler(new OneLineErrors(err));
+        }
+    }
+
+    /** A thread's uncaught error as one line on standard error. */
+    private record OneLineErrors(PrintWriter err) implements Thread.UncaughtExceptionHandler {
+        @Override
+        public void uncaughtException(Thread thread, Throwable e) {
+            try {
+                err.println("glint: unexpected error on " + thread.getName() + ": " + e);
+                err.flush();
+            } catch (Throwable again) {
+                // no memory left even for the line
+            }
+        }
     }
 
     private static void onEventThread(Runnable task, SceneWatcher watcher) throws UnavailableException {
