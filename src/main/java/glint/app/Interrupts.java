@@ -57,9 +57,12 @@ final class Interrupts implements AutoCloseable, ImageWriter.Watcher {
      * Signals whose default action ends the JVM without running its shutdown hooks (which the JVM
      * runs only for SIGINT, SIGTERM and SIGHUP): a run they stop would leave its temporary file.
      * SIGPROF and SIGVTALRM are left alone: sampling profilers (async-profiler, perf's JVM agents)
-     * tick with them.
+     * tick with them. The JVM keeps SIGSEGV, SIGBUS, SIGFPE, SIGILL and SIGQUIT for itself (sent
+     * with kill, the first four crash it with its fatal-error report), and SIGABRT is its own way
+     * to crash; SIGXFSZ it ignores, so that a write beyond {@code ulimit -f} fails and is reported.
      */
-    static final List<String> OTHER_ENDING_SIGNALS = List.of("USR1", "USR2", "ALRM", "XCPU", "POLL", "PWR");
+    static final List<String> OTHER_ENDING_SIGNALS = List.of("USR1", "USR2", "ALRM", "XCPU", "POLL", "PWR",
+            "STKFLT", "SYS", "TRAP");
 
     /**
      * Makes the {@link #OTHER_ENDING_SIGNALS} end the program as SIGTERM does: hooks run, status

@@ -83,6 +83,20 @@ class InterruptTest {
         stopWhileRendering("USR1", 138);
     }
 
+    /** SIGSTKFLT, SIGSYS and SIGTRAP, whose default would end the JVM at once, stop it the same way: 144, 159, 133. */
+    @Test
+    void sigstkfltSigsysAndSigtrapStopALongStillTheSameWay() throws Exception {
+        for (String signal : List.of("STKFLT", "SYS", "TRAP")) {
+            int number = switch (signal) {
+                case "STKFLT" -> 16;
+                case "SYS" -> 31;
+                default -> 5;
+            };
+            assumeFalse(ignored(number), "SIG" + signal + " is ignored in this process and so in its children");
+            stopWhileRendering(signal, 128 + number);
+        }
+    }
+
     private void stopWhileRendering(String signal, int status) throws Exception {
         Path output = dir.resolve("long.png");
         Path config = Files.writeString(dir.resolve("empty.properties"), "");
