@@ -46,6 +46,14 @@ final class WindowLauncher {
         } catch (AWTError | HeadlessException e) {
             return noDisplay(err, "cannot open the window (" + e.getMessage() + ")");
         }
+        Thread hook = new Thread(() -> { // SIGTERM, SIGHUP, Ctrl-C: a still under way stops and says so
+            try {
+                window.interrupt(Interrupts.WAIT_MILLIS);
+            } catch (InterruptedException e) {
+                Thread.currentThread().interrupt();
+            }
+        }, "glint-interrupt");
+        Runtime.getRuntime().addShutdownHook(hook);
         try {
             int status = window.awaitExit();
             return status == Main.OK && printingFailed(out) ? Main.FAILURE : status; // the window said so at the time
@@ -53,6 +61,12 @@ final class WindowLauncher {
             window.close();
             Thread.currentThread().interrupt();
             return Main.FAILURE;
+        } finally {
+            try {
+                Runtime.getRuntime().removeShutdownHook(hook);
+            } catch (IllegalStateException e) {
+                // the program is stopping: the hook runs
+            }
         }
     }
 

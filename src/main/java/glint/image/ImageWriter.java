@@ -15,6 +15,7 @@ import java.nio.file.AtomicMoveNotSupportedException;
 import java.nio.file.Files;
 import java.nio.file.Path;
 import java.nio.file.StandardCopyOption;
+import java.nio.file.StandardOpenOption;
 import java.util.Iterator;
 import java.util.Locale;
 import javax.imageio.ImageIO;
@@ -107,8 +108,9 @@ public final class ImageWriter {
         String name = path.getFileName().toString().toLowerCase(Locale.ROOT);
         Content content = name.endsWith(".pfm") ? out -> writePfm(frame, out, watcher)
                 : out -> writePng(toImage(frame, watcher), out, watcher);
-        try {
-            try (OutputStream out = new BufferedOutputStream(Files.newOutputStream(temp), 1 << 16)) {
+        try { // the file was made beforehand: deleted since (a cancel), it is not made again
+            try (OutputStream out = new BufferedOutputStream(Files.newOutputStream(temp, StandardOpenOption.WRITE,
+                    StandardOpenOption.TRUNCATE_EXISTING), 1 << 16)) {
                 content.writeTo(new CancellableStream(out, watcher));
             }
         } catch (IOException e) {

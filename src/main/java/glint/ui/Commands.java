@@ -79,6 +79,11 @@ final class Commands {
                     quit.run();
                 }
             }
+            case CANCEL_STILL -> {
+                if (captures.stillRunning()) { // else it ended before the key came: the overlay says how
+                    status.note(captures.cancelStill());
+                }
+            }
             default -> {
                 // overlay and help are the display's
             }

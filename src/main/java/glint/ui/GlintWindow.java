@@ -152,6 +152,16 @@ public final class GlintWindow {
         return engine.hasFailed() ? 1 : 0;
     }
 
+    /**
+     * The program is being stopped by a signal (a shutdown hook's thread): the engine ends, cancelling a
+     * still under way (its hidden files deleted, standard error saying so), within {@code millis}.
+     */
+    public void interrupt(long millis) throws InterruptedException {
+        engine.interrupt();
+        watcher.close();
+        engine.awaitFinished(millis, TimeUnit.MILLISECONDS);
+    }
+
     /** Stops the engine and the watcher and closes the window (any thread, never waits). */
     public void close() {
         engine.stop();

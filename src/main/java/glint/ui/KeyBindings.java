@@ -68,6 +68,8 @@ public final class KeyBindings {
             key(Action.RENDER_STILL, "Enter", "render the view as a still PNG; Enter again or Esc cancels",
                     KeyEvent.VK_ENTER),
             pointer(Action.RENDER_STILL_PFM, "Shift + Enter", "the same, with a linear PFM beside the PNG"),
+            pointer(Action.CANCEL_STILL, "Enter or Esc while a still is under way",
+                    "cancel it at once (Esc then does not quit; the next Enter starts a new still)"),
             key(Action.NEXT_SCENE, "Page Down", "open the next scene of the scene's folder", KeyEvent.VK_PAGE_DOWN),
             key(Action.PREVIOUS_SCENE, "Page Up", "open the previous scene of the scene's folder",
                     KeyEvent.VK_PAGE_UP),
