@@ -52,10 +52,13 @@ class EngineStillTest {
 
     /** An engine whose stills take {@code samples} samples a pixel. */
     private void open(int samples) throws InputException {
+        open(Config.defaults().withSize(W, H).withSamples(samples).withThreads(2));
+    }
+
+    private void open(Config config) throws InputException {
         if (engine != null) {
             engine.close();
         }
-        Config config = Config.defaults().withSize(W, H).withSamples(samples).withThreads(2);
         SceneSource source = new SceneSource(sceneFile, () -> config);
         engine = new Engine(config, source.loadScene(), source, input, presenter, new Screenshots(shots), clock,
                 new PrintWriter(err, true));
@@ -73,11 +76,16 @@ class EngineStillTest {
 
     /** Steps the engine (as its loop would) until the overlay's message starts with {@code prefix}. */
     private void stepUntil(String prefix) throws InterruptedException {
+        stepUntilMatches(java.util.regex.Pattern.quote(prefix) + ".*");
+    }
+
+    /** Steps the engine until the overlay's message matches {@code regex}. */
+    private void stepUntilMatches(String regex) throws InterruptedException {
         Poll.until(() -> {
             engine.step();
             clock.advance(0.01);
-            return message().startsWith(prefix);
-        }, 60_000, () -> "the overlay says " + prefix + "...: " + message() + "; err: " + err);
+            return message().matches(regex);
+        }, 60_000, () -> "the overlay says " + regex + ": " + message() + "; err: " + err);
     }
 
     private List<Path> files() throws IOException {
@@ -135,6 +143,69 @@ class EngineStillTest {
         stepUntil("still: cancelled, nothing written");
         assertTrue(engine.isRunning(), "Esc stopped the still, not the window");
         assertEquals(List.of(), files());
+        assertFalse(out.toString().contains("wrote"), out::toString);
+    }
+
+    /** How many still threads are alive: a cancelled still's tile may still be traced, and its result dropped. */
+    private static long stillThreads() {
+        return Thread.getAllStackTraces().keySet().stream()
+                .filter(t -> t.getName().equals("glint-still") && t.isAlive()).count();
+    }
+
+    /**
+     * Four tiles (screen_divider=2) of a second or so each: once one is done, Enter cancels the still at once,
+     * though the tiles under way go on being traced, and the next Enter starts a new still, which is written.
+     */
+    @Test
+    void aCancelledStillIsCancelledAtOnceAndTheNextEnterStartsANewOne() throws Exception {
+        Files.writeString(sceneFile, TestScenes.sphere(0.1, 0.2, 0.3) + "render: {width: 480, height: 360}\n");
+        open(Config.defaults().withSize(W, H).withSamples(64).withThreads(2).withScreenDivider(2));
+        input.command(Action.RENDER_STILL);
+        stepUntilMatches("still: rendering [1-9][0-9]? % .*"); // a tile is done: the next ones are being traced
+        input.command(Action.RENDER_STILL);
+        engine.step(); // one turn: no waiting for the tile
+        assertEquals(StillRender.CANCELLED, message(), "cancelled at once");
+        assertEquals(1, stillThreads(), "its one tile is still being traced");
+        input.command(Action.RENDER_STILL);
+        engine.step();
+        assertEquals("still: rendering 0 % (Enter or Esc cancels)", message(), "a new still, not a second cancel");
+        stepUntil("still: wrote ");
+        List<Path> written = files();
+        assertEquals(1, written.size(), written::toString);
+        assertTrue(message().endsWith(written.get(0).toString()), message());
+        assertEquals(1, out.toString().split("still: wrote ", -1).length - 1, out::toString);
+    }
+
+    /** A still of 3840x2160 (the scene's render: block): Esc while its PNG is encoded stops the write, and it leaves nothing. */
+    @Test
+    void escWhileTheImageIsWrittenStopsTheWriteAndLeavesNothing() throws Exception {
+        Files.writeString(sceneFile, TestScenes.sphere(0.1, 0.2, 0.3) + "render: {width: 3840, height: 2160}\n");
+        open(1);
+        input.command(Action.RENDER_STILL);
+        stepUntil("still: writing ");
+        input.command(Action.QUIT);
+        engine.step();
+        assertEquals(StillRender.CANCELLED, message());
+        assertTrue(engine.isRunning(), "Esc stopped the still, not the window");
+        assertEquals(List.of(), files(), "no image and no hidden file, at once");
+        engine.close(); // waits until the still's thread has ended
+        assertEquals(List.of(), files());
+        assertFalse(out.toString().contains("wrote"), out::toString);
+        assertEquals("", err.toString());
+    }
+
+    @Test
+    void closingTheWindowWhileTheImageIsWrittenLeavesNothingAndSaysSo() throws Exception {
+        Files.writeString(sceneFile, TestScenes.sphere(0.1, 0.2, 0.3) + "render: {width: 3840, height: 2160}\n");
+        open(1);
+        input.command(Action.RENDER_STILL);
+        stepUntil("still: writing ");
+        Thread loop = new Thread(engine, "glint-engine");
+        loop.start(); // the loop's end is the window's
+        engine.stop();
+        assertTrue(engine.awaitFinished(30, java.util.concurrent.TimeUnit.SECONDS));
+        assertEquals(List.of(), files(), "no image and no hidden file");
+        assertEquals("glint: still cancelled, nothing written (the window closed)\n", err.toString());
         assertFalse(out.toString().contains("wrote"), out::toString);
     }
 
