@@ -176,6 +176,19 @@ class EngineStillTest {
         assertEquals(1, out.toString().split("still: wrote ", -1).length - 1, out::toString);
     }
 
+    /** Esc pressed while the overlay said a still was under way, which ended before the key came: no quitting. */
+    @Test
+    void aKeyMeantToCancelAStillThatHasJustEndedNeitherQuitsNorStartsOne() throws Exception {
+        input.command(Action.RENDER_STILL);
+        stepUntil("still: wrote ");
+        String wrote = message();
+        input.command(Action.CANCEL_STILL); // the listener's Esc or Enter while the overlay said "rendering"
+        engine.step();
+        assertTrue(engine.isRunning(), "the window stays");
+        assertEquals(wrote, message(), "what happened stays on the overlay");
+        assertEquals(1, files().size(), "no second still");
+    }
+
     /** A still of 3840x2160 (the scene's render: block): Esc while its PNG is encoded stops the write, and it leaves nothing. */
     @Test
     void escWhileTheImageIsWrittenStopsTheWriteAndLeavesNothing() throws Exception {
