@@ -110,6 +110,9 @@ public final class SceneWatcher implements AutoCloseable {
             scene = source.loadScene();
         } catch (InputException e) {
             problem = e;
+        } catch (OutOfMemoryError e) { // reported like any problem of this version, once; the last good scene stays
+            problem = new InputException(source.scenePath().toString(), 0, 0, "not loaded: out of memory ("
+                    + e.getMessage() + "); start Java with a larger -Xmx");
         }
         Object stampAfter = stamp();
         byte[] after = read();
@@ -127,11 +130,16 @@ public final class SceneWatcher implements AutoCloseable {
         }
     }
 
+    /** One read on the timer's thread: whatever goes wrong is reported, and the reads go on (a timer's task that throws is never run again). */
     private void pollSafely() {
         try {
             poll();
-        } catch (RuntimeException e) {
-            listener.failed(new InputException(source.scenePath().toString(), 0, 0, "cannot watch: " + e));
+        } catch (RuntimeException | Error e) {
+            try {
+                listener.failed(new InputException(source.scenePath().toString(), 0, 0, "cannot watch: " + e));
+            } catch (RuntimeException | Error again) {
+                // the listener cannot take it either: the next read tries again
+            }
         }
     }
 

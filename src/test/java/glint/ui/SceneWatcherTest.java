@@ -202,6 +202,36 @@ class SceneWatcherTest {
         assertTrue(lastRadius.contains("0.55"), lastRadius);
     }
 
+    /** Memory running out on the watcher's thread (here, in what it reports to) does not end the watching. */
+    @Test
+    void theWatcherGoesOnAfterMemoryRanOutOnItsThread() throws Exception {
+        boolean[] thrown = {false};
+        watcher.start(new SceneWatcher.Listener() {
+            @Override
+            public void loaded(Scene scene) {
+                synchronized (thrown) {
+                    if (!thrown[0]) {
+                        thrown[0] = true;
+                        throw new OutOfMemoryError("Java heap space");
+                    }
+                }
+                recorder.loaded(scene);
+            }
+
+            @Override
+            public void failed(InputException error) {
+                recorder.failed(error);
+            }
+        });
+        TestScenes.replace(file, TestScenes.sphere(0.7, 0.5, 0.5));
+        Poll.until(() -> !recorder.reports().isEmpty(), 5_000, "the failure reported");
+        assertEquals(file + ": cannot watch: java.lang.OutOfMemoryError: Java heap space",
+                ((InputException) recorder.reports().get(0)).getMessage());
+        TestScenes.replace(file, TestScenes.sphere(0.3, 0.5, 0.5));
+        Poll.until(() -> recorder.reports().size() >= 2, 5_000, () -> "the next save loaded: " + recorder.reports());
+        assertEquals(0.3, ((Scene) recorder.reports().get(1)).background().x(), 1e-12);
+    }
+
     @Test
     void theSceneIsReadWithinTheSourcesLimits() throws IOException {
         watcher.listen(recorder);
