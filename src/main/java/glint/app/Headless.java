@@ -4,6 +4,7 @@ import glint.config.Config;
 import glint.config.Flags;
 import glint.image.ImageWriter;
 import glint.image.PartFile;
+import glint.image.PartGuard;
 import glint.input.InputException;
 import glint.render.FrameBuffer;
 import glint.render.RenderScene;
@@ -54,9 +55,11 @@ final class Headless {
     static int renderStill(Path scenePath, List<Path> inputs, Config settings, Flags flags, Path output,
                            PrintWriter out, PrintWriter err) throws InputException, IOException {
         PartFile temp = null;
+        PartGuard guard = null;
         try (Interrupts interrupts = Interrupts.install(err, "glint: interrupted; no image written");
              Progress progress = Progress.start(err)) {
             temp = OutputFile.prepare(output, inputs);
+            guard = PartGuard.of(List.of(temp.path()), ENDED); // SIGKILL, a crash: no hook runs
             interrupts.watch(null, temp);
             progress.step("reading the scene", null);
             Scene scene = SceneLoader.load(scenePath, settings.limits().scene());
@@ -100,8 +103,15 @@ final class Headless {
             if (temp != null) {
                 temp.close(); // wherever its folder is now: renamed during the render, it keeps nothing
             }
+            if (guard != null) {
+                guard.close();
+            }
         }
     }
+
+    /** What a guard says if the program ends too abruptly (SIGKILL) to delete the hidden file itself. */
+    static final String ENDED = "glint: the program ended before the image was written; nothing written, "
+            + "its hidden temporary file removed";
 
     /** Why an image could not be written, in one line: {@code cannot write out.png: No space left on device}. */
     static final class WriteFailure extends IOException {
