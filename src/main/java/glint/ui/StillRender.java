@@ -141,8 +141,7 @@ final class StillRender implements AutoCloseable {
      * returns whether a still under way was cancelled by it.
      */
     boolean stop() {
-        boolean stopped = running();
-        cancel();
+        boolean stopped = running() && cancel().equals(CANCELLED); // not when it was just renamed into place
         long deadline = System.nanoTime() + TimeUnit.SECONDS.toNanos(30);
         for (Still s : stills) {
             s.tracer.cancel();
