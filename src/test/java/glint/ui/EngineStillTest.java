@@ -176,6 +176,20 @@ class EngineStillTest {
         assertEquals(1, out.toString().split("still: wrote ", -1).length - 1, out::toString);
     }
 
+    /** Standard output that does not take the still's report (a full disk): the image is there, and that is said. */
+    @Test
+    void aStillWhoseReportCannotBePrintedSaysSo() throws Exception {
+        java.io.File full = new java.io.File("/dev/full");
+        org.junit.jupiter.api.Assumptions.assumeTrue(full.exists(), "/dev/full exists here");
+        engine.printTo(new PrintWriter(new java.io.FileOutputStream(full), true));
+        input.command(Action.RENDER_STILL);
+        stepUntil("still: wrote ");
+        Path png = files().get(0);
+        assertEquals("still: wrote " + png + "; its report not printed: cannot write to standard output", message());
+        assertEquals("glint: still: wrote " + png + "; its report not printed: cannot write to standard output\n",
+                err.toString());
+    }
+
     /** Esc pressed while the overlay said a still was under way, which ended before the key came: no quitting. */
     @Test
     void aKeyMeantToCancelAStillThatHasJustEndedNeitherQuitsNorStartsOne() throws Exception {
