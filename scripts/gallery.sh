@@ -1,16 +1,20 @@
 #!/bin/sh
-# Renders the pictures of docs/gallery.md: every scene of scenes/ (not scenes/bench) into
+# Renders the pictures of docs/gallery.md and README.md: every scene of scenes/ (not scenes/bench) into
 # docs/images/gallery/NAME.png, at 640x360 with 16 samples per pixel unless the scene's render: block
 # says otherwise (phong-classic.yaml asks for phong shading there). The gallery's settings are a config
-# file, which a scene's render: block ranks above (docs/scene-format.md#render). Run from anywhere after
-# `mvn -q package -DskipTests`.
+# file, which a scene's render: block ranks above (docs/scene-format.md#render). Prints what each
+# picture took and, last, the whole. Run from anywhere after `mvn -q package -DskipTests`.
 set -e
 cd "$(dirname "$0")/.."
 mkdir -p docs/images/gallery
 config=$(mktemp)
 trap 'rm -f "$config"' EXIT
 printf 'display_width=640\ndisplay_height=360\nsamples=16\n' >"$config"
+start=$(date +%s)
+count=0
 for scene in scenes/*.yaml; do
     name=$(basename "$scene" .yaml)
     java -jar target/glint.jar --config "$config" --scene "$scene" --output "docs/images/gallery/$name.png"
+    count=$((count + 1))
 done
+echo "gallery: $count pictures in $(($(date +%s) - start)) s"

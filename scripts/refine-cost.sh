@@ -1,6 +1,6 @@
 #!/bin/sh
 # What a still pass of the window costs against a headless sample pass of the same size and settings,
-# measured side by side in one run (docs/window.md, "Refinement cost"). ROUNDS times in turn:
+# measured side by side in one run (docs/records/window.md, "Refinement cost"). ROUNDS times in turn:
 #  - headless: --bench 8 and --bench 4 at 16 samples per pixel; a sample pass is the median of frames
 #    3 to 8 divided by 16 (wall clock), and the difference of the two runs' CPU time divided by 4 x 16
 #    (CPU, JVM start and JIT warm-up left out);

@@ -1,5 +1,5 @@
 #!/bin/sh
-# Measures the window under Xvfb (docs/window.md, "Frame rate"): the frame rate still (full-resolution
+# Measures the window under Xvfb (docs/records/window.md): the frame rate still (full-resolution
 # refinement passes) and flying (W and S held in turn), from the debug=true line the window prints
 # each second; and what a still pass costs against a headless sample pass of the same size: a --bench
 # frame of 16 samples per pixel, divided by 16 (a 1-sample --bench frame is cheaper than any sample
@@ -9,13 +9,13 @@
 # the headless one as the difference between --bench 16 and --bench 8, per sample), which a shared
 # machine's load disturbs much less. The first frames and 25 s are left out: on a loaded machine the
 # JIT compiler takes that long to finish with the hot loops.
-# Needs xvfb-run and xdotool (and xwd for SHOTS=1, which also saves screenshots to docs/images/).
+# Needs xvfb-run and xdotool. (The pictures of the window in docs/ are made by scripts/window-shots.sh.)
 # Usage, from anywhere after `mvn -q package -DskipTests`: scripts/window-fps.sh [WIDTH HEIGHT [SCENE]]
 set -e
 cd "$(dirname "$0")/.."
 w=${1:-800}
 h=${2:-600}
-scene=${3:-scenes/default.yaml}
+scene=${3:-scenes/bench/spec-example.yaml}
 out=target/window-fps
 mkdir -p "$out"
 printf 'debug=true\n' > "$out/fps.properties"
@@ -34,25 +34,9 @@ xvfb-run -a -s "-screen 0 1600x1200x24" sh -c "
   echo \$(awk '{print \$14 + \$15}' /proc/\$pid/stat) \$(grep -c . $out/window.log) > $out/cpu.log
   sleep 10
   echo \$(awk '{print \$14 + \$15}' /proc/\$pid/stat) \$(grep -c . $out/window.log) >> $out/cpu.log
-  if [ -n '${SHOTS:-}' ]; then
-    id=\$(xdotool search --onlyvisible --name '^Glint\$' | head -1)
-    eval \$(xdotool getwindowgeometry --shell \$id)
-    xwd -root -silent > $out/still.xwd
-    python3 scripts/xwd2png.py $out/still.xwd docs/images/window.png \$X \$Y \$WIDTH \$HEIGHT
-  fi
   for i in 1 2 3; do
-    xdotool keydown w; sleep 2
-    if [ -n '${SHOTS:-}' ] && [ \$i = 2 ]; then
-      xwd -root -silent > $out/moving.xwd
-      python3 scripts/xwd2png.py $out/moving.xwd docs/images/window-moving.png \$X \$Y \$WIDTH \$HEIGHT
-    fi
-    xdotool keyup w; xdotool keydown s; sleep 2; xdotool keyup s
+    xdotool keydown w; sleep 2; xdotool keyup w; xdotool keydown s; sleep 2; xdotool keyup s
   done
-  if [ -n '${SHOTS:-}' ]; then
-    xdotool key 2; sleep 1; xdotool key shift+slash; sleep 4
-    xwd -root -silent > $out/help.xwd
-    python3 scripts/xwd2png.py $out/help.xwd docs/images/window-help.png \$X \$Y \$WIDTH \$HEIGHT
-  fi
   xdotool key Escape; wait"
 bench 16 >> "$out/bench.log" # before and after the window: the machine's load changes
 median() { sort -n | awk '{a[NR] = $1} END {print a[int((NR + 1) / 2)]}'; }

@@ -1,5 +1,5 @@
 # Converts an X window dump (xwd, 24/32-bit ZPixmap) to a PNG, optionally cropped: for the
-# screenshots of docs/window.md (scripts/window-fps.sh). Usage: xwd2png.py in.xwd out.png [x y w h]
+# pictures of the window in docs/ (scripts/window-shots.sh, scripts/window-path.sh). Usage: xwd2png.py in.xwd out.png [x y w h]
 import struct, sys, zlib
 # usage: xwd2png.py in.xwd out.png [x y w h]
 data = open(sys.argv[1], 'rb').read()

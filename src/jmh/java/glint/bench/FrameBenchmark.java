@@ -31,7 +31,8 @@ import org.openjdk.jmh.annotations.Warmup;
 public class FrameBenchmark {
 
     @Param({"1", "2", "4", "8"})
-    public int threads;
+    /** The tracer's render threads (JMH's "Threads: 1 thread" is the one thread that calls the benchmark). */
+    public int renderThreads;
 
     @Param({"1", "5", "10", "15", "20", "25"})
     public int spheres;
@@ -44,7 +45,7 @@ public class FrameBenchmark {
     @Setup(Level.Trial)
     public void setUp() throws InputException {
         frames = new BenchFrames(SceneLoader.parse("bench", BenchScenes.row(spheres, material)), BenchScenes.SETTINGS,
-                threads);
+                renderThreads);
     }
 
     @TearDown(Level.Trial)

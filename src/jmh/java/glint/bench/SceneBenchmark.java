@@ -20,7 +20,7 @@ import org.openjdk.jmh.annotations.TearDown;
 import org.openjdk.jmh.annotations.Warmup;
 
 /**
- * The target scenes of docs/benchmarks.md: the default scene, 25 glass spheres, 1,000 spheres;
+ * The target scenes of docs/benchmarks.md: the spec's example scene, 25 glass spheres, 1,000 spheres;
  * 800x600, 1 sample per pixel, depth 5, cook-torrance, 1 and 2 threads. Run with -prof gc to see
  * the allocation per frame.
  */
@@ -32,11 +32,12 @@ import org.openjdk.jmh.annotations.Warmup;
 @Fork(1)
 public class SceneBenchmark {
 
-    @Param({"default", "glass-25", "field-1000"})
+    @Param({"spec-example", "glass-25", "field-1000"})
     public String scene;
 
     @Param({"1", "2"})
-    public int threads;
+    /** The tracer's render threads (JMH's "Threads: 1 thread" is the one thread that calls the benchmark). */
+    public int renderThreads;
 
     private BenchFrames frames;
 
@@ -47,8 +48,8 @@ public class SceneBenchmark {
             case "field-1000" -> BenchScenes.field(1000);
             default -> null;
         };
-        frames = new BenchFrames(text == null ? SceneLoader.load(Path.of("scenes/default.yaml"))
-                : SceneLoader.parse(scene, text), BenchScenes.SETTINGS, threads);
+        frames = new BenchFrames(text == null ? SceneLoader.load(Path.of("scenes/bench/spec-example.yaml"))
+                : SceneLoader.parse(scene, text), BenchScenes.SETTINGS, renderThreads);
     }
 
     @TearDown(Level.Trial)

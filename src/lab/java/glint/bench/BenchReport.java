@@ -39,6 +39,14 @@ public final class BenchReport {
         String param(String key) {
             return params.getOrDefault(key, "");
         }
+
+        /**
+         * The render threads the benchmark ran with: its parameter {@code renderThreads} ({@code threads} in
+         * runs before it had that name), not JMH's own "Threads: 1 thread", the threads calling it.
+         */
+        String renderThreads() {
+            return params.containsKey("renderThreads") ? param("renderThreads") : param("threads");
+        }
     }
 
     private BenchReport() {
@@ -121,14 +129,14 @@ public final class BenchReport {
         chart.getStyler().setLegendVisible(true);
         chart.getStyler().setYAxisMin(0.0);
         TreeSet<Integer> threadCounts = new TreeSet<>();
-        series.forEach(r -> threadCounts.add(Integer.parseInt(r.param("threads"))));
+        series.forEach(r -> threadCounts.add(Integer.parseInt(r.renderThreads())));
         for (int threads : threadCounts) {
-            List<Result> line = series.stream().filter(r -> r.param("threads").equals(String.valueOf(threads)))
+            List<Result> line = series.stream().filter(r -> r.renderThreads().equals(String.valueOf(threads)))
                     .sorted((x, y) -> Integer.compare(Integer.parseInt(x.param("spheres")), Integer.parseInt(y.param("spheres"))))
                     .toList();
             double[] x = line.stream().mapToDouble(r -> Double.parseDouble(r.param("spheres"))).toArray();
             double[] y = line.stream().mapToDouble(Result::median).toArray();
-            chart.addSeries(threads + (threads == 1 ? " thread" : " threads"), x, y).setMarker(SeriesMarkers.CIRCLE);
+            chart.addSeries(threads + (threads == 1 ? " render thread" : " render threads"), x, y).setMarker(SeriesMarkers.CIRCLE);
         }
         BitmapEncoder.saveBitmap(chart, file.toString(), BitmapEncoder.BitmapFormat.PNG);
     }

@@ -14,8 +14,8 @@ import java.util.stream.Collectors;
 import java.util.stream.Stream;
 
 /**
- * Measures the frame-time targets of docs/benchmarks.md as they are stated: rounds of
- * {@code --bench N} (800x600, 1 sample, depth 5), each run in a fresh JVM, for the default scene,
+ * Measures the frame-time targets of docs/records/benchmarks.md as they are stated: rounds of
+ * {@code --bench N} (800x600, 1 sample, depth 5), each run in a fresh JVM, for the spec's example scene,
  * 25 glass spheres and 1,000 spheres with 1 and 2 threads, one run after another; then prints the
  * table: the median of the rounds' medians (and of their p95), every round's median, and the
  * speed-up of 2 threads over 1 in each round. On a shared machine the rounds spread widely; the
@@ -35,7 +35,7 @@ public final class TargetRounds {
     }
 
     static final List<Target> TARGETS = List.of(
-            new Target("default scene", "scenes/default.yaml", 90),
+            new Target("spec example", "scenes/bench/spec-example.yaml", 90),
             new Target("25 glass spheres", "scenes/bench/glass-25.yaml", 25),
             new Target("1,000 spheres", "scenes/bench/field-1000.yaml", 20));
 

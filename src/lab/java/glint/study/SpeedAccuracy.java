@@ -131,7 +131,7 @@ public final class SpeedAccuracy {
     static List<StudyScene> scenes(Path root) throws IOException, InputException {
         Path refs = root.resolve("src/test/resources/reference");
         return List.of(
-                StudyScene.load("default", root.resolve("scenes/default.yaml"), null),
+                StudyScene.load("default", root.resolve("scenes/bench/spec-example.yaml"), null),
                 StudyScene.load("three-spheres", refs.resolve("three-spheres.yaml"), refs.resolve("three-spheres.pfm")),
                 StudyScene.load("hall-of-mirrors", refs.resolve("hall-of-mirrors.yaml"),
                         refs.resolve("hall-of-mirrors.pfm")),

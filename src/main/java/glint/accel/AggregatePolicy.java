@@ -6,7 +6,7 @@ import glint.geometry.Primitives;
  * The one place that decides how a scene's rays search its primitives, and every threshold and
  * margin of the structures that search them. Each says what it was measured on, or that it was
  * chosen and not measured. The measured ones were measured on scenes/bench (800x600, 1 spp, depth
- * 5, cook-torrance, render CPU a frame, 2026-12-02; docs/benchmarks.md): the first ones with two
+ * 5, cook-torrance, render CPU a frame, 2026-12-02; docs/records/benchmarks.md): the first ones with two
  * builds run side by side, one thread each, medians of 30-40 frames; the cells with
  * {@code CompareBuilds}.
  */

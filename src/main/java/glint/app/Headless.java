@@ -1,6 +1,7 @@
 package glint.app;
 
 import glint.config.Config;
+import glint.config.LightTransport;
 import glint.config.Flags;
 import glint.image.ImageWriter;
 import glint.image.PartFile;
@@ -52,8 +53,8 @@ final class Headless {
      *
      * @param inputs the scene file, then the config file if one was read: the output may be neither
      */
-    static int renderStill(Path scenePath, List<Path> inputs, Config settings, Flags flags, Path output,
-                           PrintWriter out, PrintWriter err) throws InputException, IOException {
+    static int renderStill(Path scenePath, ViewChoice view, List<Path> inputs, Config settings, Flags flags,
+                           Path output, PrintWriter out, PrintWriter err) throws InputException, IOException {
         PartFile temp = null;
         PartGuard guard = null;
         try (Interrupts interrupts = Interrupts.install(err, "glint: interrupted; no image written");
@@ -62,7 +63,7 @@ final class Headless {
             guard = PartGuard.of(List.of(temp.path()), ENDED); // SIGKILL, a crash: no hook runs
             interrupts.watch(null, temp);
             progress.step("reading the scene", null);
-            Scene scene = SceneLoader.load(scenePath, settings.limits().scene());
+            Scene scene = view.apply(SceneLoader.load(scenePath, settings.limits().scene()), scenePath.toString());
             Config config = flags.effective(settings, scene.render());
             OutputFile.checkSize(output, config.displayWidth(), config.displayHeight());
             progress.step("preparing the scene", null);
@@ -91,9 +92,8 @@ final class Headless {
             long elapsed = System.nanoTime() - start;
             progress.close(); // a bar on the terminal is cleared first
             try {
-                out.printf(Locale.ROOT, "wrote %s (%dx%d, %d spp, %d threads, %s, depth %d) in %.1f ms%n",
-                        InputException.printable(output.toString()), frame.width(), frame.height(), config.samples(),
-                        config.effectiveThreads(), config.shading().key(), config.recursionMax(), elapsed / 1e6);
+                out.printf(Locale.ROOT, "wrote %s (%s) in %.1f ms%n", InputException.printable(output.toString()),
+                        settingsOf(config), elapsed / 1e6);
                 out.flush();
             } catch (Output.Failure e) { // the image is there all the same
                 throw e.after(InputException.cutPath(output.toString()) + " was written");
@@ -155,15 +155,29 @@ final class Headless {
         return String.format(Locale.ROOT, "%,d MB", (bytes + (1 << 20) - 1) >> 20);
     }
 
-    static int bench(Path scenePath, Config settings, Flags flags, int frames, PrintWriter out, PrintWriter err)
-            throws InputException {
-        Scene scene = SceneLoader.load(scenePath, settings.limits().scene());
+    /**
+     * What a run renders with, as its report line says it: {@code 800x600, 4 spp, 2 threads, cook-torrance, depth 16}
+     * ({@code cook-torrance, path, depth 16} with the path integrator).
+     */
+    static String settingsOf(Config config) {
+        return String.format(Locale.ROOT, "%dx%d, %d spp, %d threads, %s%s, depth %d", config.displayWidth(),
+                config.displayHeight(), config.samples(), config.effectiveThreads(), config.shading().key(),
+                config.transport() == LightTransport.PATH ? ", path" : "", config.recursionMax());
+    }
+
+    static int bench(Path scenePath, ViewChoice view, Config settings, Flags flags, int frames, PrintWriter out,
+                     PrintWriter err) throws InputException {
+        Scene loaded = SceneLoader.load(scenePath, settings.limits().scene());
+        Scene scene = view.apply(loaded, scenePath.toString());
         Config config = flags.effective(settings, scene.render());
         RenderScene compiled = RenderScene.compile(scene, RenderSettings.of(config));
         checkMemory(config, 12, Runtime.getRuntime());
         FrameBuffer frame = new FrameBuffer(config.displayWidth(), config.displayHeight());
         double[] millis = new double[frames];
         long raysPerFrame;
+        String seen = view.isView() ? ", " + view.describe(loaded) : "";
+        out.printf(Locale.ROOT, "timing %d %s of %s%s (%s)%n", frames, frames == 1 ? "frame" : "frames",
+                InputException.printable(InputException.cutPath(scenePath.toString())), seen, settingsOf(config));
         try (Interrupts interrupts = Interrupts.install(err, "glint: interrupted");
              Tracer tracer = new Tracer(config.effectiveThreads())) {
             interrupts.watch(tracer, null);

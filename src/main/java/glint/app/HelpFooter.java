@@ -20,9 +20,12 @@ final class HelpFooter {
         lines.add("  Open the window on the config's scene, or on another one:");
         lines.add("    " + JAR);
         lines.add("    " + JAR + " --scene scenes/glass.yaml");
-        lines.add("  Render a still to a file; time 10 frames:");
+        lines.add("  Render a still to a file, or one of the scene's views; time 10 frames:");
         lines.add("    " + JAR + " --scene scenes/metals.yaml --output metals.png");
+        lines.add("    " + JAR + " --scene scenes/field.yaml --view 2 --output a.png");
         lines.add("    " + JAR + " --scene scenes/field.yaml --bench 10");
+        lines.add("  Light that bounces (the path integrator), 64 samples a pixel:");
+        lines.add("    " + JAR + " --integrator path --spp 64 --output bounce.png");
         lines.add("  Settings rank: a flag, then the scene's render: block, then the config.");
         lines.add("");
         lines.add("Window keys (Enter renders the view as a still; the window goes on):");

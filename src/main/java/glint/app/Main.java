@@ -54,8 +54,15 @@ public final class Main implements Callable<Integer> {
     @Option(names = "--shading", paramLabel = "MODEL", description = "cook-torrance or phong")
     String shading;
 
+    @Option(names = "--integrator", paramLabel = "NAME", description = "whitted (direct light, mirrors, glass) or path (light that bounces)")
+    String integrator;
+
     @Option(names = "--bench", paramLabel = "N", description = "render N frames of the still camera headless and time them")
     Integer bench;
+
+    @Option(names = "--view", paramLabel = "N|NAME",
+            description = "with --output or --bench: the scene's view N (from 1) or the view of that name, not its camera")
+    String view;
 
     /** Where the modes write their report lines and diagnostics; set by {@link #run}. */
     private PrintWriter out = new PrintWriter(System.out, true);
@@ -91,6 +98,12 @@ public final class Main implements Callable<Integer> {
         cli.registerConverter(Integer.class, Main::wholeNumber);
         cli.registerConverter(Path.class, Main::fileName);
         cli.setParameterExceptionHandler((e, a) -> {
+            if (e instanceof CommandLine.UnmatchedArgumentException unmatched) {
+                UnknownArguments.lines(unmatched.getUnmatched(), cli.getCommandSpec())
+                        .forEach(problem -> err.println(line("glint: " + problem)));
+                err.println("Try 'java -jar target/glint.jar --help' for the options.");
+                return BAD_INPUT;
+            }
             err.println(line("glint: " + e.getMessage()));
             if (String.valueOf(e.getMessage()).endsWith(FileNames.FIX)) {
                 return BAD_INPUT; // the options are right: the locale is not
@@ -195,20 +208,25 @@ public final class Main implements Callable<Integer> {
         if (output != null && bench != null) {
             throw new InputException("glint", 0, 0, "--output and --bench cannot be used together");
         }
+        ViewChoice camera = ViewChoice.of(view);
         if (output != null) {
             List<Path> inputs = new ArrayList<>(List.of(scenePath));
             Path configFile = config != null ? config : Path.of("config.properties");
             if (Files.exists(configFile)) {
                 inputs.add(configFile);
             }
-            return Headless.renderStill(scenePath, inputs, settings, flags(), output, out, err);
+            return Headless.renderStill(scenePath, camera, inputs, settings, flags(), output, out, err);
         }
         if (bench != null) {
             if (bench < 1 || bench > Headless.MAX_BENCH_FRAMES) {
                 throw new InputException("glint", 0, 0, "--bench: expected a number of frames from 1 to "
                         + Headless.MAX_BENCH_FRAMES + ", got " + bench);
             }
-            return Headless.bench(scenePath, settings, flags(), bench, out, err);
+            return Headless.bench(scenePath, camera, settings, flags(), bench, out, err);
+        }
+        if (view != null) {
+            throw new InputException("glint", 0, 0, "--view renders headless: add --output FILE.png or --bench N "
+                    + "(in the window, keys 1 to 9 go to the scene's views)");
         }
         return WindowLauncher.open(scenePath, settings, flags(), () -> overrides(loadConfig()), out, err);
     }
@@ -246,6 +264,13 @@ public final class Main implements Callable<Integer> {
         }
         Path resolved = configured.isAbsolute() || config == null || config.getParent() == null
                 ? configured : config.getParent().resolve(configured);
+        if (configFile == null && !Files.exists(resolved)) {
+            throw new InputException("glint", 0, 0, "no such scene file " + InputException.quotePath(resolved)
+                    + ": there is no ./config.properties in the current folder ("
+                    + InputException.cutPath(Path.of("").toAbsolutePath().toString())
+                    + "), so the default scene is looked up from there; name a scene with --scene FILE "
+                    + "(or a config with --config FILE)");
+        }
         if (configFile == null || Files.exists(resolved)) {
             return resolved;
         }
@@ -261,7 +286,7 @@ public final class Main implements Callable<Integer> {
 
     /** The command line's settings, which rank above the scene's render: block and the config. */
     private Flags flags() {
-        return new Flags(width, height, spp, threads, depth, shading);
+        return new Flags(width, height, spp, threads, depth, shading, integrator);
     }
 
     private Config overrides(Config c) throws InputException {

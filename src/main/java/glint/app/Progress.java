@@ -10,7 +10,7 @@ import java.util.function.LongSupplier;
 /**
  * Shows how far a long still is, on standard error, step by step (reading and preparing the scene,
  * rendering, writing the image): nothing for the first two seconds of the run, then each step as
- * it begins and, for a step that knows how far it is, percent done and time left, as a bar redrawn
+ * it begins and, for a step that knows how far it is, percent done and (from a tenth on) time left, as a bar redrawn
  * in place on a terminal or as a plain line at every further tenth otherwise (a log, a pipe), and
  * at least every 10 seconds while nothing changes. Read four times a second, by a thread of its own
  * that allocates nothing between two reads (no executor's queue): memory running out while it shows
@@ -164,9 +164,15 @@ final class Progress implements AutoCloseable {
                 (int) (fraction * 100), left(fraction, elapsedNanos));
     }
 
+    /**
+     * The share of a step done before its time left is estimated: the first tiles are too few to tell the
+     * pace of the whole (the tracer hands them out spread over the frame, so from a tenth on they do).
+     */
+    static final double ESTIMATE_FROM = 0.1;
+
     /** The time left if the rest goes as fast as the part done: {@code about 3 min 20 s left}. */
     static String left(double fraction, long elapsedNanos) {
-        if (fraction <= 0) {
+        if (fraction < ESTIMATE_FROM) {
             return "time left not known yet";
         }
         long seconds = Math.round(elapsedNanos / 1e9 * (1 - fraction) / fraction);

@@ -3,6 +3,8 @@ package glint.app;
 import glint.config.Config;
 import glint.config.Flags;
 import glint.input.InputException;
+import glint.scene.Scene;
+import glint.scene.SceneLoader;
 import glint.ui.ConfigSource;
 import glint.ui.GlintWindow;
 import glint.ui.SceneSource;
@@ -27,7 +29,8 @@ final class WindowLauncher {
     /**
      * Opens the window and returns the exit status when it is closed: 0 when the user quits, 1 when
      * there is no display, or when something the window printed (key C's camera, a still's report)
-     * could not be written to {@code out}. A scene that does not load throws before any window opens.
+     * could not be written to {@code out}. A scene that does not load throws before any window opens, and
+     * before a missing display is reported.
      *
      * @param flags  the command line's settings, above each scene's render: block
      * @param reload reads the config again for F5
@@ -35,6 +38,7 @@ final class WindowLauncher {
     static int open(Path scenePath, Config config, Flags flags, ConfigSource reload, PrintWriter out, PrintWriter err)
             throws InputException {
         if (GraphicsEnvironment.isHeadless()) {
+            checkInputs(scenePath, config, flags); // bad input says so (status 2), display or not
             return noDisplay(err, "no display available for the window");
         }
         GlintWindow window;
@@ -73,6 +77,16 @@ final class WindowLauncher {
     /** Whether a line printed to {@code out} was lost. */
     private static boolean printingFailed(PrintWriter out) {
         return out instanceof Output checked ? checked.failed() : out.checkError();
+    }
+
+    /** What the window would refuse before it opens: a window too large, a scene that does not load or a render: block beyond the limits. */
+    private static void checkInputs(Path scenePath, Config config, Flags flags) throws InputException {
+        String tooLarge = config.limits().imageSizeProblem(config.displayWidth(), config.displayHeight());
+        if (tooLarge != null) {
+            throw new InputException("glint", 0, 0, "display_width x display_height: " + tooLarge);
+        }
+        Scene scene = SceneLoader.load(scenePath, config.limits().scene());
+        flags.effective(config, scene.render());
     }
 
     private static int noDisplay(PrintWriter err, String why) {

@@ -26,12 +26,23 @@ import java.util.function.Consumer;
  * @param limits         safety limits on image size, scene size and recursion
  * @param freeFlight     window: the camera turns about its own axes, pitch unbounded, instead of
  *                       keeping the horizon level
+ * @param transport      the integrator: Whitted or path tracing (key {@code integrator})
  */
 public record Config(boolean debug, double epsilon, double displayScale, int screenDivider,
                      int displayWidth, int displayHeight, int recursionMax, String name,
                      String scene, int threads, Shading shading, int samples, double minWeight,
                      double moveSpeed, double turnSpeed, double targetFps, Limits limits,
-                     boolean freeFlight) {
+                     boolean freeFlight, LightTransport transport) {
+
+    /** A config of the Whitted integrator. */
+    public Config(boolean debug, double epsilon, double displayScale, int screenDivider,
+                  int displayWidth, int displayHeight, int recursionMax, String name,
+                  String scene, int threads, Shading shading, int samples, double minWeight,
+                  double moveSpeed, double turnSpeed, double targetFps, Limits limits, boolean freeFlight) {
+        this(debug, epsilon, displayScale, screenDivider, displayWidth, displayHeight, recursionMax, name, scene,
+                threads, shading, samples, minWeight, moveSpeed, turnSpeed, targetFps, limits, freeFlight,
+                LightTransport.WHITTED);
+    }
 
     /** A config with a level camera (free_flight=false). */
     public Config(boolean debug, double epsilon, double displayScale, int screenDivider,
@@ -73,6 +84,10 @@ public record Config(boolean debug, double epsilon, double displayScale, int scr
 
     public Config withShading(Shading model) {
         return with(c -> c.shading = model);
+    }
+
+    public Config withTransport(LightTransport integrator) {
+        return with(c -> c.transport = integrator);
     }
 
     public Config withScreenDivider(int divider) {
@@ -122,6 +137,7 @@ public record Config(boolean debug, double epsilon, double displayScale, int scr
         double targetFps;
         Limits limits;
         boolean freeFlight;
+        LightTransport transport;
 
         Copy(Config c) {
             debug = c.debug;
@@ -142,12 +158,13 @@ public record Config(boolean debug, double epsilon, double displayScale, int scr
             targetFps = c.targetFps;
             limits = c.limits;
             freeFlight = c.freeFlight;
+            transport = c.transport;
         }
 
         Config build() {
             return new Config(debug, epsilon, displayScale, screenDivider, displayWidth, displayHeight, recursionMax,
                     name, scene, threads, shading, samples, minWeight, moveSpeed, turnSpeed, targetFps, limits,
-                    freeFlight);
+                    freeFlight, transport);
         }
     }
 

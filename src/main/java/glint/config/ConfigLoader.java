@@ -15,7 +15,7 @@ public final class ConfigLoader {
 
     static final Set<String> KEYS = new LinkedHashSet<>(List.of(
             "debug", "epsilon", "display_scale", "screen_divider", "display_height", "recursion_max",
-            "display_width", "name", "scene", "threads", "shading", "samples", "min_weight",
+            "display_width", "name", "scene", "threads", "shading", "integrator", "samples", "min_weight",
             "move_speed", "turn_speed", "target_fps", "free_flight",
             "max_image_pixels", "max_scene_bytes", "max_objects", "max_lights", "max_recursion"));
 
@@ -93,6 +93,10 @@ public final class ConfigLoader {
         }
         int threads = integer("threads", d.threads(), 0, 1024);
         Shading shading = shading(d.shading());
+        LightTransport transport = transport(d.transport());
+        if (transport == LightTransport.PATH && shading == Shading.PHONG) {
+            throw error("integrator", Flags.PATH_NEEDS_COOK_TORRANCE);
+        }
         int samples = samples(d.samples());
         double minWeight = number("min_weight", d.minWeight(), 0, 1, "a number from 0 to 1");
         double moveSpeed = positive("move_speed", d.moveSpeed());
@@ -100,7 +104,7 @@ public final class ConfigLoader {
         double targetFps = number("target_fps", d.targetFps(), 1, 1000, "a number from 1 to 1000");
         boolean freeFlight = bool("free_flight", d.freeFlight());
         return new Config(debug, epsilon, displayScale, divider, width, height, depth, name, scene, threads,
-                shading, samples, minWeight, moveSpeed, turnSpeed, targetFps, limits, freeFlight);
+                shading, samples, minWeight, moveSpeed, turnSpeed, targetFps, limits, freeFlight, transport);
     }
 
     private Limits limits(Limits d) throws InputException {
@@ -190,6 +194,19 @@ public final class ConfigLoader {
                     + Suggestions.hint(v, List.of("cook-torrance", "phong")));
         }
         return s;
+    }
+
+    private LightTransport transport(LightTransport fallback) throws InputException {
+        String v = value("integrator");
+        if (v == null) {
+            return fallback;
+        }
+        LightTransport t = LightTransport.byKey(v);
+        if (t == null) {
+            throw error("integrator", "integrator: unknown integrator " + InputException.quote(v) + ", expected "
+                    + String.join(" or ", LightTransport.KEYS) + Suggestions.hint(v, LightTransport.KEYS));
+        }
+        return t;
     }
 
     private int samples(int fallback) throws InputException {

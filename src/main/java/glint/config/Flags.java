@@ -6,14 +6,24 @@ import glint.scene.RenderBlock;
 import java.util.List;
 
 /**
- * The command line's settings (--width, --height, --spp, --threads, --depth, --shading); each is null
+ * The command line's settings (--width, --height, --spp, --threads, --depth, --shading, --integrator); each is null
  * when not given. They rank first: a flag beats the scene's {@code render:} block, which beats
  * config.properties, which beats the defaults ({@link #effective}).
  */
-public record Flags(Integer width, Integer height, Integer samples, Integer threads, Integer depth, String shading) {
+public record Flags(Integer width, Integer height, Integer samples, Integer threads, Integer depth, String shading,
+                    String integrator) {
 
     /** No flag given. */
-    public static final Flags NONE = new Flags(null, null, null, null, null, null);
+    public static final Flags NONE = new Flags(null, null, null, null, null, null, null);
+
+    /** Why the path integrator and the phong model do not go together. */
+    public static final String PATH_NEEDS_COOK_TORRANCE = "the path integrator needs shading cook-torrance:"
+            + " phong's coefficients are not a BSDF a path can sample (use --integrator whitted with phong)";
+
+    /** Flags without an integrator. */
+    public Flags(Integer width, Integer height, Integer samples, Integer threads, Integer depth, String shading) {
+        this(width, height, samples, threads, depth, shading, null);
+    }
 
     /** Whether a flag sets the image size. */
     public boolean setsSize() {
@@ -27,13 +37,22 @@ public record Flags(Integer width, Integer height, Integer samples, Integer thre
      * @throws InputException a flag or a key of the block is out of the config's limits
      */
     public Config effective(Config config, RenderBlock render) throws InputException {
-        return apply(withBlock(config, render));
+        Config blocked = withBlock(config, render);
+        if (blocked.transport() == LightTransport.PATH && blocked.shading() == Shading.PHONG && integrator == null
+                && shading == null) {
+            String key = render.integrator() != null ? "integrator" : "shading";
+            throw blockError(render, key, "render: " + PATH_NEEDS_COOK_TORRANCE);
+        }
+        return apply(blocked);
     }
 
     /** The config with the block's keys put in (checked against the config's limits). */
     static Config withBlock(Config c, RenderBlock r) throws InputException {
         if (r.shading() != null) {
             c = c.withShading(Shading.byKey(r.shading()));
+        }
+        if (r.integrator() != null) {
+            c = c.withTransport(LightTransport.byKey(r.integrator()));
         }
         if (r.samples() != null) {
             c = c.withSamples(r.samples());
@@ -99,6 +118,19 @@ public record Flags(Integer width, Integer height, Integer samples, Integer thre
                         + Suggestions.hint(shading, List.of("cook-torrance", "phong")));
             }
             c = c.withShading(model);
+        }
+        if (integrator != null) {
+            LightTransport transport = LightTransport.byKey(integrator);
+            if (transport == null) {
+                throw new InputException("glint", 0, 0, "--integrator: unknown integrator "
+                        + InputException.quote(integrator) + ", expected whitted or path"
+                        + Suggestions.hint(integrator, LightTransport.KEYS));
+            }
+            c = c.withTransport(transport);
+        }
+        if (c.transport() == LightTransport.PATH && c.shading() == Shading.PHONG) {
+            throw new InputException("glint", 0, 0, (integrator != null ? "--integrator path" : "--shading phong")
+                    + ": " + PATH_NEEDS_COOK_TORRANCE);
         }
         return c;
     }

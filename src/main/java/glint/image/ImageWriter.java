@@ -207,7 +207,7 @@ public final class ImageWriter {
         }
     }
 
-    /** The frame as an 8-bit sRGB image. */
+    /** The frame as an 8-bit sRGB image, dithered ({@link Dither}). */
     public static BufferedImage toImage(FrameBuffer frame) {
         try {
             return toImage(frame, new Watcher() { });
@@ -226,7 +226,10 @@ public final class ImageWriter {
         for (int y = 0; y < frame.height(); y++) {
             for (int x = 0, p = y * frame.width(); x < frame.width(); x++, p++) {
                 int i = 3 * p;
-                pixels[p] = Srgb.to8Bit(rgb[i]) << 16 | Srgb.to8Bit(rgb[i + 1]) << 8 | Srgb.to8Bit(rgb[i + 2]);
+                int levels = Dither.levels(x, y);
+                pixels[p] = Srgb.to8Bit(rgb[i], Dither.channel(levels, 0)) << 16
+                        | Srgb.to8Bit(rgb[i + 1], Dither.channel(levels, 1)) << 8
+                        | Srgb.to8Bit(rgb[i + 2], Dither.channel(levels, 2));
             }
             if ((y & 63) == 63) {
                 check(watcher);

@@ -15,6 +15,14 @@ public final class Srgb {
         return c <= 0.0031308 ? 12.92 * c : 1.055 * Math.pow(c, 1 / 2.4) - 0.055;
     }
 
+    /**
+     * The 8-bit code of a linear value dithered at {@code level} ({@link Dither}): encode, add the level's
+     * offset in (0, 1) to the value in code units, cut to a whole code; one of the two codes around it.
+     */
+    public static int to8Bit(double linear, int level) {
+        return Math.min(255, (int) (encode(linear) * 255 + Dither.offset(level)));
+    }
+
     /** The 8-bit code of a linear value: encode, then round to the nearest of 0..255. */
     public static int to8Bit(double linear) {
         return (int) Math.round(encode(linear) * 255);

@@ -14,6 +14,18 @@ public final class Suggestions {
      * enough to be a typo, otherwise {@code " (expected one of: a, b, c)"}.
      */
     public static String hint(String given, Collection<String> known) {
+        String best = closest(given, known);
+        if (best != null) {
+            return " (did you mean '" + best + "'?)";
+        }
+        return " (expected one of: " + String.join(", ", known) + ")";
+    }
+
+    /**
+     * The known word closest to {@code given} (ignoring case) when it is close enough to be a typo of it:
+     * at most 2 edits away, or a third of the word's length; otherwise null.
+     */
+    public static String closest(String given, Collection<String> known) {
         String best = null;
         int bestDistance = Integer.MAX_VALUE;
         for (String candidate : given.length() > 64 ? java.util.List.<String>of() : known) {
@@ -23,10 +35,7 @@ public final class Suggestions {
                 best = candidate;
             }
         }
-        if (best != null && bestDistance <= Math.max(2, best.length() / 3)) {
-            return " (did you mean '" + best + "'?)";
-        }
-        return " (expected one of: " + String.join(", ", known) + ")";
+        return best != null && bestDistance <= Math.max(2, best.length() / 3) ? best : null;
     }
 
     /** The Levenshtein edit distance (insertions, deletions, substitutions). */

@@ -70,10 +70,71 @@ public final class TextFiles {
         }
     }
 
+    /** The most entries of a folder looked through for a file name like a missing one. */
+    static final int MAX_FOLDER_ENTRIES = 10_000;
+
+    /**
+     * {@code " (did you mean 'scenes/default.yaml'?)"} when the folder of a missing file holds a file of a
+     * name close to its own (another case, a letter off), otherwise empty.
+     */
+    static String similarFile(String name) {
+        Path path;
+        try {
+            path = Path.of(name);
+        } catch (java.nio.file.InvalidPathException e) {
+            return "";
+        }
+        Path fileName = path.getFileName();
+        Path folder = path.getParent() != null ? path.getParent() : Path.of("");
+        if (fileName == null) {
+            return "";
+        }
+        java.util.List<String> names = new java.util.ArrayList<>();
+        try (java.util.stream.Stream<Path> entries = Files.list(folder.toString().isEmpty() ? Path.of(".") : folder)) {
+            entries.limit(MAX_FOLDER_ENTRIES).filter(Files::isRegularFile)
+                    .forEach(entry -> names.add(entry.getFileName().toString()));
+        } catch (IOException | RuntimeException e) {
+            return ""; // no folder, or one that cannot be listed: nothing to suggest
+        }
+        String best = closestFileName(fileName.toString(), names);
+        return best == null ? "" : " (did you mean " + InputException.quotePath(folder.resolve(best)) + "?)";
+    }
+
+    /**
+     * The name among {@code names} that is {@code given} mistyped: the same ending (.yaml), and the rest
+     * at most 2 edits away (ignoring case) and less than half of it; null when none is.
+     */
+    static String closestFileName(String given, java.util.List<String> names) {
+        String best = null;
+        int bestDistance = Integer.MAX_VALUE;
+        String stem = stem(given).toLowerCase(Locale.ROOT);
+        for (String name : names) {
+            if (!extension(name).equalsIgnoreCase(extension(given)) || given.length() > 255) {
+                continue;
+            }
+            int d = Suggestions.distance(stem, stem(name).toLowerCase(Locale.ROOT));
+            if (d < bestDistance && d <= 2 && 2 * d < stem.length()) {
+                bestDistance = d;
+                best = name;
+            }
+        }
+        return best;
+    }
+
+    private static String stem(String name) {
+        int dot = name.lastIndexOf('.');
+        return dot > 0 ? name.substring(0, dot) : name;
+    }
+
+    private static String extension(String name) {
+        int dot = name.lastIndexOf('.');
+        return dot > 0 ? name.substring(dot) : "";
+    }
+
     /** Why a file could not be read, in words ("no such file", "permission denied", ...). */
     public static InputException unreadable(String name, IOException e) {
         if (e instanceof NoSuchFileException) {
-            return new InputException(name, 0, 0, "no such file");
+            return new InputException(name, 0, 0, "no such file" + similarFile(name));
         }
         if (e instanceof AccessDeniedException) {
             return new InputException(name, 0, 0, "cannot read: permission denied");

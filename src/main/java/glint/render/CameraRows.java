@@ -208,7 +208,7 @@ final class CameraRows {
                 hitPrimitive);
         int pixel = y * width + x0, sample = firstSample, end = firstSample + sampleCount;
         for (int ray = 0; ray < rays; ray++) {
-            integrator.beginPath(pixel, frameIndex, sample);
+            integrator.beginPath(pixel, frameIndex, sample, side * side);
             Rgb radiance = integrator.shadeCamera(hitPrimitive[ray], hitT[ray], eye.eyeX, eye.eyeY, eye.eyeZ,
                     dirX[ray], dirY[ray], dirZ[ray], hitsLeft);
             radianceR[ray] = radiance.r;

@@ -15,16 +15,16 @@ import glint.shading.Surface;
  * The kind gives each chord in closed form ({@link PrimitiveKind#chordInside}), so no bounce searches the
  * scene; where the cosine at a bounce is the one before (every bounce of a sphere), the boundary's
  * factors and the bend of the ray leaving are not worked out again. The radiance is what
- * {@link Integrator#trace} would find, to rounding, and the roulette's numbers are drawn in the same
+ * {@link WhittedIntegrator#trace} would find, to rounding, and the roulette's numbers are drawn in the same
  * order: first each bounce's reflected ray, going in, then each leaving ray, from the deepest bounce
  * out, as the recursion draws them. Bounce k uses the path vertex of its level, as the recursion
  * would, and a ray leaving it overwrites only the deeper ones, which are done with by then.
  */
 final class InsideWalk {
 
-    private final Integrator it;
+    private final WhittedIntegrator it;
 
-    InsideWalk(Integrator integrator) {
+    InsideWalk(WhittedIntegrator integrator) {
         this.it = integrator;
     }
 
@@ -47,10 +47,10 @@ final class InsideWalk {
             PathVertex v = it.vertex(level);
             double sumR = v.sum.r, sumG = v.sum.g, sumB = v.sum.b;
             if (v.keepReflected > 0) {
-                double k = v.keepReflected * v.reflect;
-                sumR += k * r;
-                sumG += k * g;
-                sumB += k * b;
+                double k = v.keepReflected;
+                sumR += k * v.reflectR * r;
+                sumG += k * v.reflectG * g;
+                sumB += k * v.reflectB * b;
             }
             if (level > 1) {
                 double childWeight = v.weight * Math.max(v.transmitR, Math.max(v.transmitG, v.transmitB));
@@ -105,7 +105,7 @@ final class InsideWalk {
             if (sameAngle) {
                 copyBoundary(previous, v);
             } else {
-                model.boundary(it, v);
+                model.specular(it, v);
                 bend = Optics.refractionBend(cosEnd, v.eta);
             }
             v.weight = weightIn;
@@ -122,11 +122,12 @@ final class InsideWalk {
             if (level <= 1) {
                 return level;
             }
-            v.keepReflected = it.keep(weightIn * v.reflect);
+            double reflect = v.reflectMax();
+            v.keepReflected = it.keep(weightIn * reflect);
             if (!(v.keepReflected > 0)) {
                 return level;
             }
-            weightIn *= v.reflect * v.keepReflected;
+            weightIn *= reflect * v.keepReflected;
             double k = 2 * cosEnd;
             ux += k * s.nx;
             uy += k * s.ny;
@@ -155,7 +156,7 @@ final class InsideWalk {
 
     private static void copyBoundary(PathVertex from, PathVertex to) {
         to.eta = from.eta;
-        to.reflect = from.reflect;
+        to.setReflect(from.reflectR, from.reflectG, from.reflectB);
         to.transmitR = from.transmitR;
         to.transmitG = from.transmitG;
         to.transmitB = from.transmitB;

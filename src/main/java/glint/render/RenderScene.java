@@ -60,7 +60,8 @@ public final class RenderScene {
         for (int p = 0; p < materialOf.length; p++) {
             materialOf[p] = indexOf(materialList, inOrder.get(p).material());
         }
-        materials = Materials.of(materialList.stream().map(RenderScene::parameters).toList());
+        materials = Materials.of(materialList.stream().map(RenderScene::parameters).toList(),
+                settings.glassFresnel() == RenderSettings.GlassFresnel.EXACT);
         shadowPass = new double[materialOf.length];
         for (int p = 0; p < materialOf.length && settings.shading() == Shading.PHONG; p++) {
             int m = materialOf[p];

@@ -1,6 +1,7 @@
 package glint.render;
 
 import glint.config.Config;
+import glint.config.LightTransport;
 import glint.config.Shading;
 
 /**
@@ -12,9 +13,10 @@ import glint.config.Shading;
  * @param epsilon      base of the self-intersection offset, scaled by max(1, |p|)
  * @param glassFresnel how cook-torrance glass splits light between reflection and refraction
  * @param pruning      what happens to a ray whose path weight falls below {@code minWeight}
+ * @param transport    the integrator: Whitted's or the path tracer
  */
 public record RenderSettings(Shading shading, int recursionMax, double minWeight, double epsilon,
-                             GlassFresnel glassFresnel, Pruning pruning) {
+                             GlassFresnel glassFresnel, Pruning pruning, LightTransport transport) {
 
     /** Glass reflectance: the exact Fresnel equations (the default) or Schlick's approximation. */
     public enum GlassFresnel { EXACT, SCHLICK }
@@ -28,18 +30,23 @@ public record RenderSettings(Shading shading, int recursionMax, double minWeight
     public enum Pruning { ROULETTE, CUTOFF }
 
     public RenderSettings(Shading shading, int recursionMax, double minWeight, double epsilon) {
-        this(shading, recursionMax, minWeight, epsilon, GlassFresnel.EXACT, Pruning.ROULETTE);
+        this(shading, recursionMax, minWeight, epsilon, GlassFresnel.EXACT, Pruning.ROULETTE, LightTransport.WHITTED);
     }
 
     public static RenderSettings of(Config config) {
-        return new RenderSettings(config.shading(), config.recursionMax(), config.minWeight(), config.epsilon());
+        return new RenderSettings(config.shading(), config.recursionMax(), config.minWeight(), config.epsilon())
+                .withTransport(config.transport());
     }
 
     public RenderSettings withGlassFresnel(GlassFresnel fresnel) {
-        return new RenderSettings(shading, recursionMax, minWeight, epsilon, fresnel, pruning);
+        return new RenderSettings(shading, recursionMax, minWeight, epsilon, fresnel, pruning, transport);
     }
 
     public RenderSettings withPruning(Pruning mode) {
-        return new RenderSettings(shading, recursionMax, minWeight, epsilon, glassFresnel, mode);
+        return new RenderSettings(shading, recursionMax, minWeight, epsilon, glassFresnel, mode, transport);
+    }
+
+    public RenderSettings withTransport(LightTransport integrator) {
+        return new RenderSettings(shading, recursionMax, minWeight, epsilon, glassFresnel, pruning, integrator);
     }
 }

@@ -12,8 +12,8 @@ import java.util.concurrent.atomic.AtomicReference;
 
 /**
  * Renders frames with a persistent pool of {@link TracerWorker}s. A frame is split into
- * divider x divider tiles that the workers take in turn; every pixel is computed from its own
- * coordinates alone, so the image does not depend on the thread or tile count.
+ * divider x divider tiles that the workers take in turn, spread over the frame ({@link TileOrder}); every
+ * pixel is computed from its own coordinates alone, so the image does not depend on the thread or tile count.
  */
 public final class Tracer implements AutoCloseable {
 
@@ -44,6 +44,7 @@ public final class Tracer implements AutoCloseable {
     private volatile int sampleCount;
     private volatile int frameIndex;
     private volatile int divider;
+    private volatile int tileStride;
 
     public Tracer(int threads) {
         if (threads < 1) {
@@ -113,23 +114,24 @@ public final class Tracer implements AutoCloseable {
     }
 
     /**
-     * Renders only sample {@code pass} (0 .. samples - 1) of each pixel's stratified pattern for
-     * frame index 0. The average of passes 0 .. samples - 1 equals {@code render(..., samples, 0, ...)}:
-     * the window refines progressively towards the still image.
+     * Renders only pass {@code pass} of a progressive image: sample {@code pass mod samples} of each
+     * pixel's stratified pattern of frame index {@code pass / samples}. The average of passes 0 ..
+     * samples - 1 equals {@code render(..., samples, 0, ...)}: the window refines progressively towards
+     * the still image, and past it (the path integrator) through the patterns of later frames.
      */
     public void renderPass(RenderScene renderScene, FrameBuffer target, int samples, int pass, int divider) {
-        if (pass < 0 || pass >= samples) {
-            throw new IllegalArgumentException("pass " + pass + " outside 0.." + (samples - 1));
-        }
-        run(renderScene, target, samples, pass, 1, 0, divider);
+        renderPasses(renderScene, target, samples, pass, 1, divider);
     }
 
-    /** Passes {@code first} .. {@code first + count - 1} in one go: their average (the window, when passes are quick). */
+    /**
+     * Passes {@code first} .. {@code first + count - 1} in one go, all of one pattern: their average
+     * (the window, when passes are quick).
+     */
     public void renderPasses(RenderScene renderScene, FrameBuffer target, int samples, int first, int count, int divider) {
-        if (first < 0 || count < 1 || first + count > samples) {
-            throw new IllegalArgumentException("passes " + first + " + " + count + " outside 0.." + (samples - 1));
+        if (first < 0 || count < 1 || first % samples + count > samples) {
+            throw new IllegalArgumentException("passes " + first + " + " + count + " outside one pattern of " + samples);
         }
-        run(renderScene, target, samples, first, count, 0, divider);
+        run(renderScene, target, samples, first % samples, count, first / samples, divider);
     }
 
     private void run(RenderScene renderScene, FrameBuffer target, int samples, int first, int count,
@@ -145,6 +147,7 @@ public final class Tracer implements AutoCloseable {
         failure.set(null);
         tilesDone.set(0);
         frameTiles = this.divider * this.divider;
+        tileStride = TileOrder.stride(frameTiles);
         if (cancelled) {
             throw new CancellationException("the render was cancelled");
         }
@@ -180,9 +183,10 @@ public final class Tracer implements AutoCloseable {
         }
     }
 
-    private void renderTile(TracerWorker worker, int tile) {
+    private void renderTile(TracerWorker worker, int handedOut) {
         FrameBuffer f = frame;
         int d = divider;
+        int tile = TileOrder.tile(handedOut, d * d, tileStride); // spread over the frame: progress is a fair sample
         int column = tile % d, row = tile / d;
         int x0 = column * f.width() / d, x1 = (column + 1) * f.width() / d;
         int y0 = row * f.height() / d, y1 = (row + 1) * f.height() / d;

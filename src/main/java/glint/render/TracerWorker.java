@@ -3,15 +3,17 @@ package glint.render;
 import glint.accel.AggregatePolicy;
 import glint.accel.Candidates;
 import glint.accel.Frustum;
+import glint.config.LightTransport;
 
 /**
  * One render thread's share of a frame: traces the pixels of the tiles it is handed, a tile row
  * at a time: the row's camera rays aimed ({@link CameraRows}), each traced by the thread's
- * {@link Integrator}, and the row's pixels written. Allocates nothing per pixel.
+ * {@link Integrator} of the scene's light transport, and the row's pixels written. Allocates nothing per pixel.
  */
 final class TracerWorker {
 
-    private final Integrator integrator = new Integrator();
+    private final WhittedIntegrator whitted = new WhittedIntegrator();
+    private final PathIntegrator path = new PathIntegrator();
     private final CameraRows rows = new CameraRows();
     /** The current row's frustum and the primitives its camera rays may meet. */
     private final Frustum rowFrustum = new Frustum();
@@ -19,7 +21,7 @@ final class TracerWorker {
 
     /** Rays this worker has traced (camera, reflected, refracted and shadow rays). */
     long raysCast() {
-        return integrator.rays();
+        return whitted.rays() + path.rays();
     }
 
     /**
@@ -28,6 +30,7 @@ final class TracerWorker {
      */
     void renderTile(RenderScene scene, FrameBuffer frame, int samples, int firstSample, int sampleCount,
                     int frameIndex, int x0, int y0, int x1, int y1) {
+        Integrator integrator = scene.settings.transport() == LightTransport.PATH ? path : whitted;
         integrator.prepare(scene);
         rows.prepare(scene.camera, frame.width(), frame.height(), x0, x1, samples, firstSample, sampleCount,
                 frameIndex);

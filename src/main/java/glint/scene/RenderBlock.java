@@ -8,6 +8,7 @@ import java.util.Map;
  * config.properties (docs/scene-format.md).
  *
  * @param shading      {@code cook-torrance} or {@code phong}, or null
+ * @param integrator   {@code whitted} or {@code path}, or null
  * @param samples      samples per pixel (a perfect square), or null
  * @param recursionMax surface hits along a path, or null
  * @param minWeight    the pruning weight, or null
@@ -16,7 +17,7 @@ import java.util.Map;
  * @param file         the scene file, for messages
  * @param places       where each written key stands in the file, by its name
  */
-public record RenderBlock(String shading, Integer samples, Integer recursionMax, Double minWeight,
+public record RenderBlock(String shading, String integrator, Integer samples, Integer recursionMax, Double minWeight,
                           Integer width, Integer height, String file, Map<String, Place> places) {
 
     /** A key's line and column in the scene file (from 1). */
@@ -24,7 +25,7 @@ public record RenderBlock(String shading, Integer samples, Integer recursionMax,
     }
 
     /** No block: everything from the config. */
-    public static final RenderBlock NONE = new RenderBlock(null, null, null, null, null, null, "", Map.of());
+    public static final RenderBlock NONE = new RenderBlock(null, null, null, null, null, null, null, "", Map.of());
 
     public RenderBlock {
         places = Map.copyOf(places);
@@ -32,7 +33,7 @@ public record RenderBlock(String shading, Integer samples, Integer recursionMax,
 
     /** Whether the block sets nothing. */
     public boolean isEmpty() {
-        return shading == null && samples == null && recursionMax == null && minWeight == null && width == null
+        return shading == null && integrator == null && samples == null && recursionMax == null && minWeight == null && width == null
                 && height == null;
     }
 

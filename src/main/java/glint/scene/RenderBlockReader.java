@@ -13,8 +13,9 @@ import org.snakeyaml.engine.v2.nodes.Node;
 final class RenderBlockReader {
 
     static final Set<String> KEYS = new LinkedHashSet<>(
-            List.of("shading", "samples", "recursion_max", "min_weight", "width", "height"));
+            List.of("shading", "integrator", "samples", "recursion_max", "min_weight", "width", "height"));
     static final List<String> SHADINGS = List.of("cook-torrance", "phong");
+    static final List<String> INTEGRATORS = List.of("whitted", "path");
     /** The largest samples per pixel and image side, as in config.properties. */
     static final int MAX_SAMPLES = 4096, MAX_SIDE = 65536, MAX_RECURSION = 64;
 
@@ -45,6 +46,14 @@ final class RenderBlockReader {
                         + Suggestions.hint(shading, SHADINGS));
             }
         }
+        String integrator = null;
+        if (m.containsKey("integrator")) {
+            integrator = yaml.string(m.get("integrator"), "integrator");
+            if (!INTEGRATORS.contains(integrator)) {
+                throw yaml.error(m.get("integrator"), "unknown integrator " + InputException.quote(integrator)
+                        + ", expected whitted or path" + Suggestions.hint(integrator, INTEGRATORS));
+            }
+        }
         Integer samples = whole(m, "samples", 1, MAX_SAMPLES);
         if (samples != null && !isPerfectSquare(samples)) {
             throw yaml.error(m.get("samples"), "samples must be a perfect square (1, 4, 9, 16, ...), got " + samples);
@@ -64,7 +73,7 @@ final class RenderBlockReader {
         if ((width == null) != (height == null)) {
             throw yaml.error(node, "the still size needs both width and height in render");
         }
-        return new RenderBlock(shading, samples, depth, minWeight, width, height, file, places);
+        return new RenderBlock(shading, integrator, samples, depth, minWeight, width, height, file, places);
     }
 
     private Integer whole(Map<String, Node> m, String key, int min, int max) throws InputException {

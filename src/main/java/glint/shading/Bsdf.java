@@ -1,29 +1,58 @@
 package glint.shading;
 
 /**
- * How one material type scatters light in the physically based model ({@link CookTorrance}): the
- * light its surface sends back by itself, and the rays it sends on. One per material type
- * ({@code glint.scene.MaterialType}); {@link Lambert}, {@link Conductor} and {@link Dielectric}.
+ * How one material type scatters light (pbrt's BxDF, Mitsuba's BSDF): f(wo, wi) ({@link #evaluate}),
+ * a direction sampled with its weight and density ({@link #sample}, {@link #pdf}), and whether its
+ * lobes are delta ({@link #isDelta}); for Whitted's integrator besides, the single rays its lobes
+ * are followed along ({@link #specular}). It only answers: the integrators own the light loop, the
+ * depth and the rays. One per material type ({@code glint.scene.MaterialType}): {@link Lambert},
+ * {@link Conductor}, {@link Dielectric}.
  */
 public interface Bsdf {
 
-    /**
-     * The light v's surface sends back along the ray of unit direction d by itself (ambient and the
-     * lights it sees), into {@code v.sum}.
-     */
-    void direct(ShadingContext c, PathVertex v, double dx, double dy, double dz);
+    // wo and wi are unit world directions away from surface s (wo towards where the light goes, the
+    // reverse of the incoming ray), s's normal faces wo; the material is s.material.
+
+    /** f(wo, wi) of the material's lobes that are not delta, per channel, into {@code f} (0 where none). */
+    void evaluate(Materials m, Surface s, double woX, double woY, double woZ, double wiX, double wiY, double wiZ,
+                  Rgb f);
+
+    /** The density per solid angle with which {@link #sample} picks wi; 0 for a delta lobe's. */
+    double pdf(Materials m, Surface s, double woX, double woY, double woZ, double wiX, double wiY, double wiZ);
 
     /**
-     * Adds to {@code v.sum} what the rays the surface sends on bring back: {@code hitsLeft} hits the
-     * path may still shade (this one included), {@code weight} its throughput so far.
+     * Samples a direction wi for wo from the uniform numbers u1, u2 (the direction) and uLobe (which
+     * lobe), into {@code out}: wi, the weight f cos / pdf, the pdf and whether a delta lobe chose it.
+     * False where no direction is sampled (it would point into the surface): the path ends.
      */
-    void scatter(ShadingContext c, PathVertex v, double dx, double dy, double dz, int hitsLeft, double weight);
+    boolean sample(Materials m, Surface s, double woX, double woY, double woZ, double u1, double u2, double uLobe,
+                   BsdfSample out);
+
+    /** Whether every lobe of material {@code material} is a delta (a mirror, smooth glass): no light sample sees it. */
+    boolean isDelta(Materials m, int material);
 
     /**
-     * For a material that refracts, its boundary's factors into {@code v.eta}, {@code v.reflect}
-     * and {@code v.transmitR/G/B}; the others have none.
+     * Whitted's rays: the factors of the single rays the surface sends on in place of its lobes, into
+     * {@code v}: the mirrored ray's per channel ({@code v.reflectR/G/B}; a glossy lobe is followed along
+     * its mirror direction) and, for one that refracts, eta and the tint of the refracted ray
+     * ({@code v.eta}, {@code v.transmitR/G/B}; 0 for none). They depend on the material, the side met
+     * and the cosine alone.
      */
-    default void boundary(ShadingContext c, PathVertex v) {
+    void specular(Materials m, Surface s, PathVertex v);
+
+    /** Whether Whitted's ambient light reaches the surface, times its colour (a matte surface's albedo). */
+    default boolean ambientLit() {
+        return false;
+    }
+
+    /** Whether the surface sends light of its own ({@link #emitted}). */
+    default boolean emits() {
+        return false;
+    }
+
+    /** The radiance the surface sends of its own towards wo, into {@code out}, where it {@link #emits}. */
+    default void emitted(Materials m, Surface s, Rgb out) {
+        out.set(0, 0, 0);
     }
 
     /** Whether light passes through the material (the phong model's shadow rays pass kt of it). */

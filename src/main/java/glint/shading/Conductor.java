@@ -1,60 +1,112 @@
 package glint.shading;
 
 /**
- * A metal: a mirror weighted by Schlick's Fresnel with F0 = the material's colour, plus, when it is
- * rough, a GGX highlight from each light it sees.
+ * A metal (SPEC section 4): the GGX microfacet lobe with Schlick's Fresnel, F0 = the material's
+ * colour, and height-correlated Smith masking; a delta mirror below {@link Microfacet#MIRROR_ALPHA}.
+ * Whitted's integrator follows its mirror direction and lights its lobe (the highlight).
  */
 public final class Conductor implements Bsdf {
 
-    /** The GGX highlight from each light the surface sees, when rough. */
+    /** The mirrored ray, weighted by Schlick's Fresnel per channel, whatever the roughness. */
     @Override
-    public void direct(ShadingContext c, PathVertex v, double dx, double dy, double dz) {
-        Surface s = v.surface;
-        Materials m = c.materials();
+    public void specular(Materials m, Surface s, PathVertex v) {
         int material = s.material;
-        Rgb sum = v.sum;
-        sum.set(0, 0, 0);
-        if (m.alpha(material) > 0 && s.cosIncident > 0) {
-            LightSample light = v.light;
-            Lights lights = c.lights();
-            for (int i = 0; i < lights.count(); i++) {
-                if (c.lightReaching(s, i, light) > 0) {
-                    addHighlight(m, material, s, light, dx, dy, dz, sum);
-                }
-            }
-        }
+        double cos = s.cosIncident;
+        v.setReflect(Optics.schlick(m.color(material, 0), cos), Optics.schlick(m.color(material, 1), cos),
+                Optics.schlick(m.color(material, 2), cos));
+        v.setTransmit(0, 0, 0);
     }
 
-    /** The mirrored ray, weighted by Schlick's Fresnel per channel. */
+    /** f = D(h) G2 F(wo.h) / (4 wo.n wi.n), the GGX lobe; none below {@link Microfacet#MIRROR_ALPHA}, a mirror. */
     @Override
-    public void scatter(ShadingContext c, PathVertex v, double dx, double dy, double dz, int hitsLeft, double weight) {
-        if (hitsLeft <= 1) {
+    public void evaluate(Materials m, Surface s, double woX, double woY, double woZ, double wiX, double wiY,
+                         double wiZ, Rgb f) {
+        int material = s.material;
+        double alpha = m.alpha(material);
+        double cosOut = woX * s.nx + woY * s.ny + woZ * s.nz, cosIn = wiX * s.nx + wiY * s.ny + wiZ * s.nz;
+        if (alpha < Microfacet.MIRROR_ALPHA || !(cosOut > 0) || !(cosIn > 0)) {
+            f.set(0, 0, 0);
             return;
         }
-        Surface s = v.surface;
-        Materials m = c.materials();
-        int material = s.material;
-        c.addReflected(s, dx, dy, dz, hitsLeft, weight, Optics.schlick(m.color(material, 0), s.cosIncident),
-                Optics.schlick(m.color(material, 1), s.cosIncident),
-                Optics.schlick(m.color(material, 2), s.cosIncident), v.sum);
+        double hx = woX + wiX, hy = woY + wiY, hz = woZ + wiZ;
+        double inv = 1 / Math.sqrt(hx * hx + hy * hy + hz * hz);
+        double cosHalf = (hx * s.nx + hy * s.ny + hz * s.nz) * inv;
+        double cosOutHalf = Math.max(0, (hx * woX + hy * woY + hz * woZ) * inv);
+        double lobe = Optics.ggx(cosHalf, alpha) * Microfacet.g2(cosOut, cosIn, alpha) / (4 * cosOut * cosIn);
+        f.set(lobe * Optics.schlick(m.color(material, 0), cosOutHalf),
+                lobe * Optics.schlick(m.color(material, 1), cosOutHalf),
+                lobe * Optics.schlick(m.color(material, 2), cosOutHalf));
+    }
+
+    @Override
+    public double pdf(Materials m, Surface s, double woX, double woY, double woZ, double wiX, double wiY,
+                      double wiZ) {
+        double alpha = m.alpha(s.material);
+        double cosOut = woX * s.nx + woY * s.ny + woZ * s.nz, cosIn = wiX * s.nx + wiY * s.ny + wiZ * s.nz;
+        if (alpha < Microfacet.MIRROR_ALPHA || !(cosOut > 0) || !(cosIn > 0)) {
+            return 0;
+        }
+        double hx = woX + wiX, hy = woY + wiY, hz = woZ + wiZ;
+        double cosHalf = (hx * s.nx + hy * s.ny + hz * s.nz) / Math.sqrt(hx * hx + hy * hy + hz * hz);
+        return Microfacet.reflectedPdf(cosOut, cosHalf, alpha);
     }
 
     /**
-     * Adds the GGX highlight from one light to {@code sum}: D(h) V(l, v) n.l x F(v.h) x the light's
-     * irradiance, F Schlick's with F0 = the material's colour. The view direction is -d; the
-     * sample's direction is the unit direction to the light, its cosine n.l > 0.
+     * The mirror direction below {@link Microfacet#MIRROR_ALPHA}, weight Schlick's F; otherwise wo
+     * mirrored about a visible GGX normal, weight F G2 / G1(wo).
      */
-    private static void addHighlight(Materials materials, int m, Surface s, LightSample l, double dx, double dy,
-                                     double dz, Rgb sum) {
-        double alpha = materials.alpha(m);
-        double cosLight = l.cosine;
-        double hx = l.dirX - dx, hy = l.dirY - dy, hz = l.dirZ - dz;
-        double inv = 1 / Math.sqrt(hx * hx + hy * hy + hz * hz);
-        double cosHalf = (hx * s.nx + hy * s.ny + hz * s.nz) * inv;
-        double cosViewHalf = Math.max(0, -(hx * dx + hy * dy + hz * dz) * inv);
-        double specular = Optics.ggx(cosHalf, alpha) * Optics.smithVisibility(cosLight, s.cosIncident, alpha) * cosLight;
-        sum.r += specular * Optics.schlick(materials.color(m, 0), cosViewHalf) * l.irradianceR;
-        sum.g += specular * Optics.schlick(materials.color(m, 1), cosViewHalf) * l.irradianceG;
-        sum.b += specular * Optics.schlick(materials.color(m, 2), cosViewHalf) * l.irradianceB;
+    @Override
+    public boolean sample(Materials m, Surface s, double woX, double woY, double woZ, double u1, double u2,
+                          double uLobe, BsdfSample out) {
+        int material = s.material;
+        double alpha = m.alpha(material);
+        double cosOut = s.cosIncident;
+        out.transmitted = false;
+        if (alpha < Microfacet.MIRROR_ALPHA) {
+            mirror(s, woX, woY, woZ, out);
+            out.setWeight(Optics.schlick(m.color(material, 0), cosOut), Optics.schlick(m.color(material, 1), cosOut),
+                    Optics.schlick(m.color(material, 2), cosOut));
+            out.pdf = 0;
+            out.delta = true;
+            return true;
+        }
+        if (!(cosOut > 0)) {
+            return false;
+        }
+        ShadingFrame frame = out.frame;
+        frame.set(s.nx, s.ny, s.nz);
+        double[] h = out.half;
+        Microfacet.sampleVisibleNormal(frame.localX(woX, woY, woZ), frame.localY(woX, woY, woZ), cosOut, alpha, u1, u2,
+                h);
+        double hx = frame.worldX(h[0], h[1], h[2]), hy = frame.worldY(h[0], h[1], h[2]), hz = frame.worldZ(h[0], h[1], h[2]);
+        double cosOutHalf = woX * hx + woY * hy + woZ * hz;
+        double k = 2 * cosOutHalf;
+        out.wiX = k * hx - woX;
+        out.wiY = k * hy - woY;
+        out.wiZ = k * hz - woZ;
+        double cosIn = out.wiX * s.nx + out.wiY * s.ny + out.wiZ * s.nz;
+        if (!(cosIn > 0) || !(cosOutHalf > 0)) {
+            return false;
+        }
+        double masking = Microfacet.g2(cosOut, cosIn, alpha) / Microfacet.g1(cosOut, alpha);
+        out.setWeight(masking * Optics.schlick(m.color(material, 0), cosOutHalf),
+                masking * Optics.schlick(m.color(material, 1), cosOutHalf),
+                masking * Optics.schlick(m.color(material, 2), cosOutHalf));
+        out.pdf = Microfacet.reflectedPdf(cosOut, h[2], alpha);
+        out.delta = false;
+        return true;
+    }
+
+    @Override
+    public boolean isDelta(Materials m, int material) {
+        return m.alpha(material) < Microfacet.MIRROR_ALPHA;
+    }
+
+    /** Sets out's direction to wo mirrored about s's normal. */
+    static void mirror(Surface s, double woX, double woY, double woZ, BsdfSample out) {
+        double k = 2 * (woX * s.nx + woY * s.ny + woZ * s.nz);
+        out.wiX = k * s.nx - woX;
+        out.wiY = k * s.ny - woY;
+        out.wiZ = k * s.nz - woZ;
     }
 }

@@ -1,37 +1,63 @@
 package glint.shading;
 
-/** A matte surface: Lambert's term, albedo / pi x the irradiance from each light it sees, plus ambient x albedo. */
+/** A matte surface: Lambert's f = albedo / pi, sampled by the cosine. */
 public final class Lambert implements Bsdf {
 
     private static final double INV_PI = 1 / Math.PI;
 
+    /** A matte surface sends no single rays on. */
     @Override
-    public void direct(ShadingContext c, PathVertex v, double dx, double dy, double dz) {
-        Surface s = v.surface;
-        LightSample light = v.light;
-        Lights lights = c.lights();
-        double irradianceR = 0, irradianceG = 0, irradianceB = 0;
-        for (int i = 0; i < lights.count(); i++) {
-            if (c.lightReaching(s, i, light) > 0) {
-                irradianceR += light.irradianceR * light.cosine;
-                irradianceG += light.irradianceG * light.cosine;
-                irradianceB += light.irradianceB * light.cosine;
-            }
-        }
-        Materials m = c.materials();
+    public void specular(Materials m, Surface s, PathVertex v) {
+        v.setReflect(0, 0, 0);
+        v.setTransmit(0, 0, 0);
+    }
+
+    @Override
+    public boolean ambientLit() {
+        return true;
+    }
+
+    @Override
+    public void evaluate(Materials m, Surface s, double woX, double woY, double woZ, double wiX, double wiY,
+                         double wiZ, Rgb f) {
         int material = s.material;
-        v.sum.set(radiance(m.color(material, 0), irradianceR, c.ambient(0)),
-                radiance(m.color(material, 1), irradianceG, c.ambient(1)),
-                radiance(m.color(material, 2), irradianceB, c.ambient(2)));
+        if (wiX * s.nx + wiY * s.ny + wiZ * s.nz > 0) {
+            f.set(m.color(material, 0) * INV_PI, m.color(material, 1) * INV_PI, m.color(material, 2) * INV_PI);
+        } else {
+            f.set(0, 0, 0);
+        }
     }
 
-    /** A matte surface sends no rays on. */
     @Override
-    public void scatter(ShadingContext c, PathVertex v, double dx, double dy, double dz, int hitsLeft, double weight) {
+    public double pdf(Materials m, Surface s, double woX, double woY, double woZ, double wiX, double wiY,
+                      double wiZ) {
+        return Math.max(0, wiX * s.nx + wiY * s.ny + wiZ * s.nz) * INV_PI;
     }
 
-    /** One channel: albedo / pi x the irradiance summed over the lights it sees (n.l applied), plus ambient x albedo. */
-    static double radiance(double albedo, double irradiance, double ambient) {
-        return albedo * (irradiance * INV_PI + ambient);
+    /** A cosine-weighted direction on the normal's side (Malley's method): the weight is the albedo. */
+    @Override
+    public boolean sample(Materials m, Surface s, double woX, double woY, double woZ, double u1, double u2,
+                          double uLobe, BsdfSample out) {
+        double r = Math.sqrt(u1), phi = 2 * Math.PI * u2;
+        double x = r * Math.cos(phi), y = r * Math.sin(phi), z = Math.sqrt(Math.max(0, 1 - u1));
+        if (!(z > 0)) {
+            return false;
+        }
+        ShadingFrame frame = out.frame;
+        frame.set(s.nx, s.ny, s.nz);
+        out.wiX = frame.worldX(x, y, z);
+        out.wiY = frame.worldY(x, y, z);
+        out.wiZ = frame.worldZ(x, y, z);
+        out.pdf = z * INV_PI;
+        int material = s.material;
+        out.setWeight(m.color(material, 0), m.color(material, 1), m.color(material, 2));
+        out.delta = false;
+        out.transmitted = false;
+        return true;
+    }
+
+    @Override
+    public boolean isDelta(Materials m, int material) {
+        return false;
     }
 }

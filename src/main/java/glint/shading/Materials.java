@@ -14,8 +14,14 @@ public final class Materials {
     private final double[] color; // 3 per material, linear RGB
     private final double[] kd, ks, kt, shininess, ior;
     private final double[] alpha; // GGX alpha = roughness^2; 0: no highlight
+    private final boolean exactFresnel;
+    /** Per material: whether Whitted's ambient light reaches it, and whether it sends light of its own. */
+    private final boolean[] ambientLit, emits;
+    /** Per material: whether all its lobes are delta ({@link Bsdf#isDelta}), asked once. */
+    private final boolean[] delta;
 
-    private Materials(List<Parameters> materials) {
+    private Materials(List<Parameters> materials, boolean exactFresnel) {
+        this.exactFresnel = exactFresnel;
         int n = materials.size();
         bsdf = new Bsdf[n];
         color = new double[3 * n];
@@ -25,9 +31,14 @@ public final class Materials {
         shininess = new double[n];
         ior = new double[n];
         alpha = new double[n];
+        ambientLit = new boolean[n];
+        emits = new boolean[n];
+        delta = new boolean[n];
         for (int i = 0; i < n; i++) {
             Parameters m = materials.get(i);
             bsdf[i] = m.bsdf;
+            ambientLit[i] = m.bsdf.ambientLit();
+            emits[i] = m.bsdf.emits();
             color[3 * i] = m.color.x();
             color[3 * i + 1] = m.color.y();
             color[3 * i + 2] = m.color.z();
@@ -38,6 +49,9 @@ public final class Materials {
             ior[i] = m.ior;
             alpha[i] = m.roughness > 0 ? Math.max(m.roughness * m.roughness, MIN_ALPHA) : 0;
         }
+        for (int i = 0; i < n; i++) {
+            delta[i] = bsdf[i].isDelta(this, i);
+        }
     }
 
     /** A material as the compiled scene keeps it: its type's BSDF and its values. */
@@ -47,7 +61,17 @@ public final class Materials {
 
     /** The materials numbered in the order given. */
     public static Materials of(List<Parameters> materials) {
-        return new Materials(new ArrayList<>(materials));
+        return of(materials, true);
+    }
+
+    /** The materials numbered in the order given; glass reflects by the exact Fresnel equations or by Schlick's. */
+    public static Materials of(List<Parameters> materials, boolean exactFresnel) {
+        return new Materials(new ArrayList<>(materials), exactFresnel);
+    }
+
+    /** Whether a glass boundary reflects by the exact Fresnel equations (else by Schlick's). */
+    public boolean exactFresnel() {
+        return exactFresnel;
     }
 
     public int count() {
@@ -57,6 +81,21 @@ public final class Materials {
     /** How material m scatters light in the physically based model. */
     public Bsdf bsdf(int m) {
         return bsdf[m];
+    }
+
+    /** Whether all of material m's lobes are delta: no light sample sees them ({@link Bsdf#isDelta}). */
+    public boolean isDelta(int m) {
+        return delta[m];
+    }
+
+    /** Whether Whitted's ambient light reaches material m, times its colour ({@link Bsdf#ambientLit}). */
+    public boolean ambientLit(int m) {
+        return ambientLit[m];
+    }
+
+    /** Whether material m sends light of its own ({@link Bsdf#emits}). */
+    public boolean emits(int m) {
+        return emits[m];
     }
 
     /** Albedo (matte), reflectance at normal incidence (metal) or transmission tint (glass): channel 0, 1, 2. */

@@ -16,11 +16,14 @@ public final class PathVertex {
     public final double[] refracted = new double[3];
     public final Rgb sum = new Rgb();
     public final Rgb radiance = new Rgb();
+    /** A BSDF's value while the lights are summed. */
+    public final Rgb f = new Rgb();
     /**
-     * Where the surface's material refracts ({@link ShadingModel#boundary}): eta = n_incident /
-     * n_transmitted, the grey factor of the reflected ray and the tint of the refracted one.
+     * The single rays the surface sends on ({@link ShadingModel#specular}): the factors of the
+     * mirrored ray, and where it refracts, eta = n_incident / n_transmitted and the tint of the
+     * refracted ray (0 for none).
      */
-    public double eta, reflect, transmitR, transmitG, transmitB;
+    public double reflectR, reflectG, reflectB, eta, transmitR, transmitG, transmitB;
     /**
      * Along a walk inside a closed primitive: the path weight of the ray that met this vertex, what
      * its reflected ray counts for, and whether the ray leaving through the surface refracts
@@ -28,4 +31,21 @@ public final class PathVertex {
      */
     public double weight, keepReflected;
     public boolean leavesThrough;
+
+    public void setReflect(double r, double g, double b) {
+        reflectR = r;
+        reflectG = g;
+        reflectB = b;
+    }
+
+    public void setTransmit(double r, double g, double b) {
+        transmitR = r;
+        transmitG = g;
+        transmitB = b;
+    }
+
+    /** The largest factor of the mirrored ray. */
+    public double reflectMax() {
+        return Math.max(reflectR, Math.max(reflectG, reflectB));
+    }
 }

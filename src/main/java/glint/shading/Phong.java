@@ -8,14 +8,6 @@ package glint.shading;
  */
 public final class Phong implements ShadingModel {
 
-    @Override
-    public void shade(ShadingContext c, PathVertex v, double dx, double dy, double dz, int hitsLeft, double weight) {
-        direct(c, v, dx, dy, dz);
-        boundary(c, v);
-        c.scatter(v, dx, dy, dz, hitsLeft, weight);
-        v.radiance.set(v.sum.r, v.sum.g, v.sum.b);
-    }
-
     /** Ambient, and per light the diffuse term and the highlight, through what the shadow ray passes. */
     @Override
     public void direct(ShadingContext c, PathVertex v, double dx, double dy, double dz) {
@@ -50,12 +42,12 @@ public final class Phong implements ShadingModel {
 
     /** ks of the light reflected, kt x colour of the light refracted, whatever the angle. */
     @Override
-    public void boundary(ShadingContext c, PathVertex v) {
+    public void specular(ShadingContext c, PathVertex v) {
         Materials m = c.materials();
         int material = v.surface.material;
-        double kt = m.kt(material);
+        double kt = m.kt(material), ks = m.ks(material);
         v.eta = Optics.eta(m.ior(material), v.surface.front);
-        v.reflect = m.ks(material);
+        v.setReflect(ks, ks, ks);
         v.transmitR = kt * m.color(material, 0);
         v.transmitG = kt * m.color(material, 1);
         v.transmitB = kt * m.color(material, 2);

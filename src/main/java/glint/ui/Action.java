@@ -19,7 +19,7 @@ public enum Action {
     ORBIT(Kind.POINTER),
     /** Not a key: the mouse wheel changes the flying speed. */
     SPEED(Kind.POINTER),
-    TOGGLE_SHADING(Kind.COMMAND), DEPTH_UP(Kind.COMMAND), DEPTH_DOWN(Kind.COMMAND),
+    TOGGLE_SHADING(Kind.COMMAND), TOGGLE_INTEGRATOR(Kind.COMMAND), DEPTH_UP(Kind.COMMAND), DEPTH_DOWN(Kind.COMMAND),
     SCREENSHOT(Kind.COMMAND), RELOAD(Kind.COMMAND), QUIT(Kind.COMMAND),
     TOGGLE_OVERLAY(Kind.COMMAND), TOGGLE_HELP(Kind.COMMAND),
     /** Takes the roll out of the camera. */

@@ -146,6 +146,12 @@ public final class CameraController {
         this.pivot = point;
     }
 
+    /** The field of view for the overlay while Z or X is held: {@code fov 42.4 degrees}, and at a bound which one. */
+    String fovNote() {
+        String note = String.format(java.util.Locale.ROOT, "fov %.1f degrees", fovDegrees);
+        return fovDegrees <= MIN_FOV ? note + " (the narrowest)" : fovDegrees >= MAX_FOV ? note + " (the widest)" : note;
+    }
+
     private boolean zoom(InputFrame in) {
         double seconds = in.seconds(Action.ZOOM_IN) - in.seconds(Action.ZOOM_OUT);
         if (seconds == 0) {

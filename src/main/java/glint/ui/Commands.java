@@ -41,8 +41,11 @@ final class Commands {
         CameraController controller = view.controller();
         switch (action) {
             case TOGGLE_SHADING -> {
-                seen.shading = seen.shading.other();
-                status.note("shading " + seen.shading.key());
+                status.note(seen.toggleShading());
+                view.invalidate();
+            }
+            case TOGGLE_INTEGRATOR -> {
+                status.note(seen.toggleTransport());
                 view.invalidate();
             }
             case DEPTH_UP, DEPTH_DOWN -> {

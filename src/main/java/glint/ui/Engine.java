@@ -238,6 +238,9 @@ public final class Engine implements Runnable, SceneWatcher.Listener {
                     size.height()));
         }
         boolean moved = controller.apply(in);
+        if (in.seconds(Action.ZOOM_IN) > 0 || in.seconds(Action.ZOOM_OUT) > 0) { // Z or X held: the fov as it changes
+            status.note(controller.fovNote());
+        }
         if (moved) {
             lastMotion = start;
             view.cameraMoved();
@@ -247,7 +250,7 @@ public final class Engine implements Runnable, SceneWatcher.Listener {
                 commands.run(command, in);
             }
         }
-        int samples = view.settings().config.samples();
+        int samples = Refinement.passes(view.settings().still());
         boolean moving = moved || in.motionHeld() || start - lastMotion < MOTION_HOLD_NANOS;
         boolean frameDue = moving ? view.needFrame() : view.passesDone() < samples;
         if (frameDue && start < maker.retryAt()) { // the last try failed: the next one comes when the pause is over

@@ -58,12 +58,13 @@ final class FrameMaker implements AutoCloseable {
     /** Renders and shows the next still passes; false if it failed (shown, and tried again later). */
     boolean pass(long start) {
         ResolutionGovernor.Size s = size.fit(1);
-        Config config = view.settings().config;
-        int samples = config.samples();
-        int count = pacing.passes(view.passesDone(), samples, start); // quick passes: several in one go
+        Config config = view.settings().still();
+        int samples = Refinement.passes(config), pattern = Refinement.pattern(config);
+        int done = view.passesDone();
+        int count = Refinement.inOneCall(pacing.passes(done, samples, start), done, pattern); // quick: several at once
         BufferedImage image;
         try {
-            image = renderer.renderPasses(view.compiled(), s.width(), s.height(), samples, view.passesDone(), count);
+            image = renderer.renderPasses(view.compiled(), s.width(), s.height(), pattern, done, count);
         } catch (RuntimeException | OutOfMemoryError e) {
             failed(e);
             frames.presentStatus();

@@ -1,5 +1,6 @@
 package glint.ui;
 
+import glint.config.LightTransport;
 import java.awt.image.BufferedImage;
 import java.io.PrintWriter;
 import java.util.Locale;
@@ -92,8 +93,11 @@ final class FrameOutput {
     private FrameStats stats(double fps, double msPerFrame, int renderWidth, int renderHeight, int frameViewWidth,
                              int frameViewHeight, int samplesDone, boolean moving) {
         ViewSettings seen = view.settings();
+        boolean path = seen.transport == LightTransport.PATH;
+        double noise = path && !moving && samplesDone > 1 ? renderer.relativeNoise() : Double.NaN;
         return new FrameStats(fps, msPerFrame, renderWidth, renderHeight, frameViewWidth, frameViewHeight,
-                samplesDone, seen.config.samples(), moving, renderer.threads(), seen.shading, seen.depth,
+                samplesDone, Refinement.passes(seen.still()), moving, renderer.threads(), seen.shading,
+                seen.transport, noise, seen.depth,
                 view.controller().speed(), source.scenePath().toString(), status.message(), status.error(),
                 size.sizeLimit(), faults.overlayLine());
     }

@@ -110,6 +110,11 @@ final class FrameRenderer implements AutoCloseable {
         return image;
     }
 
+    /** The noise left in the still passes on screen, relative to their brightness ({@link Accumulator#relativeNoise}). */
+    double relativeNoise() {
+        return accumulator.relativeNoise();
+    }
+
     private FrameBuffer buffer(int width, int height) {
         if (buffer == null || buffer.width() != width || buffer.height() != height) {
             buffer = null; // the old one can go before the new one is taken

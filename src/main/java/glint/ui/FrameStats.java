@@ -1,5 +1,6 @@
 package glint.ui;
 
+import glint.config.LightTransport;
 import glint.config.Shading;
 
 /**
@@ -16,6 +17,8 @@ import glint.config.Shading;
  * @param moving        whether the camera is moving (adaptive resolution, no refinement)
  * @param threads       render threads
  * @param shading       shading model
+ * @param transport     the integrator
+ * @param noise         the noise left in a path frame at rest, relative to its brightness; NaN when not known
  * @param depth         recursion depth (recursion_max)
  * @param speed         flying speed in scene units per second, without Shift
  * @param scene         the scene file
@@ -27,8 +30,18 @@ import glint.config.Shading;
  */
 public record FrameStats(double fps, double msPerFrame, int renderWidth, int renderHeight, int viewWidth,
                          int viewHeight, int samplesDone, int samplesTotal, boolean moving, int threads,
-                         Shading shading, int depth, double speed, String scene, String message, String error,
-                         String sizeLimit, String renderError) {
+                         Shading shading, LightTransport transport, double noise, int depth, double speed,
+                         String scene, String message, String error, String sizeLimit, String renderError) {
+
+    /** Figures of a Whitted frame, whose noise is not estimated. */
+    public FrameStats(double fps, double msPerFrame, int renderWidth, int renderHeight, int viewWidth,
+                      int viewHeight, int samplesDone, int samplesTotal, boolean moving, int threads,
+                      Shading shading, int depth, double speed, String scene, String message, String error,
+                      String sizeLimit, String renderError) {
+        this(fps, msPerFrame, renderWidth, renderHeight, viewWidth, viewHeight, samplesDone, samplesTotal, moving,
+                threads, shading, LightTransport.WHITTED, Double.NaN, depth, speed, scene, message, error, sizeLimit,
+                renderError);
+    }
 
     /** Whether the image is final: still and every sample accumulated. */
     public boolean refined() {

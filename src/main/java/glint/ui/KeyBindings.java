@@ -52,6 +52,8 @@ public final class KeyBindings {
                     + " a notch up, / " + fmt(CameraController.WHEEL_FACTOR) + " a notch down"),
             key(Action.TOGGLE_SHADING, "M or Tab", "switch shading: cook-torrance / phong",
                     KeyEvent.VK_M, KeyEvent.VK_TAB),
+            key(Action.TOGGLE_INTEGRATOR, "I", "switch integrator: whitted / path (light that bounces)",
+                    KeyEvent.VK_I),
             typed(Action.DEPTH_UP, "+ (or =)", "recursion depth + 1", "+="),
             typed(Action.DEPTH_DOWN, "-", "recursion depth - 1", "-_"),
             key(Action.SCREENSHOT, "F12 or P", "save the view as a PNG: glint-YYYYMMDD-HHMMSS-mmm.png",

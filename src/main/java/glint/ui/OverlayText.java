@@ -1,5 +1,6 @@
 package glint.ui;
 
+import glint.config.LightTransport;
 import java.util.ArrayList;
 import java.util.List;
 import java.util.Locale;
@@ -33,10 +34,16 @@ final class OverlayText {
         if (!s.sizeLimit().isEmpty()) {
             lines.add(new Line("window too large: rendered at most " + s.sizeLimit(), Tone.NOTE));
         }
-        lines.add(normal(String.format(Locale.ROOT, "samples %d/%d   threads %d", s.samplesDone(),
-                s.samplesTotal(), s.threads())));
-        lines.add(normal(String.format(Locale.ROOT, "shading %s   depth %d   speed %s/s", s.shading().key(),
-                s.depth(), number(s.speed()))));
+        if (s.transport() == LightTransport.PATH) {
+            lines.add(normal(String.format(Locale.ROOT, "samples %d%s   threads %d", s.samplesDone(),
+                    Double.isNaN(s.noise()) ? "" : String.format(Locale.ROOT, "   noise %.1f %%", 100 * s.noise()),
+                    s.threads())));
+        } else {
+            lines.add(normal(String.format(Locale.ROOT, "samples %d/%d   threads %d", s.samplesDone(),
+                    s.samplesTotal(), s.threads())));
+        }
+        lines.add(normal(String.format(Locale.ROOT, "shading %s   %sdepth %d   speed %s/s", s.shading().key(),
+                s.transport() == LightTransport.PATH ? "integrator path   " : "", s.depth(), number(s.speed()))));
         lines.add(normal(s.scene()));
         if (!s.message().isEmpty()) {
             for (String line : s.message().split("\n")) { // a camera block (key C) is several lines

@@ -1,6 +1,7 @@
 package glint.ui;
 
 import glint.config.Config;
+import glint.config.LightTransport;
 import glint.image.ImageWriter;
 import glint.image.PartFile;
 import glint.image.PartGuard;
@@ -77,13 +78,15 @@ final class StillRender implements AutoCloseable {
     static Job job(RenderScene scene, Camera printed, Config still, Path scenePath, Screenshots folder, boolean pfm) {
         // named after the scene: phong-classic-20261202-153000-123.png, in the screenshots' folder
         Path png = folder.name(scenePath.getFileName().toString().replaceFirst("\\.[^.]*$", ""), ".png");
-        String settings = String.format(Locale.ROOT, "%dx%d, %d spp, %s, depth %d", still.displayWidth(),
-                still.displayHeight(), still.samples(), still.shading().key(), still.recursionMax());
+        boolean path = still.transport() == LightTransport.PATH;
+        String settings = String.format(Locale.ROOT, "%dx%d, %d spp, %s%s, depth %d", still.displayWidth(),
+                still.displayHeight(), still.samples(), still.shading().key(), path ? ", path" : "",
+                still.recursionMax());
         String recipe = "still: the same image headless, with this camera in " + scenePath + ":\n"
                 + String.format(Locale.ROOT, "  java -jar target/glint.jar --scene %s --width %d --height %d --spp %d"
-                        + " --shading %s --depth %d --output %s%n", scenePath, still.displayWidth(),
-                        still.displayHeight(), still.samples(), still.shading().key(), still.recursionMax(),
-                        png.getFileName())
+                        + " --shading %s%s --depth %d --output %s%n", scenePath, still.displayWidth(),
+                        still.displayHeight(), still.samples(), still.shading().key(),
+                        path ? " --integrator path" : "", still.recursionMax(), png.getFileName())
                 + CameraBlock.yaml(printed);
         Path pfmFile = pfm ? png.resolveSibling(png.getFileName().toString().replaceFirst("\\.png$", ".pfm")) : null;
         return new Job(scene, still.displayWidth(), still.displayHeight(), still.samples(), still.effectiveThreads(),

@@ -2,6 +2,7 @@ package glint.ui;
 
 import glint.config.Config;
 import glint.config.Flags;
+import glint.config.LightTransport;
 import glint.config.Shading;
 import glint.input.InputException;
 import glint.render.RenderSettings;
@@ -21,6 +22,8 @@ final class ViewSettings {
     /** The shading and depth on screen: the scene's, or the user's. */
     Shading shading;
     int depth;
+    /** The integrator on screen: the scene's, or the user's (key I). */
+    LightTransport transport;
     private String blockError = "";
 
     ViewSettings(Config base, Flags flags) {
@@ -29,6 +32,7 @@ final class ViewSettings {
         this.config = base;
         this.shading = base.shading();
         this.depth = base.recursionMax();
+        this.transport = base.transport();
     }
 
     /** A scene (a new one, or a new version of it) is on screen from now on. */
@@ -40,6 +44,9 @@ final class ViewSettings {
         if (seen.recursionMax() != config.recursionMax()) {
             depth = seen.recursionMax();
         }
+        if (seen.transport() != config.transport()) {
+            transport = seen.transport();
+        }
         config = seen;
     }
 
@@ -48,6 +55,7 @@ final class ViewSettings {
         base = newBase;
         config = seenWith(scene);
         shading = config.shading();
+        transport = config.transport();
         depth = config.recursionMax(); // at most max_recursion: the config loader and the block refuse more
     }
 
@@ -61,9 +69,32 @@ final class ViewSettings {
         return RenderSettings.of(still());
     }
 
-    /** The scene's settings with the shading and depth on screen. */
+    /** The scene's settings with the shading, integrator and depth on screen. */
     Config still() {
-        return config.withShading(shading).withRecursionMax(depth);
+        return config.withShading(shading).withTransport(transport).withRecursionMax(depth);
+    }
+
+    /**
+     * Switches the shading model; the path integrator goes with cook-torrance only, so phong brings
+     * Whitted's. Returns what the overlay says.
+     */
+    String toggleShading() {
+        shading = shading.other();
+        if (shading == Shading.PHONG && transport == LightTransport.PATH) {
+            transport = LightTransport.WHITTED;
+            return "shading phong, integrator whitted (path needs cook-torrance)";
+        }
+        return "shading " + shading.key();
+    }
+
+    /** Switches the integrator; the path integrator brings cook-torrance. Returns what the overlay says. */
+    String toggleTransport() {
+        transport = transport.other();
+        if (transport == LightTransport.PATH && shading == Shading.PHONG) {
+            shading = Shading.COOK_TORRANCE;
+            return "integrator path, shading cook-torrance (path needs it)";
+        }
+        return "integrator " + transport.key();
     }
 
     /**

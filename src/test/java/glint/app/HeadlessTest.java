@@ -57,8 +57,10 @@ class HeadlessTest {
         assertEquals("rendering: 25% done, about 30 s left", Progress.line(0.25, 10_000_000_000L));
         // a tenth in 25 s: 225 s = 3 min 45 s more
         assertEquals("rendering: 10% done, about 3 min 45 s left", Progress.line(0.1, 25_000_000_000L));
-        // 1 % in 60 s: 5,940 s = 1 h 39 min more
-        assertEquals("rendering: 1% done, about 1 h 39 min left", Progress.line(0.01, 60_000_000_000L));
+        // 12 % in 15 min: 6,600 s = 1 h 50 min more
+        assertEquals("rendering: 12% done, about 1 h 50 min left", Progress.line(0.12, 900_000_000_000L));
+        // under a tenth the pace of the first tiles says too little
+        assertEquals("rendering: 9% done, time left not known yet", Progress.line(0.09, 60_000_000_000L));
         assertEquals("rendering: 0% done, time left not known yet", Progress.line(0, 3_000_000_000L));
     }
 
@@ -95,7 +97,7 @@ class HeadlessTest {
         at(progress, now, 40.0);            // done: the step's end is the report line, not a progress line
         progress.close();
         assertEquals(java.util.List.of("preparing the scene...", "preparing the scene... 12 s so far",
-                "rendering: 5% done, about 9 s left", "rendering: 6% done, about 2 min 45 s left",
+                "rendering: 5% done, time left not known yet", "rendering: 6% done, time left not known yet",
                 "rendering: 12% done, about 1 min 24 s left"), text.toString().lines().toList());
     }
 

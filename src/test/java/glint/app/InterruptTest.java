@@ -102,7 +102,7 @@ class InterruptTest {
         Path config = Files.writeString(dir.resolve("empty.properties"), "");
         // 1 thread, 400 x 300 at 1,024 samples: minutes of work, so it is still rendering when stopped
         List<String> err = stop(signal, "rendering: ", "--config", config.toString(), "--scene",
-                Path.of("scenes/default.yaml").toAbsolutePath().toString(), "--output", output.toString(),
+                Path.of("scenes/bench/spec-example.yaml").toAbsolutePath().toString(), "--output", output.toString(),
                 "--width", "400", "--height", "300", "--spp", "1024", "--threads", "1");
         assertEquals(status, Integer.parseInt(err.remove(err.size() - 1)), err.toString());
         assertStoppedWithOneLine(err);

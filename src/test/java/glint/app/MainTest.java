@@ -76,7 +76,7 @@ class MainTest {
     void unknownOption() {
         Result r = run("--bogus");
         assertEquals(Main.BAD_INPUT, r.status());
-        assertEquals("glint: Unknown option: '--bogus'", r.firstErrLine());
+        assertEquals("glint: unknown option '--bogus'", r.firstErrLine());
         assertTrue(r.err().contains("--help"));
         r.assertNoStackTrace();
     }
@@ -322,18 +322,19 @@ class MainTest {
     }
 
     @Test
-    void benchPrintsOneLinePerFrameThenTheSummary() throws IOException {
+    void benchPrintsWhatItRendersThenOneLinePerFrameThenTheSummary() throws IOException {
         Path scene = write("tiny.yaml", TINY_SCENE);
         Result r = run("--config", config.toString(), "--scene", scene.toString(), "--width", "8", "--height", "6",
                 "--spp", "1", "--threads", "1", "--bench", "3");
         assertEquals(0, r.status(), r.err());
         String[] lines = r.out().split("\n");
-        assertEquals(4, lines.length, r.out());
-        for (int i = 0; i < 3; i++) {
-            assertTrue(lines[i].matches("frame " + (i + 1) + ": \\d+\\.\\d\\d ms, render cpu \\d+\\.\\d\\d ms"), lines[i]);
+        assertEquals(5, lines.length, r.out());
+        assertEquals("timing 3 frames of " + scene + " (8x6, 1 spp, 1 threads, cook-torrance, depth 16)", lines[0]);
+        for (int i = 1; i <= 3; i++) {
+            assertTrue(lines[i].matches("frame " + i + ": \\d+\\.\\d\\d ms, render cpu \\d+\\.\\d\\d ms"), lines[i]);
         }
-        assertTrue(lines[3].matches("bench: frames=3 median_ms=\\d+\\.\\d\\d p95_ms=\\d+\\.\\d\\d rays_per_s=\\d+"),
-                lines[3]);
+        assertTrue(lines[4].matches("bench: frames=3 median_ms=\\d+\\.\\d\\d p95_ms=\\d+\\.\\d\\d rays_per_s=\\d+"),
+                lines[4]);
     }
 
     private static String[] concat(String[] first, String... more) {

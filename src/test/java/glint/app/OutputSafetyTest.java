@@ -125,14 +125,14 @@ class OutputSafetyTest {
     void anUnknownLongOptionIsCutInTheMessage() {
         Result r = run("--" + "x".repeat(100_000));
         assertEquals(2, r.status());
-        assertEquals("glint: Unknown option: '--" + "x".repeat(58) + "...'", r.err().lines().findFirst().orElse(""));
+        assertEquals("glint: unknown option '--" + "x".repeat(58) + "...'", r.err().lines().findFirst().orElse(""));
     }
 
     @Test
     void anUnmatchedLongArgumentIsCutInTheMessage() {
         Result r = run("y".repeat(100_000));
         assertEquals(2, r.status());
-        assertEquals("glint: Unmatched argument at index 0: '" + "y".repeat(60) + "...'", r.err().lines().findFirst().orElse(""));
+        assertEquals("glint: unexpected argument '" + "y".repeat(60) + "...' (each value follows its option, as in --spp 4)", r.err().lines().findFirst().orElse(""));
     }
 
     @Test
@@ -161,7 +161,7 @@ class OutputSafetyTest {
      */
     @Test
     void aFileSizeLimitRefusesAPfmBeforeTheWorkAndAPngAtTheEndKeepingTheOldImage() throws Exception {
-        Files.writeString(dir.resolve("scene.yaml"), Files.readString(Path.of("scenes/default.yaml")));
+        Files.writeString(dir.resolve("scene.yaml"), Files.readString(Path.of("scenes/bench/spec-example.yaml")));
         Files.writeString(dir.resolve("old.pfm"), "old");
         Files.writeString(dir.resolve("old.png"), "old");
         List<String> common = List.of("--config", config.toString(), "--scene", "scene.yaml", "--spp", "1", "--threads", "1");
@@ -175,9 +175,13 @@ class OutputSafetyTest {
         List<String> out = r.out().lines().toList();
         long limit = Long.parseLong(out.get(0).substring("Max file size".length()).trim().split("\\s+")[0]);
         assertEquals(List.of("status 2", "status 1"), out.subList(1, 3), r.err());
+        // a run that outlasts 2 s on a loaded machine shows its steps too; they are not what is checked here
+        String messages = r.err().lines().filter(line -> !line.matches(
+                "(reading|preparing) the scene\\.\\.\\.( [0-9]+ s so far)?|(rendering|writing the image): [0-9]+% done, .*"))
+                .map(line -> line + "\n").collect(java.util.stream.Collectors.joining());
         assertEquals("glint: --output: a 200x100 PFM is 234.4 KB, more than the largest file this process may write ("
                 + glint.input.TextFiles.size(limit) + ", ulimit -f); render a smaller image, a PNG, or raise the limit\n"
-                + "glint: cannot write old.png: File too large\n", r.err());
+                + "glint: cannot write old.png: File too large\n", messages);
         assertEquals("old", Files.readString(dir.resolve("old.pfm")));
         assertEquals("old", Files.readString(dir.resolve("old.png")));
         assertEquals(List.of("empty.properties", "old.pfm", "old.png", "scene.yaml"), files(), "no temporary file left");

@@ -96,7 +96,7 @@ class StandardOutputTest {
     }
 
     /**
-     * {@code --bench 100000 | head -1}: once the reader has taken its line and gone, the next frame's line
+     * {@code --bench 100000 | head -2}: once the reader has taken its lines and gone, the next frame's line
      * meets the closed pipe and the program ends there, status 141 and nothing on standard error. Without
      * it the 100,000 frames would take far longer than the guard allows.
      */
@@ -110,9 +110,11 @@ class StandardOutputTest {
         assertTimeoutPreemptively(Duration.ofSeconds(120), () -> {
             try (BufferedReader lines = new BufferedReader(new InputStreamReader(process.getInputStream(),
                     StandardCharsets.UTF_8))) {
+                String heading = lines.readLine();
+                assertTrue(heading != null && heading.startsWith("timing 100000 frames of "), heading);
                 String first = lines.readLine();
                 assertTrue(first != null && first.startsWith("frame 1: "), first);
-            } // head -1 has its line and exits: the pipe's only reader is closed
+            } // head -2 has its lines and exits: the pipe's only reader is closed
             assertEquals(Main.READER_GONE, process.waitFor());
         }, () -> {
             process.destroyForcibly();

@@ -53,6 +53,17 @@ class BenchReportTest {
     }
 
     @Test
+    void theRenderThreadsAreTheBenchmarksParameterUnderItsNameNowOrItsNameBefore(@TempDir Path dir) throws Exception {
+        String renamed = JSON.replace("\"threads\"", "\"renderThreads\"");
+        List<Result> results = BenchReport.read(Files.writeString(dir.resolve("jmh.json"), renamed));
+        assertEquals("2", results.get(0).renderThreads());
+        assertEquals(Map.of("material", "glass", "spheres", "5", "renderThreads", "2"), results.get(0).params());
+        List<Result> before = BenchReport.read(Files.writeString(dir.resolve("before.json"), JSON));
+        assertEquals("2", before.get(1).renderThreads());
+        assertEquals("", before.get(2).renderThreads()); // a benchmark without the parameter
+    }
+
+    @Test
     void theTableGivesMediansRangesMeansAndTheFrameRateOfFrameTimesOnly(@TempDir Path dir) throws Exception {
         List<Result> results = BenchReport.read(Files.writeString(dir.resolve("jmh.json"), JSON));
         assertEquals("""

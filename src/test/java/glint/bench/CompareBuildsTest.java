@@ -54,9 +54,9 @@ class CompareBuildsTest {
                 libraryOf(Load.class));
         assertTrue(main.getDeclaringClass().getClassLoader() != CompareBuildsTest.class.getClassLoader(),
                 "the build's classes come from a loader of their own");
-        String[] bench = {"--scene", "scenes/default.yaml", "--width", "40", "--height", "30", "--spp", "1",
+        String[] bench = {"--scene", "scenes/bench/spec-example.yaml", "--width", "40", "--height", "30", "--spp", "1",
                 "--threads", "1", "--bench", "3"};
-        CompareBuilds.Result result = CompareBuilds.compare("default", main, main, bench, 2);
+        CompareBuilds.Result result = CompareBuilds.compare("spec-example", main, main, bench, 2);
         assertTrue(result.medianA() > 0 && result.medianB() > 0, result.line());
         assertTrue(result.ratioQ1() <= result.ratio() && result.ratio() <= result.ratioQ3(), result.line());
     }
@@ -65,13 +65,13 @@ class CompareBuildsTest {
     void threeBuildsAreEachComparedWithTheFirst() throws Exception {
         Method main = CompareBuilds.mainOf(Path.of("target/classes"), libraryOf(CommandLine.class),
                 libraryOf(Load.class));
-        String[] bench = {"--scene", "scenes/default.yaml", "--width", "40", "--height", "30", "--spp", "1",
+        String[] bench = {"--scene", "scenes/bench/spec-example.yaml", "--width", "40", "--height", "30", "--spp", "1",
                 "--threads", "1", "--bench", "3"};
-        java.util.List<CompareBuilds.Result> results = CompareBuilds.compareAll("default",
+        java.util.List<CompareBuilds.Result> results = CompareBuilds.compareAll("spec-example",
                 java.util.List.of(main, main, main), bench, 2);
         assertEquals(2, results.size(), "B against A and C against A");
-        assertEquals("default B", results.get(0).scene());
-        assertEquals("default C", results.get(1).scene());
+        assertEquals("spec-example B", results.get(0).scene());
+        assertEquals("spec-example C", results.get(1).scene());
         assertEquals(results.get(0).medianA(), results.get(1).medianA(), "both against the same runs of A");
     }
 

@@ -48,7 +48,7 @@ class TargetRoundsTest {
 
     @Test
     void theTableGivesMediansOverRoundsTheSpeedUpOfEachRoundAndTheRenderCpu() {
-        Target target = new Target("test scene", "scenes/default.yaml", 25); // at most 40 ms
+        Target target = new Target("test scene", "scenes/bench/spec-example.yaml", 25); // at most 40 ms
         Rounds rounds = new Rounds(target,
                 List.of(new Run(80, 100, 80), new Run(60, 90, 60), new Run(100, 120, 100)),
                 List.of(new Run(40, 50, 84), new Run(30, 70, 62), new Run(50, 60, 110)));
@@ -67,7 +67,7 @@ class TargetRoundsTest {
 
     @Test
     void aTargetMissedByAHairIsNotMet() {
-        Target target = new Target("test scene", "scenes/default.yaml", 25);
+        Target target = new Target("test scene", "scenes/bench/spec-example.yaml", 25);
         Rounds rounds = new Rounds(target, List.of(new Run(75.9, 80, Double.NaN)), List.of(new Run(40.01, 45, Double.NaN)));
         String table = TargetRounds.table(List.of(rounds));
         assertEquals("""

@@ -97,7 +97,7 @@ class ConfigLoaderTest {
     @Test
     void everyKeyOfKeysIsTestedAbove() {
         assertEquals(List.of("debug", "epsilon", "display_scale", "screen_divider", "display_height",
-                "recursion_max", "display_width", "name", "scene", "threads", "shading", "samples",
+                "recursion_max", "display_width", "name", "scene", "threads", "shading", "integrator", "samples",
                 "min_weight", "move_speed", "turn_speed", "target_fps", "free_flight", "max_image_pixels", "max_scene_bytes",
                 "max_objects", "max_lights", "max_recursion"), List.copyOf(ConfigLoader.KEYS));
     }
@@ -161,7 +161,7 @@ class ConfigLoaderTest {
     void unknownKeyFarFromAnyListsTheKeys() {
         assertError("config.properties:1:1: unknown key 'colour' (expected one of: debug, epsilon, display_scale, "
                 + "screen_divider, display_height, recursion_max, display_width, name, scene, threads, shading, "
-                + "samples, min_weight, move_speed, turn_speed, target_fps, free_flight, max_image_pixels, max_scene_bytes, max_objects, "
+                + "integrator, samples, min_weight, move_speed, turn_speed, target_fps, free_flight, max_image_pixels, max_scene_bytes, max_objects, "
                 + "max_lights, max_recursion)", "colour=red\n");
     }
 
@@ -389,7 +389,7 @@ class ConfigLoaderTest {
         // a key holding a line break and a terminal escape: one line, nothing the terminal acts on
         assertError("config.properties:1:1: unknown key 'a\\nb\\u001b[2J' (expected one of: debug, epsilon, "
                 + "display_scale, screen_divider, display_height, recursion_max, display_width, name, scene, threads, "
-                + "shading, samples, min_weight, move_speed, turn_speed, target_fps, free_flight, max_image_pixels, "
+                + "shading, integrator, samples, min_weight, move_speed, turn_speed, target_fps, free_flight, max_image_pixels, "
                 + "max_scene_bytes, max_objects, max_lights, max_recursion)", "a\\nb\u001b[2J=1\n");
     }
 

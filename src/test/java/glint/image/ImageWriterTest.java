@@ -60,8 +60,12 @@ class ImageWriterTest {
         BufferedImage image = ImageIO.read(file.toFile());
         assertEquals(3, image.getWidth());
         assertEquals(2, image.getHeight());
-        assertEquals(188 << 16, image.getRGB(0, 0) & 0xFFFFFF);
-        assertEquals(255 << 16 | 118 << 8 | 255, image.getRGB(1, 0) & 0xFFFFFF);
+        // dithered (Dither): 0.5 encodes to 187.516 codes, 188 where the pixel's offset (level + 0.5) / 64 is
+        // at least 0.484 (level 31 and up), else 187; 0.18 to 117.646, 118 from level 23; 0 and 1 stay
+        int red00 = Dither.channel(Dither.levels(0, 0), 0);
+        assertEquals((red00 >= 31 ? 188 : 187) << 16, image.getRGB(0, 0) & 0xFFFFFF);
+        int green10 = Dither.channel(Dither.levels(1, 0), 1);
+        assertEquals(255 << 16 | (green10 >= 23 ? 118 : 117) << 8 | 255, image.getRGB(1, 0) & 0xFFFFFF);
     }
 
     @Test

@@ -3,8 +3,11 @@ package glint.recipe;
 import glint.math.Vector3d;
 import glint.scene.MaterialType;
 import glint.shading.Bsdf;
+import glint.shading.BsdfSample;
+import glint.shading.Materials;
+import glint.shading.Rgb;
+import glint.shading.Surface;
 import glint.shading.PathVertex;
-import glint.shading.ShadingContext;
 
 /**
  * A material type added by the recipe of docs/architecture.md, in test sources only: a surface
@@ -16,12 +19,44 @@ final class Glow implements Bsdf {
     static final MaterialType TYPE = new MaterialType("glow", new Glow(), Vector3d.ONE, 0, 0, 0, 1);
 
     @Override
-    public void direct(ShadingContext c, PathVertex v, double dx, double dy, double dz) {
-        int m = v.surface.material;
-        v.sum.set(c.materials().color(m, 0), c.materials().color(m, 1), c.materials().color(m, 2));
+    public boolean emits() {
+        return true;
+    }
+
+    /** Its colour, whatever lights it. */
+    @Override
+    public void emitted(Materials m, Surface s, Rgb out) {
+        out.set(m.color(s.material, 0), m.color(s.material, 1), m.color(s.material, 2));
+    }
+
+    /** It sends no single rays on. */
+    @Override
+    public void specular(Materials m, Surface s, PathVertex v) {
+        v.setReflect(0, 0, 0);
+        v.setTransmit(0, 0, 0);
+    }
+
+    /** It reflects nothing: no lobe to evaluate or sample. */
+    @Override
+    public void evaluate(Materials m, Surface s, double woX, double woY, double woZ, double wiX, double wiY,
+                         double wiZ, Rgb f) {
+        f.set(0, 0, 0);
     }
 
     @Override
-    public void scatter(ShadingContext c, PathVertex v, double dx, double dy, double dz, int hitsLeft, double weight) {
+    public double pdf(Materials m, Surface s, double woX, double woY, double woZ, double wiX, double wiY,
+                      double wiZ) {
+        return 0;
+    }
+
+    @Override
+    public boolean sample(Materials m, Surface s, double woX, double woY, double woZ, double u1, double u2,
+                          double uLobe, BsdfSample out) {
+        return false;
+    }
+
+    @Override
+    public boolean isDelta(Materials m, int material) {
+        return true;
     }
 }

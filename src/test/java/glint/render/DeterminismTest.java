@@ -17,7 +17,7 @@ class DeterminismTest {
 
     @Test
     void identicalPngBytesForAnyThreadAndTileCount() throws Exception {
-        Scene scene = SceneLoader.load(Path.of("scenes/default.yaml"));
+        Scene scene = SceneLoader.load(Path.of("scenes/bench/spec-example.yaml"));
         byte[] reference = png(Renders.render(scene, 96, 72, 4, 5, Shading.COOK_TORRANCE, 1, 1));
         for (int threads : new int[] {1, 2, 7}) {
             for (int divider : new int[] {1, 8, 13}) {

@@ -110,7 +110,7 @@ class PruningTest {
     void aRayBelowTheThresholdGoesOnAtTheThresholdWithTheExpectedValueKept() {
         RenderScene scene = RenderScene.compile(Renders.scene(TINTED_GLASS),
                 new RenderSettings(Shading.COOK_TORRANCE, 5, 0.05, Renders.EPSILON));
-        Integrator it = new Integrator();
+        WhittedIntegrator it = new WhittedIntegrator();
         it.prepare(scene);
         assertEquals(1, it.keep(0.05));
         assertEquals(1, it.keep(0.7));
@@ -119,7 +119,7 @@ class PruningTest {
             int draws = 200_000, survived = 0;
             double sum = 0;
             for (int i = 0; i < draws; i++) {
-                it.beginPath(i, 3, i % 16);
+                it.beginPath(i, 3, i % 16, 16);
                 double keep = it.keep(w);
                 if (keep > 0) {
                     survived++;
@@ -141,10 +141,10 @@ class PruningTest {
     void theCutOffNeverDraws() {
         RenderScene scene = RenderScene.compile(Renders.scene(TINTED_GLASS),
                 new RenderSettings(Shading.COOK_TORRANCE, 5, 0.05, Renders.EPSILON).withPruning(Pruning.CUTOFF));
-        Integrator it = new Integrator();
+        WhittedIntegrator it = new WhittedIntegrator();
         it.prepare(scene);
         for (int i = 0; i < 1000; i++) {
-            it.beginPath(i, 0, 0);
+            it.beginPath(i, 0, 0, 1);
             assertEquals(0, it.keep(0.049));
             assertEquals(1, it.keep(0.05));
         }

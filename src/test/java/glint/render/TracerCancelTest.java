@@ -18,7 +18,7 @@ import org.junit.jupiter.api.Test;
 class TracerCancelTest {
 
     private static RenderScene scene() throws Exception {
-        return RenderScene.compile(SceneLoader.load(Path.of("scenes/default.yaml")),
+        return RenderScene.compile(SceneLoader.load(Path.of("scenes/bench/spec-example.yaml")),
                 new RenderSettings(Shading.COOK_TORRANCE, 5, 1e-3, 1e-9));
     }
 

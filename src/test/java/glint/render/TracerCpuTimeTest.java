@@ -14,7 +14,7 @@ class TracerCpuTimeTest {
 
     @Test
     void renderCpuGrowsWithEachFrameAndNeverExceedsTheThreadsTimesTheWallClock() throws Exception {
-        RenderScene compiled = RenderScene.compile(SceneLoader.load(Path.of("scenes/default.yaml")),
+        RenderScene compiled = RenderScene.compile(SceneLoader.load(Path.of("scenes/bench/spec-example.yaml")),
                 new RenderSettings(Shading.COOK_TORRANCE, 5, 1e-3, 1e-9));
         FrameBuffer frame = new FrameBuffer(160, 120);
         int threads = 2;

@@ -360,8 +360,8 @@ class SceneLoaderTest {
     // ---------------------------------------------------------------- shipped scenes
 
     @Test
-    void defaultSceneLoads() throws InputException {
-        Scene scene = SceneLoader.load(Path.of("scenes", "default.yaml"));
+    void theSpecsExampleSceneLoads() throws InputException {
+        Scene scene = SceneLoader.load(Path.of("scenes", "bench", "spec-example.yaml"));
         assertEquals(1, scene.lights().size());
         assertEquals(4, scene.objects().size());
         assertInstanceOf(Light.Point.class, scene.lights().get(0));

@@ -1,4 +1,4 @@
-// The default scene (scenes/default.yaml) for POV-Ray 3.7, to time against Glint on the same
+// The spec's example scene (scenes/bench/spec-example.yaml) for POV-Ray 3.7, to time against Glint on the same
 // picture: 800x600, one ray a pixel, 5 levels of rays, a point light with inverse-square falloff.
 // Used by scripts/povray-twin.sh; not part of the product.
 #version 3.7;

@@ -1,0 +1,61 @@
+package glint.render;
+
+import static org.junit.jupiter.api.Assertions.assertEquals;
+import static org.junit.jupiter.api.Assertions.assertTrue;
+
+import glint.config.Config;
+import glint.config.LightTransport;
+import glint.config.Shading;
+import glint.image.PfmReader;
+import glint.image.Srgb;
+import glint.scene.SceneLoader;
+import java.nio.file.Path;
+import org.junit.jupiter.params.ParameterizedTest;
+import org.junit.jupiter.params.provider.CsvSource;
+
+/**
+ * The path integrator against images of an independent path tracer (src/test/resources/reference-pt,
+ * see its README): at its stated settings (400 x 300, 256 samples, depth 64, cook-torrance) the
+ * relative MSE and the mean 8-bit error stay within the stated bounds. (The README's third bound,
+ * FLIP, is not computed here.)
+ */
+class PathReferenceTest {
+
+    @ParameterizedTest
+    @CsvSource({"bounce-box, 3.3e-4, 1.24", "sky-and-sun, 1.1e-4, 0.55"})
+    void matchesThePhysicallyBasedReferenceWithinTheBound(String name, double relMseBound, double levelsBound)
+            throws Exception {
+        Path folder = Path.of("src/test/resources/reference-pt");
+        FrameBuffer reference = PfmReader.read(folder.resolve(name + ".pfm"));
+        assertEquals(400, reference.width());
+        assertEquals(300, reference.height());
+        Config defaults = Config.defaults();
+        RenderSettings settings = new RenderSettings(Shading.COOK_TORRANCE, 64, defaults.minWeight(),
+                defaults.epsilon()).withTransport(LightTransport.PATH);
+        FrameBuffer frame = new FrameBuffer(400, 300);
+        try (Tracer tracer = new Tracer(2)) {
+            tracer.render(RenderScene.compile(SceneLoader.load(folder.resolve(name + ".yaml")), settings), frame, 256, 0,
+                    defaults.screenDivider());
+        }
+        double relMse = ReferenceImageTest.relativeMse(frame, reference);
+        double levels = meanLevels(frame, reference);
+        System.out.printf("reference-pt %s: relMSE %.3e (bound %.1e), 8-bit %.3f (bound %.2f)%n", name, relMse,
+                relMseBound, levels, levelsBound);
+        assertTrue(relMse <= relMseBound, name + ": relMSE " + relMse + " exceeds " + relMseBound);
+        assertTrue(levels <= levelsBound, name + ": mean 8-bit error " + levels + " exceeds " + levelsBound);
+    }
+
+    /** The mean over pixels and channels of |a - r| after clamping to [0, 1] and sRGB encoding, in 1/255. */
+    static double meanLevels(FrameBuffer rendered, FrameBuffer reference) {
+        float[] a = rendered.rgb(), r = reference.rgb();
+        double sum = 0;
+        for (int i = 0; i < a.length; i++) {
+            sum += Math.abs(Srgb.encode(clamp(a[i])) - Srgb.encode(clamp(r[i])));
+        }
+        return 255 * sum / a.length;
+    }
+
+    private static double clamp(double v) {
+        return Math.max(0, Math.min(1, v));
+    }
+}
