@@ -4,7 +4,7 @@ import java.io.PrintWriter;
 
 /**
  * An error that ends a thread of the program other than the main one (memory running out in the
- * progress thread, a bug in a helper thread) is one line on standard error, {@code glint: ...}, never a
+ * progress thread, a bug in a thread of its own) is one line on standard error, {@code glint: ...}, never a
  * stack trace, and the program's exit status is then 1. Memory running out is said once, whichever
  * thread meets it first (the main thread usually meets it too). Printing a line takes a little memory:
  * when even that is not there, the line is printed when the run ends.

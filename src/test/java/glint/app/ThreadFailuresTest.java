@@ -55,10 +55,10 @@ class ThreadFailuresTest {
     @Test
     void anotherThreadsErrorIsOneLineNamingItAndStatus1() throws Exception {
         ThreadFailures failures = new ThreadFailures(err);
-        runAndJoin("glint-helper", () -> {
+        runAndJoin("glint-scene-watcher", () -> {
             throw new IllegalStateException("no such state");
         }, failures);
-        assertEquals("glint: unexpected error on glint-helper: java.lang.IllegalStateException: no such state\n",
+        assertEquals("glint: unexpected error on glint-scene-watcher: java.lang.IllegalStateException: no such state\n",
                 text.toString());
         assertEquals(Main.FAILURE, failures.status(Main.OK));
         assertEquals(Main.BAD_INPUT, failures.status(Main.BAD_INPUT), "a status that already says failure stays");
