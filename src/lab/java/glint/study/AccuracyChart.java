@@ -7,48 +7,130 @@ import java.nio.file.Path;
 import java.util.ArrayList;
 import java.util.Comparator;
 import java.util.List;
+import java.util.function.Function;
+import java.util.function.Predicate;
 import java.util.function.ToDoubleFunction;
 import org.knowm.xchart.AnnotationText;
 import org.knowm.xchart.XYChart;
 import org.knowm.xchart.XYSeries;
+import org.knowm.xchart.style.Styler;
 import org.knowm.xchart.style.markers.SeriesMarkers;
 
 /**
- * Error against frame time, log-log, one panel per scene plus one for the geometric mean over the
- * scenes. Each knob's sweep from the shipped default is a line (depth, samples, min_weight), the other
- * configurations are points, the shipped default a diamond, and the Pareto front (2 % tolerance) a
- * broad band under them with its points named.
+ * Error against render CPU time per frame, log-log, in panels side by side. Each series (a family
+ * of methods along one knob) is a line, points of no series are grey squares, the shipped default a
+ * black diamond, and the Pareto front (2 % tolerance) a broad red band under them with its points
+ * named.
  */
 final class AccuracyChart {
 
     /** A point joins the drawn front only if it lowers the error by at least this fraction. */
     static final double FRONT_TOLERANCE = 0.02;
 
+    /**
+     * A line of the chart: the configurations it joins, in the order of {@code order}, each point
+     * named by {@code pointLabel} (unless it is on the front, which names its own).
+     */
+    record Series(String name, Predicate<StudyConfig> member, ToDoubleFunction<StudyConfig> order,
+                  Function<StudyConfig, String> pointLabel, int color) {
+    }
+
+    /** An error a panel shows: its axis title and its value. */
+    record Metric(String name, ToDoubleFunction<Measurement> value) {
+        static final Metric REL_MSE = new Metric("relative MSE", Measurement::relMse);
+        static final Metric SSIM = new Metric("1 - SSIM", m -> 1 - m.ssim());
+        static final Metric FLIP = new Metric("mean FLIP", Measurement::flip);
+    }
+
+    /** One panel: a title, its points and the error it shows. */
+    record Panel(String title, List<Measurement> points, Metric metric) {
+    }
+
     private AccuracyChart() {
     }
 
-    static void write(List<List<Measurement>> panels, List<String> titles, String errorName,
-                      ToDoubleFunction<Measurement> error, Path file) throws IOException {
-        List<XYChart> charts = new ArrayList<>();
-        for (int p = 0; p < panels.size(); p++) {
-            charts.add(panel(titles.get(p), panels.get(p), errorName, error));
+    /** The methods against physics: ray casting, Whitted along depth and along samples, the path tracer. */
+    static List<Series> methodSeries() {
+        StudyConfig shipped = StudyConfig.shipped();
+        return List.of(
+                new Series("ray casting s1-64", c -> c.method() == StudyConfig.Method.RAY_CASTING
+                        && isWhittedAlong(c, StudyConfig.Knob.SAMPLES, 1), StudyConfig::samples, c -> "s" + c.samples(), 2),
+                new Series("Whitted d1-" + shipped.depth() + " s" + shipped.samples(),
+                        c -> isWhittedAlong(c, StudyConfig.Knob.DEPTH, shipped.depth()), StudyConfig::depth,
+                        c -> "d" + c.depth(), 1),
+                new Series("Whitted d" + shipped.depth() + " s1-64",
+                        c -> isWhittedAlong(c, StudyConfig.Knob.SAMPLES, shipped.depth()), StudyConfig::samples,
+                        c -> "s" + c.samples(), 3),
+                new Series("path s1-1024", StudyConfig::isPath, StudyConfig::samples,
+                        c -> "s" + c.samples(), 0));
+    }
+
+    /** Whitted against its own converged image: along depth, samples and min_weight from the shipped default. */
+    static List<Series> whittedSeries() {
+        StudyConfig shipped = StudyConfig.shipped();
+        String weight = "w" + Numbers.sci(shipped.minWeight());
+        return List.of(
+                new Series("depth 1.." + shipped.depth() + " (s" + shipped.samples() + " " + weight + ")",
+                        c -> isWhittedAlong(c, StudyConfig.Knob.DEPTH, shipped.depth()), StudyConfig::depth,
+                        StudyConfig::knobLabel, 1),
+                new Series("samples 1..64 (d" + shipped.depth() + " " + weight + ")",
+                        c -> isWhittedAlong(c, StudyConfig.Knob.SAMPLES, shipped.depth()), StudyConfig::samples,
+                        StudyConfig::knobLabel, 3),
+                new Series("min_weight 0.001..0.1 (d" + shipped.depth() + " s" + shipped.samples() + ")",
+                        c -> !c.isPath() && (c.knob() == StudyConfig.Knob.MIN_WEIGHT || c.knob() == StudyConfig.Knob.NONE),
+                        StudyConfig::minWeight, StudyConfig::knobLabel, 4));
+    }
+
+    /**
+     * Whitted with the shipped knobs but for {@code knob}: along depth (at the shipped samples), or
+     * along samples at depth {@code depth}.
+     */
+    private static boolean isWhittedAlong(StudyConfig c, StudyConfig.Knob knob, int depth) {
+        StudyConfig shipped = StudyConfig.shipped();
+        if (c.isPath() || !c.equals(StudyConfig.whitted(c.depth(), c.samples()))) {
+            return false;
         }
-        int columns = charts.size() % 2 == 0 ? 2 : 1; // the grid must be full
+        return knob == StudyConfig.Knob.DEPTH ? c.samples() == shipped.samples() : c.depth() == depth;
+    }
+
+    /**
+     * Writes the panels in a grid of {@code columns}, each with the same series, the front named by
+     * {@code frontLabel}; with {@code legendBelow} each panel's legend goes under its plot (taller
+     * panels), else into the plot's top right corner, which expensive and inaccurate methods leave empty.
+     */
+    static void write(List<Panel> panels, List<Series> series, Function<StudyConfig, String> frontLabel, int columns,
+                      int panelWidth, boolean legendBelow, Path file) throws IOException {
+        List<XYChart> charts = new ArrayList<>();
+        for (Panel panel : panels) {
+            charts.add(legendBelow
+                    ? chart(panel, series, frontLabel, panelWidth, 620, Styler.LegendPosition.OutsideS)
+                    : chart(panel, series, frontLabel, panelWidth, 520, Styler.LegendPosition.InsideNE));
+        }
         int rows = (charts.size() + columns - 1) / columns;
+        if (rows * columns != charts.size()) {
+            throw new IllegalArgumentException(charts.size() + " panels do not fill " + rows + " x " + columns);
+        }
         Charts.save(charts, rows, columns, file);
     }
 
-    private static XYChart panel(String title, List<Measurement> ms, String errorName,
-                                 ToDoubleFunction<Measurement> error) {
-        XYChart chart = Charts.chart(title, "CPU time per frame, ms (median, all render threads)", errorName, true,
-                true, 820);
+    private static XYChart chart(Panel panel, List<Series> series, Function<StudyConfig, String> frontLabel, int width,
+                                 int height, Styler.LegendPosition legend) {
+        List<Measurement> ms = panel.points();
+        XYChart chart = Charts.chart(panel.title(), "render CPU per frame, ms (both render threads)",
+                panel.metric().name(), true, true, width, height);
         chart.getStyler().setLegendFont(new java.awt.Font(java.awt.Font.SANS_SERIF, java.awt.Font.PLAIN, 10));
-        chart.getStyler().setMarkerSize(7);
+        chart.getStyler().setLegendPosition(legend);
+        chart.getStyler().setMarkerSize(6);
         double[] x = new double[ms.size()], y = new double[ms.size()];
         for (int i = 0; i < ms.size(); i++) {
             x[i] = ms.get(i).cpuMillis();
-            y[i] = Math.max(1e-12, error.applyAsDouble(ms.get(i)));
+            y[i] = Math.max(1e-12, panel.metric().value().applyAsDouble(ms.get(i)));
         }
+        // room for the labels above and below the points
+        chart.getStyler().setXAxisMin(min(x) / 1.6);
+        chart.getStyler().setXAxisMax(max(x) * 1.6);
+        chart.getStyler().setYAxisMin(min(y) / 2.5);
+        chart.getStyler().setYAxisMax(max(y) * (legend == Styler.LegendPosition.InsideNE ? 6 : 2.5));
         List<Integer> front = Pareto.front(x, y, FRONT_TOLERANCE);
         XYSeries band = chart.addSeries("Pareto front", pick(x, front), pick(y, front));
         band.setLineColor(new Color(255, 120, 120, 110));
@@ -56,61 +138,47 @@ final class AccuracyChart {
         band.setMarker(SeriesMarkers.NONE);
         Labels labels = new Labels(chart);
         for (int i : front) {
-            labels.add(ms.get(i).config().label(), x[i], y[i] / 1.45);
+            labels.add(frontLabel.apply(ms.get(i).config()), x[i], y[i] / 1.5);
         }
-
-        StudyConfig.Knob[] swept = {StudyConfig.Knob.DEPTH, StudyConfig.Knob.SAMPLES, StudyConfig.Knob.MIN_WEIGHT};
-        StudyConfig centre = StudyConfig.shipped();
-        String weight = "w" + Numbers.sci(centre.minWeight());
-        String[] names = {"depth 1..24 (s" + centre.samples() + " " + weight + ")",
-                "samples 1..64 (d" + centre.depth() + " " + weight + ")",
-                "min_weight 0.001..0.1 (d" + centre.depth() + " s" + centre.samples() + ")"};
-        int[] colors = {1, 3, 4};
-        for (int k = 0; k < swept.length; k++) {
+        List<Integer> inNoSeries = new ArrayList<>();
+        for (int i = 0; i < ms.size(); i++) {
+            inNoSeries.add(i);
+        }
+        for (Series s : series) {
             List<Integer> members = new ArrayList<>();
             for (int i = 0; i < ms.size(); i++) {
-                StudyConfig.Knob knob = ms.get(i).config().knob();
-                if (knob == swept[k] || knob == StudyConfig.Knob.NONE) {
+                if (s.member().test(ms.get(i).config())) {
                     members.add(i);
                 }
             }
-            if (members.size() < 2) {
+            inNoSeries.removeAll(members);
+            if (members.isEmpty()) {
                 continue;
             }
-            final StudyConfig.Knob knob = swept[k];
-            members.sort(Comparator.comparingDouble(i -> knobValue(ms.get(i).config(), knob)));
-            Charts.line(chart, names[k], pick(x, members), pick(y, members), colors[k], false)
+            members.sort(Comparator.comparingDouble(i -> s.order().applyAsDouble(ms.get(i).config())));
+            Charts.line(chart, s.name(), pick(x, members), pick(y, members), s.color(), false)
                     .setMarker(SeriesMarkers.CIRCLE);
             for (int i : members) {
-                if (ms.get(i).config().knob() != StudyConfig.Knob.NONE && !front.contains(i)) {
-                    labels.add(ms.get(i).config().knobLabel(), x[i], y[i] * 1.45);
+                if (!front.contains(i)) {
+                    labels.add(s.pointLabel().apply(ms.get(i).config()), x[i], y[i] * 1.5);
                 }
             }
         }
-        List<Integer> others = new ArrayList<>();
-        for (int i = 0; i < ms.size(); i++) {
-            StudyConfig.Knob knob = ms.get(i).config().knob();
-            if (knob == StudyConfig.Knob.SEVERAL || knob == StudyConfig.Knob.SHADING
-                    || knob == StudyConfig.Knob.FRESNEL || knob == StudyConfig.Knob.PRUNING) {
-                others.add(i);
-            }
-        }
-        if (!others.isEmpty()) {
-            XYSeries s = chart.addSeries("other (table)", pick(x, others), pick(y, others));
+        if (!inNoSeries.isEmpty()) {
+            XYSeries s = chart.addSeries("other (table)", pick(x, inNoSeries), pick(y, inNoSeries));
             s.setXYSeriesRenderStyle(XYSeries.XYSeriesRenderStyle.Scatter);
             s.setMarker(SeriesMarkers.SQUARE);
             s.setMarkerColor(new Color(0x777777));
-            for (int i : others) {
-                StudyConfig c = ms.get(i).config();
-                if (c.knob() != StudyConfig.Knob.SEVERAL && !front.contains(i)) {
-                    labels.add(c.knobLabel(), x[i], y[i] * 1.45);
+            for (int i : inNoSeries) {
+                if (!front.contains(i)) {
+                    labels.add(ms.get(i).config().knobLabel(), x[i], y[i] * 1.5);
                 }
             }
         }
         StudyConfig shipped = StudyConfig.shipped();
         for (int i = 0; i < ms.size(); i++) {
             if (ms.get(i).config().equals(shipped)) {
-                XYSeries s = chart.addSeries("shipped default " + shipped.label(), new double[] {x[i]},
+                XYSeries s = chart.addSeries("shipped: Whitted " + shipped.label(), new double[] {x[i]},
                         new double[] {y[i]});
                 s.setXYSeriesRenderStyle(XYSeries.XYSeriesRenderStyle.Scatter);
                 s.setMarker(SeriesMarkers.DIAMOND);
@@ -144,12 +212,20 @@ final class AccuracyChart {
         }
     }
 
-    private static double knobValue(StudyConfig c, StudyConfig.Knob knob) {
-        return switch (knob) {
-            case DEPTH -> c.depth();
-            case SAMPLES -> c.samples();
-            default -> c.minWeight();
-        };
+    private static double min(double[] values) {
+        double m = Double.POSITIVE_INFINITY;
+        for (double v : values) {
+            m = Math.min(m, v);
+        }
+        return m;
+    }
+
+    private static double max(double[] values) {
+        double m = 0;
+        for (double v : values) {
+            m = Math.max(m, v);
+        }
+        return m;
     }
 
     private static double[] pick(double[] values, List<Integer> indices) {

@@ -29,7 +29,12 @@ final class Charts {
     }
 
     static XYChart chart(String title, String xTitle, String yTitle, boolean logX, boolean logY, int width) {
-        XYChart chart = new XYChartBuilder().width(width).height(460).title(title).xAxisTitle(xTitle)
+        return chart(title, xTitle, yTitle, logX, logY, width, 460);
+    }
+
+    static XYChart chart(String title, String xTitle, String yTitle, boolean logX, boolean logY, int width,
+                         int height) {
+        XYChart chart = new XYChartBuilder().width(width).height(height).title(title).xAxisTitle(xTitle)
                 .yAxisTitle(yTitle).build();
         org.knowm.xchart.style.XYStyler s = chart.getStyler();
         chart.getStyler().setXAxisLogarithmic(logX);

@@ -7,11 +7,13 @@ import java.util.Arrays;
 import java.util.List;
 
 /**
- * Times renders on a machine that other work shares: every job is rendered once untimed (warm-up),
- * then all jobs are timed in turn, round after round, and each job's median is taken. Interleaving
- * spreads a burst of outside load over all jobs instead of penalising the one that ran during it.
- * Two clocks: wall time, and the CPU time all threads spent (the render threads together), which
- * outside load inflates far less than wall time.
+ * Times renders on a machine that other work shares: every job is rendered once, in the order given
+ * (cheapest first, so the JIT has compiled the render loop before the long ones), then all jobs are
+ * timed in turn, round after round, and each job's median is taken. Interleaving spreads a burst of
+ * outside load over all jobs instead of penalising the one that ran during it. A job whose first
+ * frame took at least {@link #LONG_FRAME_CPU_MILLIS} of CPU is timed by that frame alone: its length
+ * already averages the load, and repeating it would cost most of the study's time. Two clocks: wall
+ * time, and the CPU time of the render threads (together), which outside load inflates far less.
  */
 public final class FrameTimer {
 
@@ -22,15 +24,25 @@ public final class FrameTimer {
     public record Job(RenderScene scene, FrameBuffer frame, int samples) {
     }
 
+    /** A first frame at least this long (render CPU, ms) is the job's only timed one. */
+    public static final double LONG_FRAME_CPU_MILLIS = 2000;
+
     private final Tracer tracer;
     private final int rounds;
+    private final double longFrameCpuMillis;
 
     public FrameTimer(Tracer tracer, int rounds) {
+        this(tracer, rounds, LONG_FRAME_CPU_MILLIS);
+    }
+
+    /** Times with {@code rounds} rounds; a first frame of at least {@code longFrameCpuMillis} is its job's only one. */
+    public FrameTimer(Tracer tracer, int rounds, double longFrameCpuMillis) {
         if (rounds < 1) {
             throw new IllegalArgumentException("rounds must be >= 1");
         }
         this.tracer = tracer;
         this.rounds = rounds;
+        this.longFrameCpuMillis = longFrameCpuMillis;
     }
 
     /** Median times of one job, ms. */
@@ -39,25 +51,41 @@ public final class FrameTimer {
 
     /** Median wall and CPU time of each job, in the order given; each job's frame holds its image after. */
     public Times[] median(List<Job> jobs) {
-        for (Job job : jobs) {
-            render(job);
+        Times[] first = new Times[jobs.size()];
+        for (int j = 0; j < jobs.size(); j++) {
+            first[j] = timed(jobs.get(j));
         }
         double[][] wall = new double[jobs.size()][rounds];
         double[][] cpu = new double[jobs.size()][rounds];
         for (int r = 0; r < rounds; r++) {
             for (int j = 0; j < jobs.size(); j++) {
-                long cpuStart = processCpuNanos();
-                long start = System.nanoTime();
-                render(jobs.get(j));
-                wall[j][r] = (System.nanoTime() - start) / 1e6;
-                cpu[j][r] = (processCpuNanos() - cpuStart) / 1e6;
+                if (first[j].cpuMillis() < longFrameCpuMillis) {
+                    Times t = timed(jobs.get(j));
+                    wall[j][r] = t.wallMillis();
+                    cpu[j][r] = t.cpuMillis();
+                }
             }
         }
         Times[] medians = new Times[jobs.size()];
         for (int j = 0; j < jobs.size(); j++) {
-            medians[j] = new Times(median(wall[j]), median(cpu[j]));
+            medians[j] = first[j].cpuMillis() >= longFrameCpuMillis ? first[j]
+                    : new Times(median(wall[j]), median(cpu[j]));
         }
         return medians;
+    }
+
+    private Times timed(Job job) {
+        long cpuStart = renderCpuNanos();
+        long start = System.nanoTime();
+        render(job);
+        long wall = System.nanoTime() - start;
+        return new Times(wall / 1e6, (renderCpuNanos() - cpuStart) / 1e6);
+    }
+
+    /** The render threads' CPU time so far (the tracer's clock), or all threads' where it has none. */
+    private long renderCpuNanos() {
+        long nanos = tracer.renderCpuNanos();
+        return nanos >= 0 ? nanos : processCpuNanos();
     }
 
     /**

@@ -14,12 +14,17 @@ import java.security.NoSuchAlgorithmException;
 import java.util.HexFormat;
 
 /**
- * Glint's reference mode: the converged image of a scene ({@link StudyConfig#reference}), rendered
- * once and cached as a PFM under a folder (by default target/study-cache), keyed by the scene text,
- * the size and the settings (not by the renderer's code: after a change to it, run with --fresh).
+ * Converged images of a scene ({@link StudyConfig#pathReference}, {@link StudyConfig#reference}),
+ * rendered once and cached as a PFM under a folder (by default target/study-cache), keyed by the
+ * scene text, the size and the settings (not by the renderer's code: after a change to it, run with
+ * --fresh). They are rendered with the random numbers of frame {@link #FRAME}, which no measured
+ * image uses, so that a reference's noise is independent of the noise of the images it measures.
  * PFM holds float32, enough for a reference whose noise is ~1e-3.
  */
 public final class ReferenceImages {
+
+    /** The frame index whose random numbers the references use; the measured images use frame 0. */
+    public static final int FRAME = 1;
 
     private final Path cache;
     private final Tracer tracer;
@@ -41,7 +46,7 @@ public final class ReferenceImages {
         }
         FrameBuffer frame = new FrameBuffer(width, height);
         long start = System.nanoTime();
-        tracer.render(RenderScene.compile(scene.scene(), config.settings()), frame, config.samples(), 0,
+        tracer.render(RenderScene.compile(scene.scene(), config.settings()), frame, config.samples(), FRAME,
                 FrameTimer.DIVIDER);
         System.out.printf(java.util.Locale.ROOT, "  rendered reference %s (%s) in %.1f s%n", scene.name(), config,
                 (System.nanoTime() - start) / 1e9);
@@ -54,7 +59,7 @@ public final class ReferenceImages {
         try {
             MessageDigest sha = MessageDigest.getInstance("SHA-256");
             sha.update(scene.text().getBytes(StandardCharsets.UTF_8));
-            sha.update((config.settings() + "|" + config.samples() + "|" + width + "x" + height)
+            sha.update((config.settings() + "|" + config.samples() + "|" + width + "x" + height + "|frame " + FRAME)
                     .getBytes(StandardCharsets.UTF_8));
             return HexFormat.of().formatHex(sha.digest()).substring(0, 12);
         } catch (NoSuchAlgorithmException e) {

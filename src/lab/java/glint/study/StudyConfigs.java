@@ -7,60 +7,77 @@ import java.util.LinkedHashSet;
 import java.util.List;
 
 /**
- * The configurations the speed/accuracy study measures: each knob swept on its own from the shipped
- * default (depth, samples, pruning weight, the plain cut-off instead of roulette, shading model, glass
- * Fresnel), plus a few combinations, among them the earlier defaults (depth 5, cut-off at 0.01).
+ * The methods the speed/accuracy study measures. Against physics ({@link #methods}): ray casting
+ * (Whitted at depth 1) at 1 to 64 samples, Whitted at depths 2 to 16 and at 1 to 64 samples, the
+ * path tracer at 1 to 1024 samples. Against Whitted's own converged image ({@link #whittedKnobs}):
+ * besides depth and samples, Whitted's other knobs turned one at a time from the shipped default
+ * (pruning weight, the plain cut-off, Schlick's glass Fresnel, the phong model).
  */
 public final class StudyConfigs {
+
+    private static final int[] RAY_CASTING_SAMPLES = {1, 4, 16, 64};
+    private static final int[] WHITTED_DEPTHS = {2, 3, 5, 8, 16};
+    private static final int[] WHITTED_SAMPLES = {1, 4, 16, 64};
+    private static final int[] PATH_SAMPLES = {1, 4, 16, 64, 256, 1024};
 
     private StudyConfigs() {
     }
 
+    /** Every configuration of a full run: the methods, then Whitted's other knobs. */
     public static List<StudyConfig> full() {
-        LinkedHashSet<StudyConfig> all = new LinkedHashSet<>();
-        StudyConfig shipped = StudyConfig.shipped();
-        all.add(shipped);
-        for (int depth : new int[] {1, 2, 3, 5, 8, 12, 24}) {
-            all.add(StudyConfig.ct(depth, shipped.samples(), shipped.minWeight()));
-        }
-        for (int samples : new int[] {1, 9, 16, 64}) {
-            all.add(StudyConfig.ct(shipped.depth(), samples, shipped.minWeight()));
-        }
-        for (double weight : new double[] {1e-3, 1e-2, 3e-2, 1e-1}) { // the shipped one is already in
-            all.add(StudyConfig.ct(shipped.depth(), shipped.samples(), weight));
-        }
-        all.add(shipped.cutOff());
-        all.add(shipped.withFresnel(GlassFresnel.SCHLICK));
-        all.add(shipped.withShading(Shading.PHONG));
-        all.add(StudyConfig.ct(5, 4, 1e-2).cutOff()); // the earlier default
-        all.add(StudyConfig.ct(5, 1, 1e-2).cutOff());
-        all.add(StudyConfig.ct(5, 16, 1e-2).cutOff());
-        all.add(StudyConfig.ct(8, 1, 1e-2));
-        all.add(StudyConfig.ct(12, 16, 1e-2));
-        all.add(StudyConfig.ct(16, 16, 3e-2));
+        LinkedHashSet<StudyConfig> all = new LinkedHashSet<>(methods());
+        all.addAll(whittedKnobs());
         return new ArrayList<>(all);
     }
 
+    /** The methods compared against the converged path-traced image, cheapest family first. */
+    public static List<StudyConfig> methods() {
+        return methods(RAY_CASTING_SAMPLES, WHITTED_DEPTHS, WHITTED_SAMPLES, PATH_SAMPLES);
+    }
+
+    /** Whitted's knobs besides depth and samples, each turned alone from the shipped default. */
+    public static List<StudyConfig> whittedKnobs() {
+        StudyConfig shipped = StudyConfig.shipped();
+        return List.of(StudyConfig.ct(shipped.depth(), shipped.samples(), 1e-3),
+                StudyConfig.ct(shipped.depth(), shipped.samples(), 1e-1), shipped.cutOff(),
+                shipped.withFresnel(GlassFresnel.SCHLICK), shipped.withShading(Shading.PHONG));
+    }
+
     /**
-     * A smaller set for a short run, each knob swept from the shipped default as in {@link #full}:
-     * no 64-sample point.
+     * Whether the configuration is measured against Whitted's own converged image: Whitted along
+     * depth (at the shipped samples) and along samples (at the shipped depth), and its other knobs;
+     * not the path tracer, nor ray casting at other samples than the shipped ones.
+     */
+    public static boolean againstWhitted(StudyConfig config) {
+        StudyConfig shipped = StudyConfig.shipped();
+        return !config.isPath() && (config.depth() != 1 || config.samples() == shipped.samples());
+    }
+
+    /**
+     * A smaller set for a short run, every family still there: ray casting at 1 and 4 samples, Whitted
+     * at depths 2 and 16 and at 1 sample, the path tracer at 1 to 64 samples, and the cut-off.
      */
     public static List<StudyConfig> quick() {
-        StudyConfig shipped = StudyConfig.shipped();
-        int depth = shipped.depth(), samples = shipped.samples();
-        double weight = shipped.minWeight();
-        List<StudyConfig> list = new ArrayList<>();
-        list.add(shipped);
-        list.add(StudyConfig.ct(1, samples, weight));
-        list.add(StudyConfig.ct(3, samples, weight));
-        list.add(StudyConfig.ct(5, samples, weight));
-        list.add(StudyConfig.ct(depth, 1, weight));
-        list.add(StudyConfig.ct(depth, 16, weight));
-        list.add(StudyConfig.ct(depth, samples, 1e-3));
-        list.add(StudyConfig.ct(depth, samples, 1e-1));
-        list.add(shipped.cutOff());
-        list.add(shipped.withFresnel(GlassFresnel.SCHLICK));
-        list.add(shipped.withShading(Shading.PHONG));
+        List<StudyConfig> list = methods(new int[] {1, 4}, new int[] {2, 16}, new int[] {1}, new int[] {1, 4, 16, 64});
+        list.add(StudyConfig.shipped().cutOff());
         return list;
+    }
+
+    private static List<StudyConfig> methods(int[] rayCasting, int[] depths, int[] whittedSamples, int[] path) {
+        LinkedHashSet<StudyConfig> all = new LinkedHashSet<>();
+        StudyConfig shipped = StudyConfig.shipped();
+        for (int samples : rayCasting) {
+            all.add(StudyConfig.whitted(1, samples));
+        }
+        for (int depth : depths) {
+            all.add(StudyConfig.whitted(depth, shipped.samples()));
+        }
+        for (int samples : whittedSamples) {
+            all.add(StudyConfig.whitted(shipped.depth(), samples));
+        }
+        for (int samples : path) {
+            all.add(StudyConfig.path(samples));
+        }
+        return new ArrayList<>(all);
     }
 }

@@ -58,16 +58,43 @@ class MetricsTest {
         assertEquals("w1e-3", StudyConfig.ct(16, 4, 1e-3).knobLabel());
         assertEquals("shipped", shipped.knobLabel());
         assertEquals(StudyConfigs.full().size(), new java.util.HashSet<>(StudyConfigs.full()).size());
-        assertEquals(24, StudyConfigs.full().size());
+        assertEquals(23, StudyConfigs.full().size());
     }
 
-    /** The short run's configurations are points of the full one: each knob swept from the shipped default. */
     @Test
-    void theQuickSetIsPartOfTheFullOne() {
+    void aMethodIsAnIntegratorWithItsDepthAndSamples() {
+        StudyConfig path = StudyConfig.path(64);
+        assertEquals(glint.config.LightTransport.PATH, path.settings().transport());
+        assertEquals(StudyConfig.shipped().depth(), path.settings().recursionMax());
+        assertEquals("path d16 s64", path.label());
+        assertEquals("path s64", path.methodLabel());
+        assertEquals(StudyConfig.Method.PATH, path.method());
+        assertEquals(StudyConfig.Knob.TRANSPORT, path.knob());
+        assertEquals("ray casting s4", StudyConfig.whitted(1, 4).methodLabel());
+        assertEquals(StudyConfig.Method.RAY_CASTING, StudyConfig.whitted(1, 4).method());
+        assertEquals("Whitted d8 s4", StudyConfig.whitted(8, 4).methodLabel());
+        assertEquals(glint.config.LightTransport.WHITTED, StudyConfig.whitted(8, 4).settings().transport());
+        assertEquals(64, StudyConfig.pathReference(4096).depth());
+        assertEquals("path s4096 d64", StudyConfig.pathReference(4096).methodLabel());
+    }
+
+    /** Every family of methods against physics: ray casting, Whitted along depth and samples, the path up to 1024 samples. */
+    @Test
+    void theMethodsSpanEveryFamilyAndTheQuickSetIsPartOfTheFullOne() {
+        List<StudyConfig> methods = StudyConfigs.methods();
+        assertEquals(18, methods.size());
+        assertTrue(methods.contains(StudyConfig.whitted(1, 1)));
+        assertTrue(methods.contains(StudyConfig.whitted(2, 4)));
+        assertTrue(methods.contains(StudyConfig.whitted(16, 64)));
+        assertTrue(methods.contains(StudyConfig.path(1)));
+        assertTrue(methods.contains(StudyConfig.path(1024)));
+        assertTrue(methods.contains(StudyConfig.shipped()));
         List<StudyConfig> full = StudyConfigs.full();
         for (StudyConfig config : StudyConfigs.quick()) {
             assertTrue(full.contains(config), config.label());
-            assertTrue(config.knob() != StudyConfig.Knob.SEVERAL, config.label());
+        }
+        for (StudyConfig.Method family : StudyConfig.Method.values()) {
+            assertTrue(StudyConfigs.quick().stream().anyMatch(c -> c.method() == family), family.title());
         }
     }
 
