@@ -1,5 +1,6 @@
 package glint.bench;
 
+import glint.config.LightTransport;
 import glint.input.InputException;
 import glint.render.FrameBuffer;
 import glint.scene.SceneLoader;
@@ -21,8 +22,8 @@ import org.openjdk.jmh.annotations.Warmup;
 
 /**
  * The target scenes of docs/benchmarks.md: the spec's example scene, 25 glass spheres, 1,000 spheres;
- * 800x600, 1 sample per pixel, depth 5, cook-torrance, 1 and 2 threads. Run with -prof gc to see
- * the allocation per frame.
+ * 800x600, 1 sample per pixel, depth 5, cook-torrance, 1 and 2 threads, Whitted's integrator and
+ * the path tracer. Run with -prof gc to see the allocation per frame.
  */
 @State(Scope.Benchmark)
 @BenchmarkMode(Mode.AverageTime)
@@ -39,6 +40,9 @@ public class SceneBenchmark {
     /** The tracer's render threads (JMH's "Threads: 1 thread" is the one thread that calls the benchmark). */
     public int renderThreads;
 
+    @Param({"whitted", "path"})
+    public String integrator;
+
     private BenchFrames frames;
 
     @Setup(Level.Trial)
@@ -49,7 +53,8 @@ public class SceneBenchmark {
             default -> null;
         };
         frames = new BenchFrames(text == null ? SceneLoader.load(Path.of("scenes/bench/spec-example.yaml"))
-                : SceneLoader.parse(scene, text), BenchScenes.SETTINGS, renderThreads);
+                : SceneLoader.parse(scene, text), BenchScenes.SETTINGS.withTransport(LightTransport.byKey(integrator)),
+                renderThreads);
     }
 
     @TearDown(Level.Trial)

@@ -46,6 +46,11 @@ public final class Stability {
         GeneratedSection.write(doc, "stability-fresnel", fresnel(images));
         GeneratedSection.write(doc, "stability-microfacet", microfacet(images));
         GeneratedSection.write(doc, "stability-quaternion", quaternion(images));
+        GeneratedSection.write(doc, "stability-ggx-sampling", PathStability.ggx(images));
+        try (Tracer tracer = new Tracer(Runtime.getRuntime().availableProcessors())) {
+            GeneratedSection.write(doc, "stability-fireflies", PathStability.fireflies(images, tracer));
+            GeneratedSection.write(doc, "stability-glass-sky", PathStability.glass(images, tracer));
+        }
         System.out.println("wrote " + images.resolve("stability-*.png") + " and " + doc);
     }
 

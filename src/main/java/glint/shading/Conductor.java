@@ -17,7 +17,10 @@ public final class Conductor implements Bsdf {
         v.setTransmit(0, 0, 0);
     }
 
-    /** f = D(h) G2 F(wo.h) / (4 wo.n wi.n), the GGX lobe; none below {@link Microfacet#MIRROR_ALPHA}, a mirror. */
+    /**
+     * f = D(h) G2 F(wo.h) / (4 wo.n wi.n), the GGX lobe, finite while either cosine is at least 1e-300;
+     * none below {@link Microfacet#MIRROR_ALPHA}, a mirror.
+     */
     @Override
     public void evaluate(Materials m, Surface s, double woX, double woY, double woZ, double wiX, double wiY,
                          double wiZ, Rgb f) {
@@ -28,11 +31,13 @@ public final class Conductor implements Bsdf {
             f.set(0, 0, 0);
             return;
         }
-        double hx = woX + wiX, hy = woY + wiY, hz = woZ + wiZ;
+        double scale = Microfacet.halfScale(woX + wiX, woY + wiY, woZ + wiZ);
+        double hx = (woX + wiX) * scale, hy = (woY + wiY) * scale, hz = (woZ + wiZ) * scale;
         double inv = 1 / Math.sqrt(hx * hx + hy * hy + hz * hz);
         double cosHalf = (hx * s.nx + hy * s.ny + hz * s.nz) * inv;
         double cosOutHalf = Math.max(0, (hx * woX + hy * woY + hz * woZ) * inv);
-        double lobe = Optics.ggx(cosHalf, alpha) * Microfacet.g2(cosOut, cosIn, alpha) / (4 * cosOut * cosIn);
+        // G2 / (4 wo.n wi.n) as one term: the product of two grazing cosines would underflow to 0
+        double lobe = Optics.ggx(cosHalf, alpha) * Optics.smithVisibility(cosIn, cosOut, alpha);
         f.set(lobe * Optics.schlick(m.color(material, 0), cosOutHalf),
                 lobe * Optics.schlick(m.color(material, 1), cosOutHalf),
                 lobe * Optics.schlick(m.color(material, 2), cosOutHalf));
@@ -46,7 +51,8 @@ public final class Conductor implements Bsdf {
         if (alpha < Microfacet.MIRROR_ALPHA || !(cosOut > 0) || !(cosIn > 0)) {
             return 0;
         }
-        double hx = woX + wiX, hy = woY + wiY, hz = woZ + wiZ;
+        double scale = Microfacet.halfScale(woX + wiX, woY + wiY, woZ + wiZ);
+        double hx = (woX + wiX) * scale, hy = (woY + wiY) * scale, hz = (woZ + wiZ) * scale;
         double cosHalf = (hx * s.nx + hy * s.ny + hz * s.nz) / Math.sqrt(hx * hx + hy * hy + hz * hz);
         return Microfacet.reflectedPdf(cosOut, cosHalf, alpha);
     }

@@ -19,10 +19,24 @@ public final class Microfacet {
     private Microfacet() {
     }
 
-    /** Smith's Lambda for a direction at cosine {@code cos} (> 0) to the normal. */
+    /**
+     * Smith's Lambda for a direction at cosine {@code cos} (> 0) to the normal. A subnormal cosine
+     * counts as the smallest normal one: its 1 / cos would overflow, and G1 = 1 / (1 + inf) = 0 would
+     * make the weight G2 / G1 of {@link Conductor#sample} 0 / 0.
+     */
     static double lambda(double cos, double alpha) {
-        double cos2 = cos * cos;
-        return 0.5 * (Math.sqrt(cos2 + alpha * alpha * (1 - cos2)) / cos - 1);
+        double c = Math.max(cos, Double.MIN_NORMAL);
+        double cos2 = c * c;
+        return 0.5 * (Math.sqrt(cos2 + alpha * alpha * (1 - cos2)) / c - 1);
+    }
+
+    /**
+     * What a half vector wo + wi is multiplied by before it is normalised: 2^600 where it is so short
+     * (wo and wi mirror images, both grazing to within 1e-154) that the squares of its components
+     * would underflow, otherwise 1. A power of two: the direction is unchanged to the last bit.
+     */
+    static double halfScale(double hx, double hy, double hz) {
+        return Math.max(Math.abs(hx), Math.max(Math.abs(hy), Math.abs(hz))) < 0x1p-500 ? 0x1p600 : 1;
     }
 
     /** Smith's masking of one direction, G1 = 1 / (1 + Lambda). */
