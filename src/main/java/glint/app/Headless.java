@@ -4,6 +4,8 @@ import glint.config.Config;
 import glint.config.LightTransport;
 import glint.config.Flags;
 import glint.image.ImageWriter;
+import glint.image.PartFile;
+import glint.image.PartGuard;
 import glint.input.InputException;
 import glint.render.FrameBuffer;
 import glint.render.RenderScene;
@@ -14,7 +16,6 @@ import glint.scene.SceneLoader;
 import java.io.IOException;
 import java.io.InterruptedIOException;
 import java.io.PrintWriter;
-import java.nio.file.Files;
 import java.nio.file.Path;
 import java.util.Arrays;
 import java.util.List;
@@ -54,10 +55,12 @@ final class Headless {
      */
     static int renderStill(Path scenePath, ViewChoice view, List<Path> inputs, Config settings, Flags flags,
                            Path output, PrintWriter out, PrintWriter err) throws InputException, IOException {
-        Path temp = null;
+        PartFile temp = null;
+        PartGuard guard = null;
         try (Interrupts interrupts = Interrupts.install(err, "glint: interrupted; no image written");
              Progress progress = Progress.start(err)) {
             temp = OutputFile.prepare(output, inputs);
+            guard = PartGuard.of(List.of(temp.path()), ENDED); // SIGKILL, a crash: no hook runs
             interrupts.watch(null, temp);
             progress.step("reading the scene", null);
             Scene scene = view.apply(SceneLoader.load(scenePath, settings.limits().scene()), scenePath.toString());
@@ -77,9 +80,9 @@ final class Headless {
                 return INTERRUPTED;
             }
             progress.step("writing the image", interrupts::writeProgress);
-            OutputFile.keepPermissions(output, temp);
+            OutputFile.keepPermissions(output, temp.path());
             try {
-                ImageWriter.write(frame, output, temp, interrupts);
+                ImageWriter.write(frame, output, temp.path(), interrupts);
             } catch (InterruptedIOException e) {
                 interrupts.report("glint: interrupted; no image written");
                 return INTERRUPTED;
@@ -88,16 +91,27 @@ final class Headless {
             }
             long elapsed = System.nanoTime() - start;
             progress.close(); // a bar on the terminal is cleared first
-            out.printf(Locale.ROOT, "wrote %s (%s) in %.1f ms%n", InputException.printable(output.toString()),
-                    settingsOf(config), elapsed / 1e6);
-            out.flush();
+            try {
+                out.printf(Locale.ROOT, "wrote %s (%s) in %.1f ms%n", InputException.printable(output.toString()),
+                        settingsOf(config), elapsed / 1e6);
+                out.flush();
+            } catch (Output.Failure e) { // the image is there all the same
+                throw e.after(InputException.cutPath(output.toString()) + " was written");
+            }
             return Main.OK;
         } finally {
             if (temp != null) {
-                Files.deleteIfExists(temp);
+                temp.close(); // wherever its folder is now: renamed during the render, it keeps nothing
+            }
+            if (guard != null) {
+                guard.close();
             }
         }
     }
+
+    /** What a guard says if the program ends too abruptly (SIGKILL) to delete the hidden file itself. */
+    static final String ENDED = "glint: the program ended before the image was written; nothing written, "
+            + "its hidden temporary file removed";
 
     /** Why an image could not be written, in one line: {@code cannot write out.png: No space left on device}. */
     static final class WriteFailure extends IOException {

@@ -1,12 +1,11 @@
 package glint.app;
 
 import glint.image.ImageWriter;
+import glint.image.PartFile;
 import glint.render.Tracer;
 import java.io.IOException;
 import java.io.InterruptedIOException;
 import java.io.PrintWriter;
-import java.nio.file.Files;
-import java.nio.file.Path;
 import java.util.List;
 import java.util.concurrent.CountDownLatch;
 import java.util.concurrent.TimeUnit;
@@ -32,7 +31,7 @@ final class Interrupts implements AutoCloseable, ImageWriter.Watcher {
     private final PrintWriter err;
     private final String message;
     private volatile Tracer tracer;
-    private volatile Path temp;
+    private volatile PartFile temp;
     private volatile boolean stopping;
     private volatile boolean written;
     private volatile double writeProgress;
@@ -58,9 +57,12 @@ final class Interrupts implements AutoCloseable, ImageWriter.Watcher {
      * Signals whose default action ends the JVM without running its shutdown hooks (which the JVM
      * runs only for SIGINT, SIGTERM and SIGHUP): a run they stop would leave its temporary file.
      * SIGPROF and SIGVTALRM are left alone: sampling profilers (async-profiler, perf's JVM agents)
-     * tick with them.
+     * tick with them. The JVM keeps SIGSEGV, SIGBUS, SIGFPE, SIGILL and SIGQUIT for itself (sent
+     * with kill, the first four crash it with its fatal-error report), and SIGABRT is its own way
+     * to crash; SIGXFSZ it ignores, so that a write beyond {@code ulimit -f} fails and is reported.
      */
-    static final List<String> OTHER_ENDING_SIGNALS = List.of("USR1", "USR2", "ALRM", "XCPU", "POLL", "PWR");
+    static final List<String> OTHER_ENDING_SIGNALS = List.of("USR1", "USR2", "ALRM", "XCPU", "POLL", "PWR",
+            "STKFLT", "SYS", "TRAP");
 
     /**
      * Makes the {@link #OTHER_ENDING_SIGNALS} end the program as SIGTERM does: hooks run, status
@@ -78,7 +80,7 @@ final class Interrupts implements AutoCloseable, ImageWriter.Watcher {
     }
 
     /** The tracer to cancel and the temporary file to delete if the program is stopped. */
-    void watch(Tracer renderer, Path temporaryFile) {
+    void watch(Tracer renderer, PartFile temporaryFile) {
         this.tracer = renderer;
         if (temporaryFile != null) {
             this.temp = temporaryFile;
@@ -149,13 +151,9 @@ final class Interrupts implements AutoCloseable, ImageWriter.Watcher {
     }
 
     private void deleteTemp() {
-        Path p = temp;
+        PartFile p = temp;
         if (p != null) {
-            try {
-                Files.deleteIfExists(p);
-            } catch (IOException e) {
-                // the JVM is exiting; nothing more can be done
-            }
+            p.delete();
         }
     }
 

@@ -25,6 +25,8 @@ public final class Main implements Callable<Integer> {
     public static final int OK = 0;
     public static final int FAILURE = 1;
     public static final int BAD_INPUT = 2;
+    /** Exit status when standard output's reader has gone ({@code | head -1}): 128 + SIGPIPE, as a shell reports it. */
+    public static final int READER_GONE = 141;
 
     @Option(names = "--scene", paramLabel = "FILE", description = "scene file (default: the config's 'scene')")
     Path scene;
@@ -72,12 +74,18 @@ public final class Main implements Callable<Integer> {
     private PrintWriter err = new PrintWriter(System.err, true);
 
     public static void main(String[] args) {
+        PrintWriter err = new PrintWriter(System.err, true);
+        ThreadFailures failures = ThreadFailures.install(err); // every thread's error: one line, status 1
         Interrupts.handleOtherEndingSignals();
-        System.exit(run(args, new PrintWriter(System.out, true), new PrintWriter(System.err, true)));
+        System.exit(failures.status(run(args, Output.standard(), err, failures)));
     }
 
     /** Runs the program and returns its exit status; nothing is written but to out and err. */
     public static int run(String[] args, PrintWriter out, PrintWriter err) {
+        return run(args, out, err, new ThreadFailures(err));
+    }
+
+    private static int run(String[] args, PrintWriter out, PrintWriter err, ThreadFailures failures) {
         Main main = new Main();
         main.out = out;
         main.err = err;
@@ -85,6 +93,13 @@ public final class Main implements Callable<Integer> {
         cli.getCommandSpec().usageMessage().footer(HelpFooter.text());
         cli.setOut(out);
         cli.setErr(err);
+        cli.setExecutionStrategy(parsed -> { // --help and --version, printed by the parser, can fail too
+            try {
+                return new CommandLine.RunLast().execute(parsed);
+            } catch (Output.Failure e) {
+                return outputFailed(e, err);
+            }
+        });
         cli.registerConverter(Integer.class, Main::wholeNumber);
         cli.registerConverter(Path.class, Main::fileName);
         cli.setParameterExceptionHandler((e, a) -> {
@@ -106,12 +121,15 @@ public final class Main implements Callable<Integer> {
                 err.println(bad.getMessage());
                 return BAD_INPUT;
             }
+            if (e instanceof Output.Failure failure) {
+                return outputFailed(failure, err);
+            }
             if (e instanceof Headless.WriteFailure failure) {
                 err.println(line("glint: " + failure.getMessage()));
                 return FAILURE;
             }
             if (e.getCause() instanceof OutOfMemoryError) { // in a render thread
-                err.println(outOfMemory(e.getCause()));
+                failures.outOfMemory(e.getCause());
                 return FAILURE;
             }
             if (e instanceof java.nio.file.FileSystemException fs && fs.getFile() != null) {
@@ -124,7 +142,7 @@ public final class Main implements Callable<Integer> {
         try {
             return cli.execute(args);
         } catch (OutOfMemoryError e) {
-            err.println(outOfMemory(e));
+            failures.outOfMemory(e);
             return FAILURE;
         }
     }
@@ -132,6 +150,18 @@ public final class Main implements Callable<Integer> {
     /** The hint after a mistake in the options, naming the jar that runs. */
     private static String tryHelp() {
         return InputException.printable("Try '" + JarCommand.java() + " --help' for the options.");
+    }
+
+    /**
+     * Standard output failed: a reader that has gone ends the program quietly, as a Unix tool's
+     * SIGPIPE does; any other failure is a line on standard error and status 1.
+     */
+    private static int outputFailed(Output.Failure failure, PrintWriter err) {
+        if (failure.readerGone()) {
+            return READER_GONE;
+        }
+        err.println(line("glint: " + failure.getMessage()));
+        return FAILURE;
     }
 
     /** The most characters a line of a message from elsewhere (the parser, the system) is given. */
@@ -146,8 +176,13 @@ public final class Main implements Callable<Integer> {
         return text.length() <= MAX_LINE ? text : text.substring(0, MAX_LINE - 3) + "...";
     }
 
-    private static String outOfMemory(Throwable e) {
-        return "glint: out of memory (" + e.getMessage() + "); render fewer pixels, samples or threads, "
+    /** How the line that memory ran out begins, and the line itself when not even its reason can be had. */
+    static final String OUT_OF_MEMORY_START = "glint: out of memory";
+    static final String OUT_OF_MEMORY = OUT_OF_MEMORY_START + "; render fewer pixels, samples or threads, "
+            + "or start Java with a larger -Xmx";
+
+    static String outOfMemory(Throwable e) {
+        return OUT_OF_MEMORY_START + " (" + e.getMessage() + "); render fewer pixels, samples or threads, "
                 + "or start Java with a larger -Xmx";
     }
 
@@ -209,7 +244,7 @@ public final class Main implements Callable<Integer> {
             throw new InputException("glint", 0, 0, "--view renders headless: add --output FILE.png or --bench N "
                     + "(in the window, keys 1 to 9 go to the scene's views)");
         }
-        return WindowLauncher.open(scenePath, settings, flags(), () -> overrides(loadConfig()), err);
+        return WindowLauncher.open(scenePath, settings, flags(), () -> overrides(loadConfig()), out, err);
     }
 
     private Config loadConfig() throws InputException {

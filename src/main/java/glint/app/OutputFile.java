@@ -1,6 +1,7 @@
 package glint.app;
 
 import glint.image.ImageWriter;
+import glint.image.PartFile;
 import glint.input.InputException;
 import glint.input.TextFiles;
 import java.io.IOException;
@@ -50,7 +51,7 @@ final class OutputFile {
      *
      * @return the temporary file beside the output, empty
      */
-    static Path prepare(Path output, List<Path> inputs) throws InputException {
+    static PartFile prepare(Path output, List<Path> inputs) throws InputException {
         if (!ImageWriter.isSupported(output)) {
             throw refused("expected a file ending in .png or .pfm, got " + InputException.quotePath(output));
         }
@@ -80,19 +81,19 @@ final class OutputFile {
                         : " is read-only; make it writable (chmod u+w) or choose another output name"));
             }
         }
-        Path temp;
+        PartFile temp;
         try {
-            temp = ImageWriter.temporaryBeside(output);
+            temp = PartFile.beside(output);
         } catch (IOException e) {
             throw refused("cannot write " + InputException.quotePath(output) + ": " + reason(e));
         }
         try {
             if (existing != null) {
-                checkReplaceable(output, folder, temp);
+                checkReplaceable(output, folder, temp.path());
             }
             return temp;
         } catch (InputException | RuntimeException e) {
-            deleteQuietly(temp);
+            temp.close();
             throw e;
         }
     }
@@ -209,13 +210,5 @@ final class OutputFile {
 
     private static InputException refused(String problem) {
         return new InputException("glint", 0, 0, "--output: " + problem);
-    }
-
-    private static void deleteQuietly(Path p) {
-        try {
-            Files.deleteIfExists(p);
-        } catch (IOException e) {
-            // nothing was written to it
-        }
     }
 }

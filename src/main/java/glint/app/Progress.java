@@ -2,9 +2,8 @@ package glint.app;
 
 import java.io.PrintWriter;
 import java.util.Locale;
-import java.util.concurrent.Executors;
-import java.util.concurrent.ScheduledExecutorService;
 import java.util.concurrent.TimeUnit;
+import java.util.concurrent.locks.LockSupport;
 import java.util.function.DoubleSupplier;
 import java.util.function.LongSupplier;
 
@@ -13,7 +12,9 @@ import java.util.function.LongSupplier;
  * rendering, writing the image): nothing for the first two seconds of the run, then each step as
  * it begins and, for a step that knows how far it is, percent done and (from a tenth on) time left, as a bar redrawn
  * in place on a terminal or as a plain line at every further tenth otherwise (a log, a pipe), and
- * at least every 10 seconds while nothing changes. Read four times a second.
+ * at least every 10 seconds while nothing changes. Read four times a second, by a thread of its own
+ * that allocates nothing between two reads (no executor's queue): memory running out while it shows
+ * a line ends it like any thread of the program, in one line ({@link ThreadFailures}).
  */
 final class Progress implements AutoCloseable {
 
@@ -30,7 +31,8 @@ final class Progress implements AutoCloseable {
     private final boolean terminal;
     private final LongSupplier clock;
     private final long start;
-    private final ScheduledExecutorService timer;
+    private final Thread timer;
+    private volatile boolean closed;
     private long lastLine;
     private String step;
     private DoubleSupplier fraction;
@@ -44,13 +46,23 @@ final class Progress implements AutoCloseable {
         this.terminal = terminal;
         this.clock = clock;
         this.start = clock.getAsLong();
-        this.timer = timed ? Executors.newSingleThreadScheduledExecutor(r -> {
-            Thread t = new Thread(r, "glint-progress");
-            t.setDaemon(true);
-            return t;
-        }) : null;
+        this.timer = timed ? new Thread(this::showEveryQuarterSecond, "glint-progress") : null;
         if (timer != null) {
-            timer.scheduleAtFixedRate(this::show, 250, 250, TimeUnit.MILLISECONDS);
+            timer.setDaemon(true);
+            timer.start();
+        }
+    }
+
+    private void showEveryQuarterSecond() {
+        long next = System.nanoTime();
+        while (!closed) {
+            next += TimeUnit.MILLISECONDS.toNanos(250);
+            for (long wait = next - System.nanoTime(); wait > 0 && !closed; wait = next - System.nanoTime()) {
+                LockSupport.parkNanos(this, wait);
+            }
+            if (!closed) {
+                show();
+            }
         }
     }
 
@@ -123,8 +135,9 @@ final class Progress implements AutoCloseable {
     /** Stops showing; a bar on the terminal is cleared so the next line starts clean. */
     @Override
     public synchronized void close() {
+        closed = true;
         if (timer != null) {
-            timer.shutdownNow();
+            LockSupport.unpark(timer);
         }
         step = null;
         if (barShown) {

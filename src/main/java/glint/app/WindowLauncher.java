@@ -24,18 +24,19 @@ final class WindowLauncher {
 
     /** The window on a scene whose config cannot be read again (F5 reloads the scene only). */
     static int open(Path scenePath, Config config, PrintWriter err) throws InputException {
-        return open(scenePath, config, Flags.NONE, () -> config, err);
+        return open(scenePath, config, Flags.NONE, () -> config, new PrintWriter(System.out, true), err);
     }
 
     /**
      * Opens the window and returns the exit status when it is closed: 0 when the user quits, 1 when
-     * there is no display. A scene that does not load throws before any window opens, and before a missing
-     * display is reported.
+     * there is no display, or when something the window printed (key C's camera, a still's report)
+     * could not be written to {@code out}. A scene that does not load throws before any window opens, and
+     * before a missing display is reported.
      *
      * @param flags  the command line's settings, above each scene's render: block
      * @param reload reads the config again for F5
      */
-    static int open(Path scenePath, Config config, Flags flags, ConfigSource reload, PrintWriter err)
+    static int open(Path scenePath, Config config, Flags flags, ConfigSource reload, PrintWriter out, PrintWriter err)
             throws InputException {
         if (GraphicsEnvironment.isHeadless()) {
             checkInputs(scenePath, config, flags); // bad input says so (status 2), display or not
@@ -44,19 +45,39 @@ final class WindowLauncher {
         GlintWindow window;
         try {
             window = GlintWindow.open(config, new SceneSource(scenePath, reload, flags),
-                    new Screenshots(Path.of("").toAbsolutePath()), err);
+                    new Screenshots(Path.of("").toAbsolutePath()), out, err);
         } catch (GlintWindow.UnavailableException e) {
             return noDisplay(err, "cannot open the window (" + e.getMessage() + ")");
         } catch (AWTError | HeadlessException e) {
             return noDisplay(err, "cannot open the window (" + e.getMessage() + ")");
         }
+        Thread hook = new Thread(() -> { // SIGTERM, SIGHUP, Ctrl-C: a still under way stops and says so
+            try {
+                window.interrupt(Interrupts.WAIT_MILLIS);
+            } catch (InterruptedException e) {
+                Thread.currentThread().interrupt();
+            }
+        }, "glint-interrupt");
+        Runtime.getRuntime().addShutdownHook(hook);
         try {
-            return window.awaitExit();
+            int status = window.awaitExit();
+            return status == Main.OK && printingFailed(out) ? Main.FAILURE : status; // the window said so at the time
         } catch (InterruptedException e) {
             window.close();
             Thread.currentThread().interrupt();
             return Main.FAILURE;
+        } finally {
+            try {
+                Runtime.getRuntime().removeShutdownHook(hook);
+            } catch (IllegalStateException e) {
+                // the program is stopping: the hook runs
+            }
         }
+    }
+
+    /** Whether a line printed to {@code out} was lost. */
+    private static boolean printingFailed(PrintWriter out) {
+        return out instanceof Output checked ? checked.failed() : out.checkError();
     }
 
     /** What the window would refuse before it opens: a window too large, a scene that does not load or a render: block beyond the limits. */

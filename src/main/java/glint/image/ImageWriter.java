@@ -15,6 +15,7 @@ import java.nio.file.AtomicMoveNotSupportedException;
 import java.nio.file.Files;
 import java.nio.file.Path;
 import java.nio.file.StandardCopyOption;
+import java.nio.file.StandardOpenOption;
 import java.util.Iterator;
 import java.util.Locale;
 import javax.imageio.ImageIO;
@@ -91,11 +92,27 @@ public final class ImageWriter {
      * (temporary file deleted, the image as it was) when it says so.
      */
     public static void write(FrameBuffer frame, Path path, Path temp, Watcher watcher) throws IOException {
+        try {
+            writeTemporary(frame, path, temp, watcher);
+            watcher.replace(() -> rename(temp, path));
+        } finally {
+            Files.deleteIfExists(temp);
+        }
+    }
+
+    /**
+     * Writes the frame to {@code temp} in the format {@code path}'s name asks for, reporting progress to
+     * the watcher and stopping when it says so; renames nothing (see {@link #rename}).
+     */
+    public static void writeTemporary(FrameBuffer frame, Path path, Path temp, Watcher watcher) throws IOException {
         String name = path.getFileName().toString().toLowerCase(Locale.ROOT);
         Content content = name.endsWith(".pfm") ? out -> writePfm(frame, out, watcher)
                 : out -> writePng(toImage(frame, watcher), out, watcher);
-        try {
-            writeAtomically(path, temp, out -> content.writeTo(new CancellableStream(out, watcher)), watcher);
+        try { // the file was made beforehand: deleted since (a cancel), it is not made again
+            try (OutputStream out = new BufferedOutputStream(Files.newOutputStream(temp, StandardOpenOption.WRITE,
+                    StandardOpenOption.TRUNCATE_EXISTING), 1 << 16)) {
+                content.writeTo(new CancellableStream(out, watcher));
+            }
         } catch (IOException e) {
             if (watcher.cancelled() && !(e instanceof InterruptedIOException)) { // the encoder wraps what it met
                 InterruptedIOException stopped = new InterruptedIOException("interrupted");
@@ -142,22 +159,26 @@ public final class ImageWriter {
      * to be renamed to it when written; made with the folder's usual permissions.
      */
     public static Path temporaryBeside(Path path) throws IOException {
-        Path folder = path.toAbsolutePath().getParent();
         // not Files.createTempFile: its file is private (0600), and the image would keep that mode
         for (int attempt = 0; ; attempt++) {
-            String name = path.getFileName().toString();
-            if (name.length() > MAX_TEMP_STEM) { // the suffix must not push a long name past the folder's limit
-                name = name.substring(0, Character.isHighSurrogate(name.charAt(MAX_TEMP_STEM - 1)) ? MAX_TEMP_STEM - 1 : MAX_TEMP_STEM);
-            }
-            Path temp = folder.resolve("." + name + "." + Long.toHexString(System.nanoTime()) + ".part");
             try {
-                return Files.createFile(temp);
+                return Files.createFile(temporaryName(path));
             } catch (java.nio.file.FileAlreadyExistsException e) {
                 if (attempt == 100) {
                     throw e;
                 }
             }
         }
+    }
+
+    /** A name for a temporary file beside {@code path}, as {@link #temporaryBeside} makes it (not made here). */
+    static Path temporaryName(Path path) {
+        Path folder = path.toAbsolutePath().getParent();
+        String name = path.getFileName().toString();
+        if (name.length() > MAX_TEMP_STEM) { // the suffix must not push a long name past the folder's limit
+            name = name.substring(0, Character.isHighSurrogate(name.charAt(MAX_TEMP_STEM - 1)) ? MAX_TEMP_STEM - 1 : MAX_TEMP_STEM);
+        }
+        return folder.resolve("." + name + "." + Long.toHexString(System.nanoTime()) + ".part");
     }
 
     /** Writes {@code content} to {@code temp}, then renames it to {@code path}; deletes temp on failure. */
@@ -171,15 +192,18 @@ public final class ImageWriter {
             try (OutputStream out = new BufferedOutputStream(Files.newOutputStream(temp), 1 << 16)) {
                 content.writeTo(out);
             }
-            watcher.replace(() -> {
-                try {
-                    Files.move(temp, path, StandardCopyOption.ATOMIC_MOVE, StandardCopyOption.REPLACE_EXISTING);
-                } catch (AtomicMoveNotSupportedException e) {
-                    Files.move(temp, path, StandardCopyOption.REPLACE_EXISTING);
-                }
-            });
+            watcher.replace(() -> rename(temp, path));
         } finally {
             Files.deleteIfExists(temp);
+        }
+    }
+
+    /** Puts a complete temporary file in place under the image's name, replacing a file of that name. */
+    public static void rename(Path temp, Path path) throws IOException {
+        try {
+            Files.move(temp, path, StandardCopyOption.ATOMIC_MOVE, StandardCopyOption.REPLACE_EXISTING);
+        } catch (AtomicMoveNotSupportedException e) {
+            Files.move(temp, path, StandardCopyOption.REPLACE_EXISTING);
         }
     }
 

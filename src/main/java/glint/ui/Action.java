@@ -34,7 +34,12 @@ public enum Action {
     /** Renders the view as a still image in the background, or cancels that render. */
     RENDER_STILL(Kind.COMMAND),
     /** The same, writing a linear PFM beside the PNG (Shift with the render key). */
-    RENDER_STILL_PFM(Kind.COMMAND);
+    RENDER_STILL_PFM(Kind.COMMAND),
+    /**
+     * Not a key of its own: the render key or Esc pressed while the overlay said a still was under way.
+     * It cancels that still, and does nothing else if the still ended meanwhile (it never starts one, never quits).
+     */
+    CANCEL_STILL(Kind.COMMAND);
 
     /** How an action is triggered. */
     public enum Kind { MOTION, MODIFIER, POINTER, COMMAND }

@@ -27,12 +27,18 @@ final class CameraBlock {
         return yaml(camera) + "views:\n" + viewItem(camera) + "\n";
     }
 
-    /** Prints {@link #blocks} (key C) and returns it for the overlay. */
-    static String print(Camera camera, java.io.PrintWriter out) {
+    /**
+     * Prints {@link #blocks} (key C) and returns it for the overlay; if standard output does not take it,
+     * returns why, and says so on {@code err}.
+     */
+    static String print(Camera camera, java.io.PrintWriter out, java.io.PrintWriter err) {
         String text = blocks(camera);
-        out.print(text);
-        out.flush();
-        return text.strip();
+        String failed = Printing.print(out, text);
+        if (failed == null) {
+            return text.strip();
+        }
+        err.println("glint: camera not printed: " + failed);
+        return "camera not printed: " + failed;
     }
 
     /** The camera as an item of a scene's {@code views:} list, indented as under the key: {@code - {...}}. */

@@ -75,9 +75,16 @@ final class Captures implements AutoCloseable {
         return stills.news();
     }
 
-    /** Cancels a still under way and waits until its hidden file is deleted. */
+    /**
+     * Cancels a still under way and waits (a bounded time) until its hidden files are deleted; returns
+     * whether a still under way was cancelled.
+     */
+    boolean stop() {
+        return stills.stop();
+    }
+
     @Override
     public void close() {
-        stills.close();
+        stop();
     }
 }

@@ -71,7 +71,7 @@ final class Commands {
                 status.note("the scene's camera");
             }
             case VIEW -> goToView(in.view());
-            case PRINT_CAMERA -> status.note(CameraBlock.print(controller.camera(), out));
+            case PRINT_CAMERA -> status.note(CameraBlock.print(controller.camera(), out, status.log()));
             case NEXT_SCENE -> browser.open(1);
             case PREVIOUS_SCENE -> browser.open(-1);
             case RENDER_STILL, RENDER_STILL_PFM -> status.note(captures.still(action == Action.RENDER_STILL_PFM, out));
@@ -80,6 +80,11 @@ final class Commands {
                     status.note(captures.cancelStill());
                 } else {
                     quit.run();
+                }
+            }
+            case CANCEL_STILL -> {
+                if (captures.stillRunning()) { // else it ended before the key came: the overlay says how
+                    status.note(captures.cancelStill());
                 }
             }
             default -> {

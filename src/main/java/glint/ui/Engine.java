@@ -57,6 +57,8 @@ public final class Engine implements Runnable, SceneWatcher.Listener {
 
     private volatile boolean running = true;
     private volatile boolean failed;
+    /** What standard error says if the loop's end cancels a still under way. */
+    private volatile String stillCancelled = "glint: still cancelled, nothing written (the window closed)";
 
     public Engine(Config config, Scene scene, SceneSource source, InputState input, Presenter presenter,
                   Screenshots screenshots, Clock clock, PrintWriter err) {
@@ -129,6 +131,12 @@ public final class Engine implements Runnable, SceneWatcher.Listener {
         input.signal();
     }
 
+    /** The program is being stopped by a signal (any thread): the loop ends, and says so if a still is lost. */
+    public void interrupt() {
+        stillCancelled = "glint: interrupted; still cancelled, nothing written";
+        stop();
+    }
+
     /** Where key C prints the camera block (standard output unless a test says otherwise). */
     void printTo(PrintWriter printer) {
         commands.printTo(printer);
@@ -186,7 +194,10 @@ public final class Engine implements Runnable, SceneWatcher.Listener {
             err.println("glint: the window's engine stopped: " + e);
         } finally {
             running = false;
-            captures.close(); // a still under way is cancelled, and its hidden file deleted, before the end
+            if (captures.stop()) { // a still under way is cancelled, and its hidden files deleted, before the end
+                err.println(stillCancelled);
+                err.flush();
+            }
             maker.close();
             finished.countDown();
         }

@@ -49,12 +49,26 @@ public final class GlintWindow {
      */
     public static GlintWindow open(Config config, SceneSource source, Screenshots screenshots, PrintWriter err)
             throws InputException, UnavailableException {
-        return open(config, source, screenshots, err, WindowHooks.NONE);
+        return open(config, source, screenshots, new PrintWriter(System.out, true), err, WindowHooks.NONE);
+    }
+
+    /**
+     * {@link #open(Config, SceneSource, Screenshots, PrintWriter)}, key C's camera and the stills' reports
+     * printed to {@code out}: a line it cannot take is said in the overlay and on {@code err}.
+     */
+    public static GlintWindow open(Config config, SceneSource source, Screenshots screenshots, PrintWriter out,
+                                   PrintWriter err) throws InputException, UnavailableException {
+        return open(config, source, screenshots, out, err, WindowHooks.NONE);
     }
 
     /** {@link #open(Config, SceneSource, Screenshots, PrintWriter)} with test hooks. */
     static GlintWindow open(Config config, SceneSource source, Screenshots screenshots, PrintWriter err,
                             WindowHooks hooks) throws InputException, UnavailableException {
+        return open(config, source, screenshots, new PrintWriter(System.out, true), err, hooks);
+    }
+
+    private static GlintWindow open(Config config, SceneSource source, Screenshots screenshots, PrintWriter out,
+                                    PrintWriter err, WindowHooks hooks) throws InputException, UnavailableException {
         String tooLarge = config.limits().imageSizeProblem(config.displayWidth(), config.displayHeight());
         if (tooLarge != null) { // refused before any memory or window is taken
             throw new InputException("glint", 0, 0, "display_width x display_height: " + tooLarge);
@@ -84,6 +98,7 @@ public final class GlintWindow {
         Engine engine = new Engine(config, scene, source, input, hooks.presenter().apply(display[0]), screenshots,
                 Clock.SYSTEM, err, hooks.trace());
         engine.paceRefinement(RefinePacing.windowInterval(config.targetFps())); // quick passes: several at once
+        engine.printTo(out);
         GlintWindow window = new GlintWindow(frame[0], display[0], engine, input, watcher);
         onEventThread(() -> {
             InputListener.attach(input, display[0]);
@@ -137,6 +152,16 @@ public final class GlintWindow {
         return engine.hasFailed() ? 1 : 0;
     }
 
+    /**
+     * The program is being stopped by a signal (a shutdown hook's thread): the engine ends, cancelling a
+     * still under way (its hidden files deleted, standard error saying so), within {@code millis}.
+     */
+    public void interrupt(long millis) throws InterruptedException {
+        engine.interrupt();
+        watcher.close();
+        engine.awaitFinished(millis, TimeUnit.MILLISECONDS);
+    }
+
     /** Stops the engine and the watcher and closes the window (any thread, never waits). */
     public void close() {
         engine.stop();
@@ -144,12 +169,29 @@ public final class GlintWindow {
         SwingUtilities.invokeLater(frame::dispose);
     }
 
-    /** An unexpected failure on any thread (the event thread included) is one line, not a stack trace. */
+    /**
+     * An unexpected failure on any thread (the event thread included) is one line, not a stack trace. The
+     * program's main has set such a handler already (which also makes the exit status 1); a window opened
+     * without it gets this one.
+     */
     private static void oneLineErrors(PrintWriter err) {
-        Thread.setDefaultUncaughtExceptionHandler((thread, e) -> {
-            err.println("glint: unexpected error on " + thread.getName() + ": " + e);
-            err.flush();
-        });
+        Thread.UncaughtExceptionHandler now = Thread.getDefaultUncaughtExceptionHandler();
+        if (now == null || now instanceof OneLineErrors) { // none, or a window's before this one
+            Thread.setDefaultUncaughtExceptionHandler(new OneLineErrors(err));
+        }
+    }
+
+    /** A thread's uncaught error as one line on standard error. */
+    private record OneLineErrors(PrintWriter err) implements Thread.UncaughtExceptionHandler {
+        @Override
+        public void uncaughtException(Thread thread, Throwable e) {
+            try {
+                err.println("glint: unexpected error on " + thread.getName() + ": " + e);
+                err.flush();
+            } catch (Throwable again) {
+                // no memory left even for the line
+            }
+        }
     }
 
     private static void onEventThread(Runnable task, SceneWatcher watcher) throws UnavailableException {

@@ -68,6 +68,8 @@ final class InputListener {
                 } else if (commandKeysDown.add(e.getKeyCode())) { // not again while auto-repeating
                     if (action == Action.VIEW) {
                         input.view(KeyBindings.viewOf(e.getKeyCode()));
+                    } else if ((action == Action.RENDER_STILL || action == Action.QUIT) && stillShown()) {
+                        command(Action.CANCEL_STILL); // what the overlay said when the key went down
                     } else if (action == Action.RENDER_STILL && e.isShiftDown()) {
                         command(Action.RENDER_STILL_PFM);
                     } else {
@@ -133,6 +135,12 @@ final class InputListener {
                 input.wheel(e.getWheelRotation());
             }
         };
+    }
+
+    /** Whether the overlay on screen says a still is under way (Enter and Esc then cancel it). */
+    private boolean stillShown() {
+        ShownFrame shown = display.shown();
+        return shown != null && StillRender.underWay(shown.stats().message());
     }
 
     private void command(Action action) {

@@ -70,6 +70,7 @@ public final class KeyBindings {
             key(Action.RENDER_STILL, "Enter", "render the view as a still PNG; Enter again or Esc cancels",
                     KeyEvent.VK_ENTER),
             pointer(Action.RENDER_STILL_PFM, "Shift + Enter", "the same, with a linear PFM beside the PNG"),
+            pointer(Action.CANCEL_STILL, "Enter / Esc", "a still under way: cancel it at once; Esc does not quit"),
             key(Action.NEXT_SCENE, "Page Down", "open the next scene of the scene's folder", KeyEvent.VK_PAGE_DOWN),
             key(Action.PREVIOUS_SCENE, "Page Up", "open the previous scene of the scene's folder",
                     KeyEvent.VK_PAGE_UP),

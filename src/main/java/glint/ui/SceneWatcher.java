@@ -9,7 +9,10 @@ import java.nio.charset.StandardCharsets;
 import java.nio.file.Files;
 import java.nio.file.NoSuchFileException;
 import java.nio.file.Path;
+import java.nio.file.attribute.BasicFileAttributes;
 import java.util.Arrays;
+import java.util.List;
+import java.util.Objects;
 import java.util.concurrent.Executors;
 import java.util.concurrent.ScheduledExecutorService;
 import java.util.concurrent.TimeUnit;
@@ -21,10 +24,11 @@ import java.util.concurrent.TimeUnit;
  * nothing noticeable.
  *
  * <p>A file being saved is never loaded half written: a changed content is loaded only when the next
- * read, one period later, finds the same bytes, and the result is dropped if the file changed while
- * it was loading. A save that stops half way for less than a period therefore never shows; this
- * matters most where the first half of a scene is itself a valid, smaller scene (the objects cut off
- * after the first few).
+ * read, one period later, finds the same bytes with the same modification time (saves that follow each
+ * other can have the same first half: equal bytes alone would take a file still being written for one
+ * that stayed the same), and the result is dropped if the file changed while it was loading. A save that
+ * stops half way for less than a period therefore never shows; this matters most where the first half of
+ * a scene is itself a valid, smaller scene (the objects cut off after the first few).
  */
 public final class SceneWatcher implements AutoCloseable {
 
@@ -45,6 +49,7 @@ public final class SceneWatcher implements AutoCloseable {
     private volatile Listener listener;
     private byte[] last;     // the content last reported (at start: the content loaded before watching)
     private byte[] pending;  // a new content read once, loaded if the next read finds it again
+    private Object pendingStamp; // and the file's modification time, size and identity when it was read
     private boolean hasPending;
 
     /**
@@ -86,13 +91,15 @@ public final class SceneWatcher implements AutoCloseable {
             hasPending = false;
             return;
         }
+        Object stamp = stamp();
         byte[] now = read();
         if (Arrays.equals(now, last)) {
             hasPending = false; // unchanged, or back to what is on screen
             return;
         }
-        if (!hasPending || !Arrays.equals(now, pending)) {
+        if (!hasPending || !Arrays.equals(now, pending) || !Objects.equals(stamp, pendingStamp)) {
             pending = now; // changed since the last read: maybe still being written
+            pendingStamp = stamp;
             hasPending = true;
             return;
         }
@@ -103,10 +110,15 @@ public final class SceneWatcher implements AutoCloseable {
             scene = source.loadScene();
         } catch (InputException e) {
             problem = e;
+        } catch (OutOfMemoryError e) { // reported like any problem of this version, once; the last good scene stays
+            problem = new InputException(source.scenePath().toString(), 0, 0, "not loaded: out of memory ("
+                    + e.getMessage() + "); start Java with a larger -Xmx");
         }
+        Object stampAfter = stamp();
         byte[] after = read();
-        if (!Arrays.equals(after, now)) {
+        if (!Arrays.equals(after, now) || !Objects.equals(stampAfter, stamp)) {
             pending = after; // written again while it loaded: what loaded may be half of it
+            pendingStamp = stampAfter;
             hasPending = true;
             return;
         }
@@ -118,11 +130,16 @@ public final class SceneWatcher implements AutoCloseable {
         }
     }
 
+    /** One read on the timer's thread: whatever goes wrong is reported, and the reads go on (a timer's task that throws is never run again). */
     private void pollSafely() {
         try {
             poll();
-        } catch (RuntimeException e) {
-            listener.failed(new InputException(source.scenePath().toString(), 0, 0, "cannot watch: " + e));
+        } catch (RuntimeException | Error e) {
+            try {
+                listener.failed(new InputException(source.scenePath().toString(), 0, 0, "cannot watch: " + e));
+            } catch (RuntimeException | Error again) {
+                // the listener cannot take it either: the next read tries again
+            }
         }
     }
 
@@ -149,6 +166,16 @@ public final class SceneWatcher implements AutoCloseable {
             return null;
         } catch (IOException e) {
             return marker("unreadable: " + e); // the loader says why
+        }
+    }
+
+    /** The file's modification time, size and identity (its inode), or null when it has none to tell. */
+    private Object stamp() {
+        try {
+            BasicFileAttributes a = Files.readAttributes(file, BasicFileAttributes.class);
+            return List.of(a.lastModifiedTime(), a.size(), String.valueOf(a.fileKey()));
+        } catch (IOException | RuntimeException e) {
+            return null; // gone, or unreadable: the bytes (a marker) say so
         }
     }
 

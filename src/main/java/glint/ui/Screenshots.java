@@ -1,6 +1,8 @@
 package glint.ui;
 
 import glint.image.ImageWriter;
+import glint.image.PartFile;
+import glint.image.PartGuard;
 import java.awt.image.BufferedImage;
 import java.io.IOException;
 import java.io.PrintWriter;
@@ -14,6 +16,7 @@ import java.nio.file.StandardCopyOption;
 import java.nio.file.StandardOpenOption;
 import java.time.LocalDateTime;
 import java.time.format.DateTimeFormatter;
+import java.util.List;
 import java.util.function.Supplier;
 
 /** Saves the view as {@code glint-yyyyMMdd-HHmmss-SSS.png} in a folder (the working directory). */
@@ -77,15 +80,20 @@ public final class Screenshots {
      */
     Path save(String prefix, String extension, Content content) throws IOException {
         // not Files.createTempFile: its file is private (0600), and the image would keep that mode
-        Path part = ImageWriter.temporaryBeside(folder.resolve(prefix + extension));
+        PartFile part = PartFile.beside(folder.resolve(prefix + extension));
+        PartGuard guard = PartGuard.of(List.of(part.path()), ENDED);
         try {
-            content.writeTo(part);
-            return Files.move(part, name(prefix, extension), StandardCopyOption.ATOMIC_MOVE);
-        } catch (IOException | RuntimeException e) {
-            deleteQuietly(part, e);
-            throw e;
+            content.writeTo(part.path());
+            return Files.move(part.path(), name(prefix, extension), StandardCopyOption.ATOMIC_MOVE);
+        } finally {
+            part.close(); // gone already if it was renamed; else deleted, wherever the folder is now
+            guard.close();
         }
     }
+
+    /** What a guard says if the program ends too abruptly to delete a screenshot's hidden file itself. */
+    private static final String ENDED = "glint: the program ended before the screenshot was written; nothing "
+            + "written, its hidden temporary file removed";
 
     /** A name no file has yet: {@code prefix-yyyyMMdd-HHmmss-SSS.ext}, or with {@code -1}, {@code -2}. */
     Path name(String prefix, String extension) {
@@ -111,11 +119,4 @@ public final class Screenshots {
         return e.getMessage() != null ? e.getMessage() : e.toString();
     }
 
-    private static void deleteQuietly(Path file, Exception cause) {
-        try {
-            Files.deleteIfExists(file);
-        } catch (IOException e) {
-            cause.addSuppressed(e);
-        }
-    }
 }

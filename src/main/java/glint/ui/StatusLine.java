@@ -19,6 +19,11 @@ final class StatusLine {
         this.err = err;
     }
 
+    /** Standard error, where what failed is said besides the overlay. */
+    PrintWriter log() {
+        return err;
+    }
+
     /** The overlay says {@code text} from the next frame on. */
     void note(String text) {
         message = text;

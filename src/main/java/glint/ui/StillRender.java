@@ -4,33 +4,50 @@ import glint.config.Config;
 import glint.config.JarCommand;
 import glint.config.LightTransport;
 import glint.image.ImageWriter;
+import glint.image.PartFile;
+import glint.image.PartGuard;
 import glint.input.InputException;
 import glint.render.FrameBuffer;
 import glint.render.RenderScene;
 import glint.render.Tracer;
 import glint.scene.Camera;
 import java.io.IOException;
+import java.io.InterruptedIOException;
 import java.io.PrintWriter;
 import java.nio.file.AccessDeniedException;
 import java.nio.file.FileSystemException;
-import java.nio.file.Files;
 import java.nio.file.NoSuchFileException;
 import java.nio.file.Path;
+import java.util.ArrayList;
+import java.util.List;
 import java.util.Locale;
 import java.util.Optional;
 import java.util.concurrent.CancellationException;
+import java.util.concurrent.CountDownLatch;
 import java.util.concurrent.TimeUnit;
+import java.util.concurrent.atomic.AtomicReference;
 
 /**
  * The window's render key: the view rendered as a still image, as {@code --output} renders it, on a thread
- * and tracer of its own, so that the window's frames go on. One at a time; cancelled by the same key or
- * Esc, or when the window closes. The image is written as headless stills are: to a hidden file beside it,
- * renamed when complete, so that no file is ever seen half written or left behind.
+ * and tracer of its own, so that the window's frames go on. Cancelled by the same key or Esc, or when the
+ * window closes, while it renders and while its image is encoded and written: a cancelled still is
+ * cancelled at once (a tile still being traced finishes on its own, and its result is dropped), so the
+ * next key press starts a new still. The image is written as headless stills are: to a hidden file beside
+ * it, made before the render, renamed when complete, so that no file is ever seen half written or left
+ * behind; the rename and the cancel exclude each other, so "cancelled, nothing written" is always true.
+ * Engine thread only, except where a method says otherwise.
  */
 final class StillRender implements AutoCloseable {
 
     /** While a still renders, the engine looks at its progress this often. */
     static final long POLL_NANOS = 250_000_000L;
+    /** What the overlay says once a still is cancelled, at once. */
+    static final String CANCELLED = "still: cancelled, nothing written";
+    private static final String RENDERING = "still: rendering ";
+    private static final String WRITING = "still: writing ";
+    /** What a guard says if the program ends too abruptly to delete a still's hidden files itself. */
+    private static final String ENDED = "glint: the program ended before the still was written; nothing written, "
+            + "its hidden temporary files removed";
 
     /**
      * What to render and where.
@@ -48,6 +65,15 @@ final class StillRender implements AutoCloseable {
      */
     record Job(RenderScene scene, int width, int height, int samples, int threads, int divider, Path png, Path pfm,
                String settings, String recipe) {
+
+        /** The files written, for the overlay and the report: {@code a.png} or {@code a.png and a.pfm}. */
+        String files() {
+            return png + (pfm != null ? " and " + pfm : "");
+        }
+
+        List<Path> images() {
+            return pfm == null ? List.of(png) : List.of(png, pfm);
+        }
     }
 
     /**
@@ -72,21 +98,23 @@ final class StillRender implements AutoCloseable {
                 still.screenDivider(), png, pfmFile, settings, recipe);
     }
 
+    /** Whether an overlay line says a still is under way (which Enter or Esc then cancels). Any thread. */
+    static boolean underWay(String overlayLine) {
+        return overlayLine.startsWith(RENDERING) || overlayLine.startsWith(WRITING);
+    }
+
     private final Runnable changed;
-    private volatile Tracer tracer;
-    private volatile Thread thread;
-    private volatile String news; // the last thing to show, until the engine takes it
-    private volatile boolean cancelled;
+    private final List<Still> stills = new ArrayList<>(); // every still whose thread may still run
+    private Still current; // the last one started
 
     /** @param changed wakes the engine when a still is written, fails or stops */
     StillRender(Runnable changed) {
         this.changed = changed;
     }
 
-    /** Whether a still is being rendered. */
+    /** Whether a still is under way: started, not cancelled, not ended. */
     boolean running() {
-        Thread t = thread;
-        return t != null && t.isAlive();
+        return current != null && current.underWay();
     }
 
     /** Starts a still (returns what the overlay says), or, if one is under way, cancels it. */
@@ -94,97 +122,58 @@ final class StillRender implements AutoCloseable {
         if (running()) {
             return cancel();
         }
-        cancelled = false;
-        Tracer t = new Tracer(job.threads());
-        tracer = t;
-        Thread worker = new Thread(() -> render(job, t, out, err), "glint-still");
-        thread = worker;
-        worker.start();
-        return progressLine();
+        stills.removeIf(s -> s.ended.getCount() == 0);
+        current = new Still(job, current, out, err);
+        stills.add(current);
+        current.thread.start();
+        return current.progressLine();
     }
 
-    /** Cancels the still under way; no file is written. */
+    /** Cancels the still under way (none is written); returns what the overlay says. */
     String cancel() {
-        cancelled = true;
-        Tracer t = tracer;
-        if (t != null) {
-            t.cancel();
-        }
-        return "still: cancelling";
+        return current == null ? CANCELLED : current.cancel();
     }
 
-    /** What changed since the last call (progress, written, cancelled, failed), if anything. */
+    /** What changed since the last call (progress, written, failed), if anything. */
     Optional<String> news() {
-        String n = news;
-        news = null;
-        if (n == null && running()) {
-            return Optional.of(progressLine());
+        Still s = current;
+        if (s == null) {
+            return Optional.empty();
         }
-        return Optional.ofNullable(n);
-    }
-
-    private String progressLine() {
-        Tracer t = tracer;
-        int percent = t == null ? 0 : (int) (100L * t.tilesDone() / Math.max(1, t.frameTiles()));
-        return "still: rendering " + percent + " % (Enter or Esc cancels)";
-    }
-
-    private void render(Job job, Tracer t, PrintWriter out, PrintWriter err) {
-        long start = System.nanoTime();
-        try (t) {
-            FrameBuffer frame = new FrameBuffer(job.width(), job.height());
-            t.render(job.scene(), frame, job.samples(), 0, job.divider());
-            if (cancelled) {
-                throw new CancellationException();
-            }
-            write(frame, job.png());
-            if (job.pfm() != null) {
-                write(frame, job.pfm());
-            }
-            String files = job.png() + (job.pfm() != null ? " and " + job.pfm() : "");
-            out.printf(Locale.ROOT, "still: wrote %s (%s) in %.1f s%n%s", files, job.settings(),
-                    (System.nanoTime() - start) / 1e9, job.recipe());
-            out.flush();
-            news = "still: wrote " + files;
-        } catch (CancellationException e) {
-            news = "still: cancelled, nothing written";
-        } catch (IOException | RuntimeException | OutOfMemoryError e) {
-            String why = e instanceof OutOfMemoryError ? "out of memory" : e.getMessage() != null ? e.getMessage()
-                    : e.toString();
-            err.println("glint: still not written: " + why);
-            news = "still not written: " + why;
-        } finally {
-            tracer = null;
-            changed.run();
-        }
+        String n = s.news.getAndSet(null);
+        return n == null && s.underWay() ? Optional.of(s.progressLine()) : Optional.ofNullable(n);
     }
 
     /**
-     * Written aside and renamed when complete, as headless stills are; the aside file never stays. A
-     * failure names the image, never the aside file: {@code /photos/a.png: permission denied}.
+     * Cancels a still under way and waits (a bounded time) until every still's thread has cleaned up;
+     * returns whether a still under way was cancelled by it.
      */
-    private void write(FrameBuffer frame, Path file) throws IOException {
-        Path temp;
-        try {
-            temp = ImageWriter.temporaryBeside(file);
-        } catch (IOException e) {
-            throw new IOException(why(e, file), e);
-        }
-        try {
-            if (cancelled) {
-                throw new CancellationException();
+    boolean stop() {
+        boolean stopped = running() && cancel().equals(CANCELLED); // not when it was just renamed into place
+        long deadline = System.nanoTime() + TimeUnit.SECONDS.toNanos(30);
+        for (Still s : stills) {
+            s.tracer.cancel();
+            try {
+                s.ended.await(Math.max(0, deadline - System.nanoTime()), TimeUnit.NANOSECONDS);
+            } catch (InterruptedException e) {
+                Thread.currentThread().interrupt();
+                break;
             }
-            ImageWriter.write(frame, file, temp);
-        } catch (IOException e) {
-            throw new IOException(why(e, file), e);
-        } finally {
-            Files.deleteIfExists(temp);
         }
+        return stopped;
     }
 
-    /** Why {@code file} could not be written, in words, naming it. */
-    static String why(IOException e, Path file) {
-        String name = InputException.cutPath(file.toString());
+    @Override
+    public void close() {
+        stop();
+    }
+
+    /**
+     * Why {@code image} could not be written, in words, naming it, never its hidden file (which the
+     * system's error names): {@code /photos/a.png: permission denied}.
+     */
+    static String why(IOException e, Path image) {
+        String name = InputException.cutPath(image.toString());
         if (e instanceof AccessDeniedException) {
             return name + ": permission denied";
         }
@@ -197,18 +186,178 @@ final class StillRender implements AutoCloseable {
         return name + ": " + (e.getMessage() != null ? e.getMessage() : e.toString());
     }
 
-    /** Cancels a still under way and waits (a bounded time) until its thread has cleaned up. */
-    @Override
-    public void close() {
-        Thread t = thread;
-        if (t == null) {
-            return;
+    /** One still: its thread, its tracer, and how far it is. */
+    private final class Still implements ImageWriter.Watcher {
+        private final Job job;
+        private Still previous; // may still be finishing a tile: this one waits for it (one frame in memory)
+        private final PrintWriter out;
+        private final PrintWriter err;
+        private final Tracer tracer;
+        private final Thread thread;
+        private final CountDownLatch ended = new CountDownLatch(1);
+        private final AtomicReference<String> news = new AtomicReference<>(); // the last thing to show
+        private volatile boolean cancelled;
+        // under this object's lock, as cancelled is set: the hidden files, and whether they are in place
+        private final List<PartFile> parts = new ArrayList<>();
+        private boolean renamed;
+        private volatile int filesWritten;
+        private volatile double writeFraction = -1; // of the file being written; below 0: still rendering
+
+        Still(Job job, Still previous, PrintWriter out, PrintWriter err) {
+            this.job = job;
+            this.previous = previous;
+            this.out = out;
+            this.err = err;
+            this.tracer = new Tracer(job.threads());
+            this.thread = new Thread(this::run, "glint-still");
         }
-        cancel();
-        try {
-            t.join(TimeUnit.SECONDS.toMillis(30));
-        } catch (InterruptedException e) {
-            Thread.currentThread().interrupt();
+
+        boolean underWay() {
+            return !cancelled && ended.getCount() > 0;
+        }
+
+        /** Cancelled at once: no rename can follow, and the hidden files are gone before the overlay says so. */
+        String cancel() {
+            synchronized (this) {
+                if (renamed) {
+                    return "still: wrote " + job.files(); // too late: it is there
+                }
+                cancelled = true;
+                parts.forEach(PartFile::delete); // a write under way goes on into nothing, and stops at its next bytes
+            }
+            tracer.cancel();
+            return CANCELLED;
+        }
+
+        @Override
+        public boolean cancelled() {
+            return cancelled;
+        }
+
+        @Override
+        public void progress(double fraction) {
+            writeFraction = fraction;
+        }
+
+        String progressLine() {
+            double f = writeFraction;
+            if (f < 0) {
+                int percent = (int) (100L * tracer.tilesDone() / Math.max(1, tracer.frameTiles()));
+                return RENDERING + percent + " % (Enter or Esc cancels)";
+            }
+            int percent = (int) (100 * (filesWritten + Math.min(1, f)) / job.images().size());
+            return WRITING + percent + " % (Enter or Esc cancels)";
+        }
+
+        private void run() {
+            long start = System.nanoTime();
+            PartGuard guard = null;
+            try {
+                awaitPrevious();
+                guard = PartGuard.of(makeParts(), ENDED);
+                FrameBuffer frame = new FrameBuffer(job.width(), job.height());
+                checkCancelled();
+                tracer.render(job.scene(), frame, job.samples(), 0, job.divider());
+                write(frame);
+                report(start);
+            } catch (CancellationException | InterruptedIOException e) {
+                // said when it was cancelled
+            } catch (IOException | RuntimeException | OutOfMemoryError e) {
+                String why = e instanceof OutOfMemoryError ? "out of memory" : e.getMessage() != null ? e.getMessage()
+                        : e.toString();
+                err.println("glint: still not written: " + why);
+                news.set("still not written: " + why);
+            } finally {
+                synchronized (this) {
+                    parts.forEach(PartFile::close); // renamed into place, or deleted wherever its folder is now
+                }
+                if (guard != null) {
+                    guard.close();
+                }
+                tracer.close();
+                ended.countDown();
+                changed.run();
+            }
+        }
+
+        /** Waits until the still before this one (cancelled) has let go of its frame, or this one is cancelled. */
+        private void awaitPrevious() throws InterruptedIOException {
+            try {
+                while (previous != null && !previous.ended.await(50, TimeUnit.MILLISECONDS)) {
+                    checkCancelled();
+                }
+            } catch (InterruptedException e) {
+                Thread.currentThread().interrupt();
+                throw new InterruptedIOException("interrupted");
+            }
+            previous = null; // let go of it: no chain of old stills is kept
+            checkCancelled();
+        }
+
+        private void checkCancelled() {
+            if (cancelled) {
+                throw new CancellationException();
+            }
+        }
+
+        /** The hidden files, made before the work (a folder that cannot be written is found now); their paths. */
+        private List<Path> makeParts() throws IOException {
+            synchronized (this) {
+                checkCancelled();
+                for (Path image : job.images()) {
+                    try {
+                        parts.add(PartFile.beside(image));
+                    } catch (IOException e) {
+                        throw new IOException(why(e, image), e);
+                    }
+                }
+                return parts.stream().map(PartFile::path).toList();
+            }
+        }
+
+        /** Each file written to its hidden one, then all renamed into place, unless cancelled before. */
+        private void write(FrameBuffer frame) throws IOException {
+            writeFraction = 0;
+            List<Path> images = job.images();
+            for (int i = 0; i < images.size(); i++) {
+                filesWritten = i;
+                writeFraction = 0;
+                try {
+                    ImageWriter.writeTemporary(frame, images.get(i), parts.get(i).path(), this);
+                } catch (InterruptedIOException e) {
+                    throw e;
+                } catch (IOException e) {
+                    throw new IOException(why(e, images.get(i)), e);
+                }
+            }
+            synchronized (this) {
+                if (cancelled) {
+                    throw new InterruptedIOException("cancelled");
+                }
+                for (int i = 0; i < images.size(); i++) {
+                    try {
+                        ImageWriter.rename(parts.get(i).path(), images.get(i));
+                    } catch (IOException e) {
+                        if (i == 0) {
+                            throw new IOException(why(e, images.get(0)), e);
+                        }
+                        renamed = true; // the PNG is there: say so, and why the PFM is not
+                        throw new IOException(why(e, images.get(i)) + " (" + images.get(0) + " was written)", e);
+                    }
+                }
+                renamed = true;
+            }
+        }
+
+        /** Standard output gets the files, then the command and camera that make them headless. */
+        private void report(long start) {
+            String files = job.files();
+            String failed = Printing.print(out, String.format(Locale.ROOT, "still: wrote %s (%s) in %.1f s%n%s", files,
+                    job.settings(), (System.nanoTime() - start) / 1e9, job.recipe()));
+            if (failed != null) {
+                err.println("glint: still: wrote " + files + "; its report not printed: " + failed);
+            }
+            news.set("still: wrote " + files + (failed == null ? "" : "; its report not printed: " + failed));
         }
     }
 }

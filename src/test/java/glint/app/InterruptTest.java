@@ -83,6 +83,20 @@ class InterruptTest {
         stopWhileRendering("USR1", 138);
     }
 
+    /** SIGSTKFLT, SIGSYS and SIGTRAP, whose default would end the JVM at once, stop it the same way: 144, 159, 133. */
+    @Test
+    void sigstkfltSigsysAndSigtrapStopALongStillTheSameWay() throws Exception {
+        for (String signal : List.of("STKFLT", "SYS", "TRAP")) {
+            int number = switch (signal) {
+                case "STKFLT" -> 16;
+                case "SYS" -> 31;
+                default -> 5;
+            };
+            assumeFalse(ignored(number), "SIG" + signal + " is ignored in this process and so in its children");
+            stopWhileRendering(signal, 128 + number);
+        }
+    }
+
     private void stopWhileRendering(String signal, int status) throws Exception {
         Path output = dir.resolve("long.png");
         Path config = Files.writeString(dir.resolve("empty.properties"), "");
@@ -120,6 +134,29 @@ class InterruptTest {
         assertArrayEquals(old, Files.readAllBytes(output));
         try (Stream<Path> files = Files.list(dir)) {
             assertEquals(List.of("big.png", "empty.properties", "out.txt", "sky.yaml"),
+                    files.map(p -> p.getFileName().toString()).sorted().toList(), "no temporary file");
+        }
+    }
+
+    /**
+     * SIGKILL (kill -9, the out-of-memory killer) cannot be caught: no Java code runs. The image's hidden
+     * file (made before the render) is deleted all the same, by its guard outside the JVM, which says so;
+     * the old image is kept.
+     */
+    @Test
+    void sigkillLeavesNoTemporaryFileAndSaysSo() throws Exception {
+        Path output = dir.resolve("long.png");
+        byte[] old = {(byte) 0x89, 'P', 'N', 'G', 1, 2, 3};
+        Files.write(output, old);
+        Path config = Files.writeString(dir.resolve("empty.properties"), "");
+        List<String> err = stop("KILL", "rendering: ", "--config", config.toString(), "--scene",
+                Path.of("scenes/default.yaml").toAbsolutePath().toString(), "--output", output.toString(),
+                "--width", "400", "--height", "300", "--spp", "1024", "--threads", "1");
+        assertEquals(137, Integer.parseInt(err.remove(err.size() - 1)), err.toString());
+        assertEquals(Headless.ENDED, err.get(err.size() - 1), err.toString());
+        assertArrayEquals(old, Files.readAllBytes(output));
+        try (Stream<Path> files = Files.list(dir)) {
+            assertEquals(List.of("empty.properties", "long.png", "out.txt"),
                     files.map(p -> p.getFileName().toString()).sorted().toList(), "no temporary file");
         }
     }

@@ -288,6 +288,28 @@ class EngineFaultTest {
         assertEquals("", lastStats().sizeLimit());
     }
 
+    /** docs/window.md's example: a 4000x3000 window under max_image_pixels=20000 saves a 163x122 PNG, and says so. */
+    @Test
+    void theScreenshotOfAWindowBeyondTheLimitIsTheLargestFrameAllowed() throws Exception {
+        config = config.withLimits(new Limits(20_000, Limits.DEFAULT.maxSceneBytes(), Limits.DEFAULT.maxObjects(),
+                Limits.DEFAULT.maxLights(), Limits.DEFAULT.maxRecursion()));
+        open(config);
+        input.resize(4000, 3000);
+        clock.advance(1);
+        while (engine.step() != Engine.IDLE) {
+            clock.advance(0.01);
+        }
+        input.command(Action.SCREENSHOT);
+        engine.step();
+        Path png;
+        try (var files = Files.list(dir)) {
+            png = files.filter(p -> p.toString().endsWith(".png")).findFirst().orElseThrow();
+        }
+        BufferedImage saved = ImageIO.read(png.toFile());
+        assertEquals("163x122", saved.getWidth() + "x" + saved.getHeight());
+        assertEquals("saved " + png + " at 163x122 (at most 20,000 pixels (max_image_pixels))", lastStats().message());
+    }
+
     @Test
     void theFrameBudgetIsAlsoWhatHalfTheHeapHolds() {
         long gigabyte = 1L << 30;

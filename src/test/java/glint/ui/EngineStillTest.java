@@ -57,10 +57,17 @@ class EngineStillTest {
 
     /** An engine whose stills take {@code samples} samples a pixel and go to {@code folder}. */
     private void open(int samples, Path folder) throws InputException {
+        open(Config.defaults().withSize(W, H).withSamples(samples).withThreads(2), folder);
+    }
+
+    private void open(Config config) throws InputException {
+        open(config, shots);
+    }
+
+    private void open(Config config, Path folder) throws InputException {
         if (engine != null) {
             engine.close();
         }
-        Config config = Config.defaults().withSize(W, H).withSamples(samples).withThreads(2);
         SceneSource source = new SceneSource(sceneFile, () -> config);
         engine = new Engine(config, source.loadScene(), source, input, presenter, new Screenshots(folder), clock,
                 new PrintWriter(err, true));
@@ -78,11 +85,16 @@ class EngineStillTest {
 
     /** Steps the engine (as its loop would) until the overlay's message starts with {@code prefix}. */
     private void stepUntil(String prefix) throws InterruptedException {
+        stepUntilMatches(java.util.regex.Pattern.quote(prefix) + ".*");
+    }
+
+    /** Steps the engine until the overlay's message matches {@code regex}. */
+    private void stepUntilMatches(String regex) throws InterruptedException {
         Poll.until(() -> {
             engine.step();
             clock.advance(0.01);
-            return message().startsWith(prefix);
-        }, 60_000, () -> "the overlay says " + prefix + "...: " + message() + "; err: " + err);
+            return message().matches(regex);
+        }, 60_000, () -> "the overlay says " + regex + ": " + message() + "; err: " + err);
     }
 
     private List<Path> files() throws IOException {
@@ -140,6 +152,96 @@ class EngineStillTest {
         stepUntil("still: cancelled, nothing written");
         assertTrue(engine.isRunning(), "Esc stopped the still, not the window");
         assertEquals(List.of(), files());
+        assertFalse(out.toString().contains("wrote"), out::toString);
+    }
+
+    /** How many still threads are alive: a cancelled still's tile may still be traced, and its result dropped. */
+    private static long stillThreads() {
+        return Thread.getAllStackTraces().keySet().stream()
+                .filter(t -> t.getName().equals("glint-still") && t.isAlive()).count();
+    }
+
+    /**
+     * Four tiles (screen_divider=2) of a second or so each: once one is done, Enter cancels the still at once,
+     * though the tiles under way go on being traced, and the next Enter starts a new still, which is written.
+     */
+    @Test
+    void aCancelledStillIsCancelledAtOnceAndTheNextEnterStartsANewOne() throws Exception {
+        Files.writeString(sceneFile, TestScenes.sphere(0.1, 0.2, 0.3) + "render: {width: 480, height: 360}\n");
+        open(Config.defaults().withSize(W, H).withSamples(64).withThreads(2).withScreenDivider(2));
+        input.command(Action.RENDER_STILL);
+        stepUntilMatches("still: rendering [1-9][0-9]? % .*"); // a tile is done: the next ones are being traced
+        input.command(Action.RENDER_STILL);
+        engine.step(); // one turn: no waiting for the tile
+        assertEquals(StillRender.CANCELLED, message(), "cancelled at once");
+        assertEquals(1, stillThreads(), "its one tile is still being traced");
+        input.command(Action.RENDER_STILL);
+        engine.step();
+        assertEquals("still: rendering 0 % (Enter or Esc cancels)", message(), "a new still, not a second cancel");
+        stepUntil("still: wrote ");
+        List<Path> written = files();
+        assertEquals(1, written.size(), written::toString);
+        assertTrue(message().endsWith(written.get(0).toString()), message());
+        assertEquals(1, out.toString().split("still: wrote ", -1).length - 1, out::toString);
+    }
+
+    /** Standard output that does not take the still's report (a full disk): the image is there, and that is said. */
+    @Test
+    void aStillWhoseReportCannotBePrintedSaysSo() throws Exception {
+        java.io.File full = new java.io.File("/dev/full");
+        org.junit.jupiter.api.Assumptions.assumeTrue(full.exists(), "/dev/full exists here");
+        engine.printTo(new PrintWriter(new java.io.FileOutputStream(full), true));
+        input.command(Action.RENDER_STILL);
+        stepUntil("still: wrote ");
+        Path png = files().get(0);
+        assertEquals("still: wrote " + png + "; its report not printed: cannot write to standard output", message());
+        assertEquals("glint: still: wrote " + png + "; its report not printed: cannot write to standard output\n",
+                err.toString());
+    }
+
+    /** Esc pressed while the overlay said a still was under way, which ended before the key came: no quitting. */
+    @Test
+    void aKeyMeantToCancelAStillThatHasJustEndedNeitherQuitsNorStartsOne() throws Exception {
+        input.command(Action.RENDER_STILL);
+        stepUntil("still: wrote ");
+        String wrote = message();
+        input.command(Action.CANCEL_STILL); // the listener's Esc or Enter while the overlay said "rendering"
+        engine.step();
+        assertTrue(engine.isRunning(), "the window stays");
+        assertEquals(wrote, message(), "what happened stays on the overlay");
+        assertEquals(1, files().size(), "no second still");
+    }
+
+    /** A still of 3840x2160 (the scene's render: block): Esc while its PNG is encoded stops the write, and it leaves nothing. */
+    @Test
+    void escWhileTheImageIsWrittenStopsTheWriteAndLeavesNothing() throws Exception {
+        Files.writeString(sceneFile, TestScenes.sphere(0.1, 0.2, 0.3) + "render: {width: 3840, height: 2160}\n");
+        open(1);
+        input.command(Action.RENDER_STILL);
+        stepUntil("still: writing ");
+        input.command(Action.QUIT);
+        engine.step();
+        assertEquals(StillRender.CANCELLED, message());
+        assertTrue(engine.isRunning(), "Esc stopped the still, not the window");
+        assertEquals(List.of(), files(), "no image and no hidden file, at once");
+        engine.close(); // waits until the still's thread has ended
+        assertEquals(List.of(), files());
+        assertFalse(out.toString().contains("wrote"), out::toString);
+        assertEquals("", err.toString());
+    }
+
+    @Test
+    void closingTheWindowWhileTheImageIsWrittenLeavesNothingAndSaysSo() throws Exception {
+        Files.writeString(sceneFile, TestScenes.sphere(0.1, 0.2, 0.3) + "render: {width: 3840, height: 2160}\n");
+        open(1);
+        input.command(Action.RENDER_STILL);
+        stepUntil("still: writing ");
+        Thread loop = new Thread(engine, "glint-engine");
+        loop.start(); // the loop's end is the window's
+        engine.stop();
+        assertTrue(engine.awaitFinished(30, java.util.concurrent.TimeUnit.SECONDS));
+        assertEquals(List.of(), files(), "no image and no hidden file");
+        assertEquals("glint: still cancelled, nothing written (the window closed)\n", err.toString());
         assertFalse(out.toString().contains("wrote"), out::toString);
     }
 

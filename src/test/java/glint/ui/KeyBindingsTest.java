@@ -40,8 +40,9 @@ class KeyBindingsTest {
             if (b.action().kind() == Action.Kind.POINTER) {
                 assertTrue(b.keyCodes().isEmpty() && b.chars().isEmpty());
             } else {
-                assertTrue(!b.keyCodes().isEmpty() || !b.chars().isEmpty() || b.keys().startsWith("Shift + "),
-                        "no key for " + b.action()); // a Shift combination is told apart by the listener
+                assertTrue(!b.keyCodes().isEmpty() || !b.chars().isEmpty() || b.keys().startsWith("Shift + ")
+                        || b.meaning().startsWith("a still under way: "), "no key for " + b.action());
+                // a Shift combination, and a key while the overlay says a still is under way, the listener tells apart
             }
         }
     }

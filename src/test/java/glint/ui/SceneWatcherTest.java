@@ -139,6 +139,99 @@ class SceneWatcherTest {
         }
     }
 
+    /** Version {@code n} of a scene whose versions differ only near the end: their first halves are the same bytes. */
+    private static String version(int n) {
+        return TestScenes.sphere(0.5, 0.5, 0.5) + String.format(java.util.Locale.ROOT,
+                "  - {type: sphere, center: [2, 1, 0], radius: %.3f}%n", 0.5 + n / 1000.0);
+    }
+
+    /** Truncates the file and writes the first half of {@code text}, then, {@code pauseMillis} later, the rest. */
+    private void saveInTwoHalves(String text, long pauseMillis) throws Exception {
+        byte[] bytes = text.getBytes(StandardCharsets.UTF_8);
+        int half = bytes.length / 2; // mid-line: a YAML error
+        try (OutputStream out = Files.newOutputStream(file)) {
+            out.write(bytes, 0, half);
+            out.flush();
+            Thread.sleep(pauseMillis); // the writer's own pace, as the user's editor or copy goes
+            out.write(bytes, half, bytes.length - half);
+        }
+    }
+
+    /**
+     * Two reads a period apart can find the same bytes while the file keeps changing: the first half of one
+     * save and the first half of a later one, when the saves differ only after the middle. The file's
+     * modification time tells them apart, so that half is not loaded.
+     */
+    @Test
+    void theSameHalfOfTwoSavesIsNotTakenForAFileThatStayedTheSame() throws Exception {
+        watcher.listen(recorder);
+        String half = version(1).substring(0, version(1).getBytes(StandardCharsets.UTF_8).length / 2);
+        assertTrue(version(2).startsWith(half), "the two saves' first halves are the same bytes");
+        Files.writeString(file, half);
+        watcher.poll(); // the first save's half
+        Thread.sleep(30); // the saves' own pace
+        Files.writeString(file, version(1));
+        Thread.sleep(10);
+        Files.writeString(file, half); // the next save has written its first half, the same bytes...
+        watcher.poll(); // ... when the watcher reads again
+        assertEquals(List.of(), recorder.reports(), "nothing loaded: the file changed between the two reads");
+        Files.writeString(file, version(2));
+        watcher.poll();
+        watcher.poll();
+        List<Object> reports = recorder.reports();
+        assertEquals(1, reports.size(), reports.toString());
+        assertEquals(3, ((Scene) reports.get(0)).objects().size(), "the last save, whole");
+    }
+
+    /** 50 valid saves in 2 s, each written in two halves 30 ms apart: never an error, and the last one loads. */
+    @Test
+    void fiftySavesInTwoSecondsEachInTwoHalvesNeverShowAHalfFile() throws Exception {
+        watcher.start(recorder);
+        for (int n = 1; n <= 50; n++) {
+            saveInTwoHalves(version(n), 30);
+            Thread.sleep(10);
+        }
+        Poll.until(() -> !recorder.reports().isEmpty() && recorder.reports().get(recorder.reports().size() - 1)
+                instanceof Scene last && last.objects().size() == 3, 5_000, () -> "the last save loaded: "
+                + recorder.reports());
+        for (Object report : recorder.reports()) {
+            assertTrue(report instanceof Scene, () -> "only whole saves reported: " + recorder.reports());
+        }
+        List<Object> reports = recorder.reports();
+        String lastRadius = String.valueOf(((Scene) reports.get(reports.size() - 1)).objects().get(2));
+        assertTrue(lastRadius.contains("0.55"), lastRadius);
+    }
+
+    /** Memory running out on the watcher's thread (here, in what it reports to) does not end the watching. */
+    @Test
+    void theWatcherGoesOnAfterMemoryRanOutOnItsThread() throws Exception {
+        boolean[] thrown = {false};
+        watcher.start(new SceneWatcher.Listener() {
+            @Override
+            public void loaded(Scene scene) {
+                synchronized (thrown) {
+                    if (!thrown[0]) {
+                        thrown[0] = true;
+                        throw new OutOfMemoryError("Java heap space");
+                    }
+                }
+                recorder.loaded(scene);
+            }
+
+            @Override
+            public void failed(InputException error) {
+                recorder.failed(error);
+            }
+        });
+        TestScenes.replace(file, TestScenes.sphere(0.7, 0.5, 0.5));
+        Poll.until(() -> !recorder.reports().isEmpty(), 5_000, "the failure reported");
+        assertEquals(file + ": cannot watch: java.lang.OutOfMemoryError: Java heap space",
+                ((InputException) recorder.reports().get(0)).getMessage());
+        TestScenes.replace(file, TestScenes.sphere(0.3, 0.5, 0.5));
+        Poll.until(() -> recorder.reports().size() >= 2, 5_000, () -> "the next save loaded: " + recorder.reports());
+        assertEquals(0.3, ((Scene) recorder.reports().get(1)).background().x(), 1e-12);
+    }
+
     @Test
     void theSceneIsReadWithinTheSourcesLimits() throws IOException {
         watcher.listen(recorder);

@@ -56,9 +56,12 @@ class WindowStudioTest {
     }
 
     private void open(int samples) throws Exception {
-        scene = Files.writeString(dir.resolve("ball.yaml"), TestScenes.sphere(0.1, 0.2, 0.3));
+        open(Config.defaults().withSize(W, H).withSamples(samples).withThreads(2), TestScenes.sphere(0.1, 0.2, 0.3));
+    }
+
+    private void open(Config config, String sceneText) throws Exception {
+        scene = Files.writeString(dir.resolve("ball.yaml"), sceneText);
         shots = Files.createDirectories(dir.resolve("shots"));
-        Config config = Config.defaults().withSize(W, H).withSamples(samples).withThreads(2);
         window = GlintWindow.open(config, new SceneSource(scene, () -> config), new Screenshots(shots),
                 new PrintWriter(err, true));
         window.engine().printTo(new PrintWriter(out, true));
@@ -182,6 +185,84 @@ class WindowStudioTest {
         assertEquals(0, window.awaitExit());
         window = null;
         assertEquals(List.of(), files(), "no image and no hidden part file");
+        assertFalse(out.toString().contains("wrote"), out::toString);
+    }
+
+    /**
+     * Enter, Enter, Enter, 100 ms apart, as a new user tries it: start, cancel, start. The still is one tile
+     * (screen_divider=1) of seconds, still being traced after the cancel; the third Enter starts a new still
+     * all the same, and it is written.
+     */
+    @Test
+    void threeEntersAHundredMillisecondsApartStartCancelAndStartAStillThatIsWritten() throws Exception {
+        open(Config.defaults().withSize(W, H).withSamples(1).withThreads(2).withScreenDivider(1),
+                TestScenes.sphere(0.1, 0.2, 0.3) + "render: {samples: 256}\n");
+        Poll.until(() -> window.display().shown().stats().refined(), 30_000, "refined");
+        tap(KeyEvent.VK_ENTER);
+        Thread.sleep(100); // the user's pace
+        tap(KeyEvent.VK_ENTER);
+        Thread.sleep(100);
+        tap(KeyEvent.VK_ENTER);
+        awaitMessage("still: wrote ", 120_000);
+        List<Path> written = files();
+        assertEquals(1, written.size(), written::toString);
+        assertEquals(1, out.toString().split("still: wrote ", -1).length - 1, out::toString);
+    }
+
+    /**
+     * Esc while the overlay says a still is under way never quits: here the overlay says so (a frame handed
+     * to the display as the engine would) while no still runs, as when one ends just before the key.
+     */
+    @Test
+    void escWhileTheOverlaySaysAStillIsUnderWayNeverQuits() throws Exception {
+        open(1);
+        Poll.until(() -> window.display().shown().stats().refined(), 30_000, "refined");
+        ShownFrame shown = window.display().shown();
+        FrameStats s = shown.stats();
+        window.display().present(new ShownFrame(shown.image(), new FrameStats(s.fps(), s.msPerFrame(),
+                s.renderWidth(), s.renderHeight(), s.viewWidth(), s.viewHeight(), s.samplesDone(), s.samplesTotal(),
+                s.moving(), s.threads(), s.shading(), s.depth(), s.speed(), s.scene(),
+                "still: rendering 99 % (Enter or Esc cancels)", s.error(), s.sizeLimit(), s.renderError()),
+                shown.serial()));
+        tap(KeyEvent.VK_ESCAPE);
+        tap(KeyEvent.VK_M); // a key after it: once the engine says so, the Esc was taken
+        awaitMessage("shading phong", 10_000);
+        assertTrue(window.engineAlive(), "Esc cancelled what the overlay showed; the window stays");
+        assertEquals(List.of(), files(), "and started nothing");
+    }
+
+    /** A 3840x2160 still (the scene's render: block): Esc while its PNG is written stops the write; nothing is left. */
+    @Test
+    void escWhileALargeStillIsWrittenStopsTheWriteAndLeavesNothing() throws Exception {
+        open(Config.defaults().withSize(W, H).withSamples(1).withThreads(2),
+                TestScenes.sphere(0.1, 0.2, 0.3) + "render: {width: 3840, height: 2160}\n");
+        tap(KeyEvent.VK_ENTER);
+        awaitMessage("still: writing ", 60_000);
+        tap(KeyEvent.VK_ESCAPE);
+        awaitMessage("still: cancelled, nothing written", 10_000);
+        assertEquals(List.of(), files(), "no image, no hidden file");
+        assertTrue(window.engineAlive(), "Esc cancelled the still; the window stays");
+        window.close();
+        assertEquals(0, window.awaitExit());
+        window = null;
+        assertEquals(List.of(), files());
+        assertFalse(out.toString().contains("wrote"), out::toString);
+    }
+
+    /** Closing the window while a 3840x2160 PNG is written: the write stops, nothing is left, and standard error says so. */
+    @Test
+    void closingTheWindowWhileALargeStillIsWrittenLeavesNothingAndSaysSo() throws Exception {
+        open(Config.defaults().withSize(W, H).withSamples(1).withThreads(2),
+                TestScenes.sphere(0.1, 0.2, 0.3) + "render: {width: 3840, height: 2160}\n");
+        tap(KeyEvent.VK_ENTER);
+        awaitMessage("still: writing ", 60_000);
+        SwingUtilities.invokeAndWait(() -> window.frame().dispatchEvent(
+                new WindowEvent(window.frame(), WindowEvent.WINDOW_CLOSING)));
+        assertEquals(0, window.awaitExit());
+        window = null;
+        assertEquals(List.of(), files(), "no image and no hidden file");
+        assertTrue(err.toString().contains("glint: still cancelled, nothing written (the window closed)\n"),
+                err::toString);
         assertFalse(out.toString().contains("wrote"), out::toString);
     }
 
