@@ -17,4 +17,8 @@ for scene in scenes/*.yaml; do
     java -jar target/glint.jar --config "$config" --scene "$scene" --output "docs/images/gallery/$name.png"
     count=$((count + 1))
 done
+# the default scene again with light that bounces: the path integrator at 256 samples per pixel
+java -jar target/glint.jar --config "$config" --scene scenes/default.yaml --integrator path --spp 256 \
+    --output docs/images/gallery/default-path.png
+count=$((count + 1))
 echo "gallery: $count pictures in $(($(date +%s) - start)) s"
