@@ -15,7 +15,7 @@ import org.snakeyaml.engine.v2.parser.Parser;
  * mapping beyond the most allowed, with where it stands: the composer counts them as well (an alias
  * bomb's copies grow exponentially), but says only that there are too many.
  */
-final class AliasCountingParser implements Parser {
+final class AliasCountingParser extends CheckingParser {
 
     /** The first alias too many, with where it stands; thrown through the composer. */
     static final class TooManyAliases extends RuntimeException {
@@ -29,35 +29,18 @@ final class AliasCountingParser implements Parser {
         }
     }
 
-    private final Parser parser;
     private final int most;
     /** The anchors that name a list or a mapping (as last defined). */
     private final Set<Anchor> collections = new HashSet<>();
     private int aliases;
 
     AliasCountingParser(Parser parser, int most) {
-        this.parser = parser;
+        super(parser);
         this.most = most;
     }
 
     @Override
-    public boolean checkEvent(Event.ID id) {
-        return parser.checkEvent(id);
-    }
-
-    @Override
-    public Event peekEvent() {
-        return parser.peekEvent();
-    }
-
-    @Override
-    public boolean hasNext() {
-        return parser.hasNext();
-    }
-
-    @Override
-    public Event next() {
-        Event event = parser.next();
+    void check(Event event) {
         if (event instanceof CollectionStartEvent c) {
             c.getAnchor().ifPresent(collections::add);
         } else if (event instanceof ScalarEvent s) {
@@ -66,6 +49,5 @@ final class AliasCountingParser implements Parser {
             Mark mark = a.getStartMark().orElse(null);
             throw mark == null ? new TooManyAliases(0, 0) : new TooManyAliases(mark.getLine() + 1, mark.getColumn() + 1);
         }
-        return event;
     }
 }

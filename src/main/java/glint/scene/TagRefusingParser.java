@@ -12,7 +12,7 @@ import org.snakeyaml.engine.v2.parser.Parser;
  * ({@code !!str 1}, {@code !foo x}): a scene has no use for tags, and silently ignoring one would
  * make {@code radius: !!str 1} a number though {@code radius: "1"} is refused.
  */
-final class TagRefusingParser implements Parser {
+final class TagRefusingParser extends CheckingParser {
 
     /** The first tag, with where it stands; thrown through the composer. */
     static final class TagFound extends RuntimeException {
@@ -30,30 +30,12 @@ final class TagRefusingParser implements Parser {
 
     private static final String CORE_PREFIX = "tag:yaml.org,2002:";
 
-    private final Parser parser;
-
     TagRefusingParser(Parser parser) {
-        this.parser = parser;
+        super(parser);
     }
 
     @Override
-    public boolean checkEvent(Event.ID id) {
-        return parser.checkEvent(id);
-    }
-
-    @Override
-    public Event peekEvent() {
-        return parser.peekEvent();
-    }
-
-    @Override
-    public boolean hasNext() {
-        return parser.hasNext();
-    }
-
-    @Override
-    public Event next() {
-        Event event = parser.next();
+    void check(Event event) {
         Optional<String> tag = event instanceof ScalarEvent s ? s.getTag()
                 : event instanceof CollectionStartEvent c ? c.getTag() : Optional.empty();
         if (tag.isPresent()) {
@@ -63,6 +45,5 @@ final class TagRefusingParser implements Parser {
             throw mark == null ? new TagFound(written, 0, 0)
                     : new TagFound(written, mark.getLine() + 1, mark.getColumn() + 1);
         }
-        return event;
     }
 }
