@@ -23,10 +23,7 @@ public record ImageErrors(double relMse, double ssim, double flip, double levels
 
     /** The mean absolute difference of the two images in 8-bit sRGB levels (clamped, encoded, x 255). */
     public static double meanLevels(FrameBuffer rendered, FrameBuffer reference) {
-        if (rendered.width() != reference.width() || rendered.height() != reference.height()) {
-            throw new IllegalArgumentException("image sizes differ: " + rendered.width() + "x" + rendered.height()
-                    + " vs " + reference.width() + "x" + reference.height());
-        }
+        RelativeMse.requireSameSize(rendered, reference);
         float[] a = rendered.rgb(), r = reference.rgb();
         double sum = 0;
         for (int i = 0; i < a.length; i++) {

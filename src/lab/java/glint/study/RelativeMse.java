@@ -12,10 +12,7 @@ public final class RelativeMse {
     }
 
     public static double of(FrameBuffer rendered, FrameBuffer reference) {
-        if (rendered.width() != reference.width() || rendered.height() != reference.height()) {
-            throw new IllegalArgumentException("image sizes differ: " + rendered.width() + "x" + rendered.height()
-                    + " vs " + reference.width() + "x" + reference.height());
-        }
+        requireSameSize(rendered, reference);
         float[] a = rendered.rgb(), r = reference.rgb();
         double sum = 0;
         for (int i = 0; i < a.length; i++) {
@@ -23,5 +20,13 @@ public final class RelativeMse {
             sum += diff * diff / ((double) r[i] * r[i] + 0.01);
         }
         return sum / a.length;
+    }
+
+    /** Refuses two images of different sizes, which no error compares. */
+    static void requireSameSize(FrameBuffer rendered, FrameBuffer reference) {
+        if (rendered.width() != reference.width() || rendered.height() != reference.height()) {
+            throw new IllegalArgumentException("image sizes differ: " + rendered.width() + "x" + rendered.height()
+                    + " vs " + reference.width() + "x" + reference.height());
+        }
     }
 }

@@ -35,9 +35,6 @@ final class PathIntegrator extends Integrator {
     private final Rgb radiance = new Rgb();
     private final PathSamples random = new PathSamples();
 
-    /** Paths whose radiance came out NaN or infinite and were counted as black. */
-    private long nonFinite;
-
     @Override
     void prepared(RenderSettings settings) {
     }
@@ -56,8 +53,7 @@ final class PathIntegrator extends Integrator {
         }
         primitives.record(hit, primitive, t);
         follow(ox, oy, oz, dx, dy, dz, hitsLeft);
-        if (!Double.isFinite(radiance.r + radiance.g + radiance.b)) {
-            nonFinite++;
+        if (!Double.isFinite(radiance.r + radiance.g + radiance.b)) { // counted as black
             radiance.set(0, 0, 0);
         }
         return radiance;
@@ -122,10 +118,5 @@ final class PathIntegrator extends Integrator {
             }
         }
         radiance.set(sumR, sumG, sumB);
-    }
-
-    /** Paths whose radiance was not finite and counted as black, so far. */
-    long nonFinitePaths() {
-        return nonFinite;
     }
 }

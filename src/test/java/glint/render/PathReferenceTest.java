@@ -7,8 +7,9 @@ import glint.config.Config;
 import glint.config.LightTransport;
 import glint.config.Shading;
 import glint.image.PfmReader;
-import glint.image.Srgb;
 import glint.scene.SceneLoader;
+import glint.study.ImageErrors;
+import glint.study.RelativeMse;
 import java.nio.file.Path;
 import org.junit.jupiter.params.ParameterizedTest;
 import org.junit.jupiter.params.provider.CsvSource;
@@ -37,25 +38,11 @@ class PathReferenceTest {
             tracer.render(RenderScene.compile(SceneLoader.load(folder.resolve(name + ".yaml")), settings), frame, 256, 0,
                     defaults.screenDivider());
         }
-        double relMse = ReferenceImageTest.relativeMse(frame, reference);
-        double levels = meanLevels(frame, reference);
+        double relMse = RelativeMse.of(frame, reference);
+        double levels = ImageErrors.meanLevels(frame, reference);
         System.out.printf("reference-pt %s: relMSE %.3e (bound %.1e), 8-bit %.3f (bound %.2f)%n", name, relMse,
                 relMseBound, levels, levelsBound);
         assertTrue(relMse <= relMseBound, name + ": relMSE " + relMse + " exceeds " + relMseBound);
         assertTrue(levels <= levelsBound, name + ": mean 8-bit error " + levels + " exceeds " + levelsBound);
-    }
-
-    /** The mean over pixels and channels of |a - r| after clamping to [0, 1] and sRGB encoding, in 1/255. */
-    static double meanLevels(FrameBuffer rendered, FrameBuffer reference) {
-        float[] a = rendered.rgb(), r = reference.rgb();
-        double sum = 0;
-        for (int i = 0; i < a.length; i++) {
-            sum += Math.abs(Srgb.encode(clamp(a[i])) - Srgb.encode(clamp(r[i])));
-        }
-        return 255 * sum / a.length;
-    }
-
-    private static double clamp(double v) {
-        return Math.max(0, Math.min(1, v));
     }
 }

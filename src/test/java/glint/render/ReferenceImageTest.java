@@ -8,6 +8,7 @@ import glint.config.Shading;
 import glint.image.PfmReader;
 import glint.scene.Scene;
 import glint.scene.SceneLoader;
+import glint.study.RelativeMse;
 import java.nio.file.Path;
 import org.junit.jupiter.params.ParameterizedTest;
 import org.junit.jupiter.params.provider.CsvSource;
@@ -33,19 +34,8 @@ class ReferenceImageTest {
         try (Tracer tracer = new Tracer(2)) {
             tracer.render(RenderScene.compile(scene, settings), frame, 16, 0, defaults.screenDivider());
         }
-        double relmse = relativeMse(frame, reference);
+        double relmse = RelativeMse.of(frame, reference);
         System.out.printf("reference %s: relmse %.3e (bound %.1e)%n", name, relmse, bound);
         assertTrue(relmse <= bound, name + ": relmse " + relmse + " exceeds " + bound);
-    }
-
-    /** Mean over pixels and channels of (a - r)^2 / (r^2 + 0.01). */
-    static double relativeMse(FrameBuffer rendered, FrameBuffer reference) {
-        float[] a = rendered.rgb(), r = reference.rgb();
-        double sum = 0;
-        for (int i = 0; i < a.length; i++) {
-            double diff = a[i] - r[i];
-            sum += diff * diff / ((double) r[i] * r[i] + 0.01);
-        }
-        return sum / a.length;
     }
 }
