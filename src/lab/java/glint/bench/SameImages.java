@@ -11,7 +11,8 @@ import java.util.List;
 import java.util.Locale;
 
 /**
- * Whether two builds of Glint render the same images: each scene, under both shading models, is
+ * Whether two builds of Glint render the same images: each scene, by Whitted's integrator under both
+ * shading models and by the path integrator, is
  * written as a PFM by each build (loaded in a class loader of its own, as {@link CompareBuilds}
  * does) and the two files compared: the same bytes, or else the relative mean square error of the
  * reference images' README.
@@ -19,11 +20,13 @@ import java.util.Locale;
  * <p>Usage, from the repository root: {@code java -cp target/benchmarks.jar glint.bench.SameImages
  * A.jar B.jar [--size WxH] [--spp N] [--depth D] [--config FILE] [--tolerance E] SCENE...} (default
  * 320x240, 4 samples a pixel, depth 8, ./config.properties, tolerance 0). Prints a line a scene and
- * model; exits 1 when a pair's relative mean square error is above the tolerance.
+ * method; exits 1 when a pair's relative mean square error is above the tolerance.
  */
 public final class SameImages {
 
-    private static final String[] MODELS = {"cook-torrance", "phong"};
+    /** Each integrator with each shading model it takes: Whitted's with both, the path with cook-torrance. */
+    private static final String[][] METHODS = {{"whitted", "cook-torrance"}, {"whitted", "phong"},
+            {"path", "cook-torrance"}};
 
     private SameImages() {
     }
@@ -45,9 +48,9 @@ public final class SameImages {
         Path folder = Files.createTempDirectory("same-images");
         boolean allWithin = true;
         for (String scene : rest.subList(2, rest.size())) {
-            for (String model : MODELS) {
+            for (String[] method : METHODS) {
                 List<String> render = new ArrayList<>(List.of("--scene", scene, "--width", size[0], "--height",
-                        size[1], "--spp", spp, "--depth", depth, "--shading", model));
+                        size[1], "--spp", spp, "--depth", depth, "--integrator", method[0], "--shading", method[1]));
                 if (config != null) {
                     render.addAll(List.of("--config", config));
                 }
@@ -55,7 +58,7 @@ public final class SameImages {
                 Path imageB = write(b, render, folder.resolve("b.pfm"));
                 double error = relativeMse(imageA, imageB);
                 allWithin &= error <= tolerance;
-                System.out.println(scene + ", " + model + ": " + verdict(imageA, imageB, error));
+                System.out.println(scene + ", " + method[0] + " " + method[1] + ": " + verdict(imageA, imageB, error));
             }
         }
         try (var files = Files.list(folder)) {
