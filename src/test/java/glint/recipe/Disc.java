@@ -3,7 +3,7 @@ package glint.recipe;
 import glint.geometry.DiscKind;
 import glint.math.Vector3d;
 import glint.scene.Shape;
-import glint.scene.ShapeType;
+import glint.registry.ShapeType;
 import java.util.List;
 
 /**

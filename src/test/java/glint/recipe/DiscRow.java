@@ -3,9 +3,9 @@ package glint.recipe;
 import glint.geometry.DiscKind;
 import glint.input.InputException;
 import glint.math.Vector3d;
-import glint.scene.Fields;
+import glint.registry.Fields;
 import glint.scene.Shape;
-import glint.scene.ShapeType;
+import glint.registry.ShapeType;
 import java.util.List;
 
 /**

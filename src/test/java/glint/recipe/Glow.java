@@ -1,13 +1,14 @@
 package glint.recipe;
 
 import glint.math.Vector3d;
-import glint.scene.MaterialType;
+import glint.registry.MaterialType;
 import glint.shading.Bsdf;
 import glint.shading.BsdfSample;
 import glint.shading.Materials;
 import glint.shading.Rgb;
 import glint.shading.Surface;
 import glint.shading.PathVertex;
+import java.util.List;
 
 /**
  * A material type added by the recipe of docs/architecture.md, in test sources only: a surface
@@ -16,7 +17,7 @@ import glint.shading.PathVertex;
 final class Glow implements Bsdf {
 
     /** {@code {type: glow, color: [r, g, b]}}; its preset glows white. */
-    static final MaterialType TYPE = new MaterialType("glow", new Glow(), Vector3d.ONE, 0, 0, 0, 1);
+    static final MaterialType TYPE = new MaterialType("glow", List.of(), new Glow(), Vector3d.ONE, 0, 0, 0, 1);
 
     @Override
     public boolean emits() {

@@ -5,7 +5,7 @@ import static org.junit.jupiter.api.Assertions.assertTrue;
 
 import glint.render.FrameBuffer;
 import glint.render.Renders;
-import glint.scene.Registry;
+import glint.registry.Registry;
 import org.junit.jupiter.api.Test;
 
 /** The primitive-kind recipe followed in test sources: a disc read, compiled and rendered. */

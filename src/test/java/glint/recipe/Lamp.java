@@ -1,7 +1,7 @@
 package glint.recipe;
 
 import glint.scene.Light;
-import glint.scene.LightType;
+import glint.registry.LightType;
 import glint.math.Vector3d;
 import glint.shading.LightSample;
 import glint.shading.LightSampler;

@@ -3,7 +3,7 @@ package glint.recipe;
 import static org.junit.jupiter.api.Assertions.assertEquals;
 
 import glint.render.FrameBuffer;
-import glint.scene.Registry;
+import glint.registry.Registry;
 import org.junit.jupiter.api.Test;
 
 /** The material recipe followed in test sources: a glowing material read, compiled and rendered. */
