@@ -5,7 +5,7 @@ package glint.geometry;
  * A kind is its bounds, its intersection and its surface at a hit, and for a closed kind a bounding
  * ball and which balls it reaches into (so that empty insides are found). The aggregates
  * ({@link Aggregate}) and the shading see primitives only through this interface, so adding a kind
- * means a class like {@link SphereKind} and a line in the scene compiler (docs/architecture.md).
+ * means a class like {@link SphereKind} and its registration (docs/architecture.md).
  */
 public interface PrimitiveKind {
 

@@ -34,7 +34,8 @@ public final class MaterialType {
     public MaterialType(String name, List<String> physicalKeys, Bsdf bsdf, Vector3d color, double kd, double ks,
                         double kt, double shininess) {
         if (!PHYSICAL_KEYS.containsAll(physicalKeys)) {
-            throw new IllegalArgumentException("a material has no " + physicalKeys + " beyond " + PHYSICAL_KEYS);
+            throw new IllegalArgumentException("material type " + name + " reads " + physicalKeys
+                    + ", but a material's physical parameters are " + PHYSICAL_KEYS);
         }
         List<String> all = new ArrayList<>(COMMON_KEYS);
         all.addAll(physicalKeys);

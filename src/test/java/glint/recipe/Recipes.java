@@ -2,11 +2,11 @@ package glint.recipe;
 
 import glint.config.Shading;
 import glint.input.InputException;
+import glint.registry.Registry;
 import glint.render.FrameBuffer;
 import glint.render.RenderScene;
 import glint.render.RenderSettings;
 import glint.render.Tracer;
-import glint.registry.Registry;
 import glint.scene.Scene;
 import glint.scenefile.SceneLimits;
 import glint.scenefile.SceneLoader;
