@@ -2,7 +2,7 @@ package glint.bench;
 
 import glint.input.InputException;
 import glint.render.FrameBuffer;
-import glint.scene.SceneLoader;
+import glint.scenefile.SceneLoader;
 import java.util.concurrent.TimeUnit;
 import org.openjdk.jmh.annotations.Benchmark;
 import org.openjdk.jmh.annotations.BenchmarkMode;

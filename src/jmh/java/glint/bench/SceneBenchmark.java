@@ -3,7 +3,7 @@ package glint.bench;
 import glint.config.LightTransport;
 import glint.input.InputException;
 import glint.render.FrameBuffer;
-import glint.scene.SceneLoader;
+import glint.scenefile.SceneLoader;
 import java.nio.file.Path;
 import java.util.concurrent.TimeUnit;
 import org.openjdk.jmh.annotations.Benchmark;

@@ -8,7 +8,7 @@ import glint.render.RenderScene;
 import glint.render.RenderSettings;
 import glint.render.Tracer;
 import glint.scene.Scene;
-import glint.scene.SceneLoader;
+import glint.scenefile.SceneLoader;
 
 /**
  * Every sample of every pixel of a path-traced render, one at a time: pass p of a pixel's n samples

@@ -2,7 +2,7 @@ package glint.study;
 
 import glint.input.InputException;
 import glint.scene.Scene;
-import glint.scene.SceneLoader;
+import glint.scenefile.SceneLoader;
 import java.io.IOException;
 import java.nio.file.Files;
 import java.nio.file.Path;

@@ -7,7 +7,7 @@ import glint.render.RenderScene;
 import glint.render.RenderSettings;
 import glint.render.Tracer;
 import glint.scene.Scene;
-import glint.scene.SceneLoader;
+import glint.scenefile.SceneLoader;
 import java.nio.file.Path;
 import java.util.Arrays;
 import java.util.Locale;

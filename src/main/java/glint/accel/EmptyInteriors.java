@@ -1,7 +1,6 @@
 package glint.accel;
 
 import glint.geometry.Primitives;
-import glint.geometry.PlaneKind;
 import glint.geometry.PrimitiveKind;
 import glint.geometry.Hit;
 import java.util.Arrays;
@@ -70,7 +69,8 @@ public final class EmptyInteriors extends AggregateFilter {
 
     /**
      * As {@link #findEmpty(Primitives)}, adding to {@code pairs[0]} the number of pairs it looked at;
-     * each plane is asked of groups of the primitives still empty ({@link Groups}) once planes times
+     * each plane (an unbounded primitive whose kind {@link PrimitiveKind#reachesIntoWithinRounding}) is
+     * asked of groups of the primitives still empty ({@link Groups}) once planes times
      * those primitives are more than {@link AggregatePolicy#EMPTY_PLANE_PAIRS_ONE_BY_ONE}.
      */
     static boolean[] findEmpty(Primitives p, long[] pairs) {
@@ -112,7 +112,7 @@ public final class EmptyInteriors extends AggregateFilter {
         int[] unbounded = p.unbounded();
         Groups groups = null;
         for (int u : unbounded) {
-            if (groups == null && p.kind(p.kindOf(u)) instanceof PlaneKind) {
+            if (groups == null && p.kind(p.kindOf(u)).reachesIntoWithinRounding()) {
                 int left = 0;
                 for (int j = still.from(0); j < bounded; j = still.from(j + 1)) {
                     left++;
@@ -121,7 +121,7 @@ public final class EmptyInteriors extends AggregateFilter {
                     groups = new Groups(p, sorted, still, left);
                 }
             }
-            if (groups != null && p.kind(p.kindOf(u)) instanceof PlaneKind) {
+            if (groups != null && p.kind(p.kindOf(u)).reachesIntoWithinRounding()) {
                 groups.markReachedBy(p, u, 0, ball, empty, still, pairs);
                 continue;
             }

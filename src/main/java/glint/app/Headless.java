@@ -12,7 +12,7 @@ import glint.render.RenderScene;
 import glint.render.RenderSettings;
 import glint.render.Tracer;
 import glint.scene.Scene;
-import glint.scene.SceneLoader;
+import glint.scenefile.SceneLoader;
 import java.io.IOException;
 import java.io.InterruptedIOException;
 import java.io.PrintWriter;

@@ -5,7 +5,7 @@ import glint.config.JarCommand;
 import glint.config.Flags;
 import glint.input.InputException;
 import glint.scene.Scene;
-import glint.scene.SceneLoader;
+import glint.scenefile.SceneLoader;
 import glint.ui.ConfigSource;
 import glint.ui.GlintWindow;
 import glint.ui.SceneSource;

@@ -1,6 +1,6 @@
 package glint.config;
 
-import glint.scene.SceneLimits;
+import glint.scenefile.SceneLimits;
 
 /**
  * Safety limits, so that a mistaken size or a hostile file is refused up front with a message

@@ -70,4 +70,10 @@ public final class PlaneKind implements PrimitiveKind {
     public boolean closed() {
         return false;
     }
+
+    /** Its test is one dot product against the ball's radius. */
+    @Override
+    public boolean reachesIntoWithinRounding() {
+        return true;
+    }
 }

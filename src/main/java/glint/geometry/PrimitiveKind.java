@@ -5,7 +5,7 @@ package glint.geometry;
  * A kind is its bounds, its intersection and its surface at a hit, and for a closed kind a bounding
  * ball and which balls it reaches into (so that empty insides are found). The aggregates
  * ({@link Aggregate}) and the shading see primitives only through this interface, so adding a kind
- * means a class like {@link SphereKind} and a line in the scene compiler (docs/architecture.md).
+ * means a class like {@link SphereKind} and its registration (docs/architecture.md).
  */
 public interface PrimitiveKind {
 
@@ -84,4 +84,15 @@ public interface PrimitiveKind {
      * the outer side never meets the primitive it leaves (every kind is convex or flat).
      */
     boolean closed();
+
+    /**
+     * Whether {@link #reachesInto} errs by less than 1e-9 of a ball's radius and of its distance from
+     * the origin, as a plane's single test |n.c - d| < r does: then its answer for a ball widened by
+     * that much around a group of balls holds for each of them, and the scene compiler asks an
+     * unbounded primitive of such a kind about groups of closed primitives before asking each
+     * ({@code EmptyInteriors}). False by default: each is asked.
+     */
+    default boolean reachesIntoWithinRounding() {
+        return false;
+    }
 }

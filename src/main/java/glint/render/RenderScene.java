@@ -5,15 +5,15 @@ import glint.accel.Aggregate;
 import glint.accel.AggregatePolicy;
 import glint.geometry.Primitives;
 import glint.geometry.PrimitiveKind;
+import glint.registry.LightType;
+import glint.registry.Registry;
+import glint.registry.ShapeType;
 import glint.scene.Camera;
 import glint.scene.Light;
-import glint.scene.LightType;
 import glint.scene.Material;
-import glint.scene.Registry;
 import glint.scene.Scene;
 import glint.scene.SceneObject;
 import glint.scene.Shape;
-import glint.scene.ShapeType;
 import glint.shading.Lights;
 import glint.shading.Materials;
 import java.util.ArrayList;
@@ -60,7 +60,7 @@ public final class RenderScene {
         for (int p = 0; p < materialOf.length; p++) {
             materialOf[p] = indexOf(materialList, inOrder.get(p).material());
         }
-        materials = Materials.of(materialList.stream().map(RenderScene::parameters).toList(),
+        materials = Materials.of(materialList.stream().map(m -> parameters(registry, m)).toList(),
                 settings.glassFresnel() == RenderSettings.GlassFresnel.EXACT);
         shadowPass = new double[materialOf.length];
         for (int p = 0; p < materialOf.length && settings.shading() == Shading.PHONG; p++) {
@@ -162,8 +162,8 @@ public final class RenderScene {
         return kinds;
     }
 
-    private static Materials.Parameters parameters(Material m) {
-        return new Materials.Parameters(m.type().bsdf(), m.color(), m.kd(), m.ks(), m.kt(), m.shininess(), m.ior(),
+    private static Materials.Parameters parameters(Registry registry, Material m) {
+        return new Materials.Parameters(registry.material(m.type()).bsdf(), m.color(), m.kd(), m.ks(), m.kt(), m.shininess(), m.ior(),
                 m.roughness());
     }
 

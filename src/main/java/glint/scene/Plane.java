@@ -1,26 +1,7 @@
 package glint.scene;
 
-import glint.geometry.PlaneKind;
 import glint.math.Vector3d;
-import java.util.List;
 
 /** An infinite two-sided plane through {@code point} with unit {@code normal}. */
 public record Plane(Vector3d point, Vector3d normal) implements Shape {
-
-    /** {@code {type: plane, point: [x, y, z], normal: [x, y, z]}}, compiled to a {@link PlaneKind}. */
-    public static final ShapeType<Plane> TYPE = new ShapeType<>("plane", Plane.class, List.of("point", "normal"),
-            fields -> new Plane(fields.vector("point"), fields.direction("normal")), Plane::compile);
-
-    private static PlaneKind compile(List<Plane> planes) {
-        double[] data = new double[4 * planes.size()];
-        for (int i = 0; i < planes.size(); i++) {
-            Plane p = planes.get(i);
-            int at = 4 * i; // unit normal, normal . point
-            data[at] = p.normal.x();
-            data[at + 1] = p.normal.y();
-            data[at + 2] = p.normal.z();
-            data[at + 3] = p.normal.dot(p.point);
-        }
-        return new PlaneKind(data);
-    }
 }

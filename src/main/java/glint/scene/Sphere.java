@@ -1,26 +1,7 @@
 package glint.scene;
 
-import glint.geometry.SphereKind;
 import glint.math.Vector3d;
-import java.util.List;
 
 /** A sphere; its normal points outward. */
 public record Sphere(Vector3d center, double radius) implements Shape {
-
-    /** {@code {type: sphere, center: [x, y, z], radius: r}}, compiled to a {@link SphereKind}. */
-    public static final ShapeType<Sphere> TYPE = new ShapeType<>("sphere", Sphere.class, List.of("center", "radius"),
-            fields -> new Sphere(fields.vector("center"), fields.length("radius")), Sphere::compile);
-
-    private static SphereKind compile(List<Sphere> spheres) {
-        double[] data = new double[4 * spheres.size()];
-        for (int i = 0; i < spheres.size(); i++) {
-            Sphere s = spheres.get(i);
-            int at = 4 * i; // centre, radius
-            data[at] = s.center.x();
-            data[at + 1] = s.center.y();
-            data[at + 2] = s.center.z();
-            data[at + 3] = s.radius;
-        }
-        return new SphereKind(data);
-    }
 }

@@ -5,7 +5,7 @@ package glint.shading;
  * a direction sampled with its weight and density ({@link #sample}, {@link #pdf}), and whether its
  * lobes are delta ({@link #isDelta}); for Whitted's integrator besides, the single rays its lobes
  * are followed along ({@link #specular}). It only answers: the integrators own the light loop, the
- * depth and the rays. One per material type ({@code glint.scene.MaterialType}): {@link Lambert},
+ * depth and the rays. One per material type ({@code glint.registry.MaterialType}): {@link Lambert},
  * {@link Conductor}, {@link Dielectric}.
  */
 public interface Bsdf {

@@ -3,7 +3,7 @@ package glint.ui;
 import glint.input.InputException;
 import glint.math.Vector3d;
 import glint.scene.Camera;
-import glint.scene.SceneLoader;
+import glint.scenefile.SceneLoader;
 import java.math.BigDecimal;
 import java.math.RoundingMode;
 

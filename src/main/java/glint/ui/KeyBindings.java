@@ -1,6 +1,6 @@
 package glint.ui;
 
-import glint.scene.SceneLoader;
+import glint.scenefile.SceneLoader;
 import java.awt.event.KeyEvent;
 import java.util.ArrayList;
 import java.util.List;

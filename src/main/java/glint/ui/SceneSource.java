@@ -4,8 +4,8 @@ import glint.config.Config;
 import glint.config.Flags;
 import glint.input.InputException;
 import glint.scene.Scene;
-import glint.scene.SceneLimits;
-import glint.scene.SceneLoader;
+import glint.scenefile.SceneLimits;
+import glint.scenefile.SceneLoader;
 import java.nio.file.Path;
 
 /**

@@ -6,7 +6,7 @@ import static org.junit.jupiter.api.Assertions.assertTrue;
 
 import glint.input.InputException;
 import glint.scene.Scene;
-import glint.scene.SceneLoader;
+import glint.scenefile.SceneLoader;
 import java.awt.image.BufferedImage;
 import java.io.IOException;
 import java.io.PrintWriter;

@@ -1,42 +1,12 @@
 package glint.recipe;
 
-import glint.geometry.DiscKind;
-import glint.input.InputException;
 import glint.math.Vector3d;
-import glint.scene.Fields;
 import glint.scene.Shape;
-import glint.scene.ShapeType;
-import java.util.List;
 
 /**
  * A shape made of many primitives, as a mesh is, added by the kind recipe in test sources only: a
- * row of {@code count} discs facing -z, the first at {@code first}, each next one {@code step} on,
- * written {@code {type: disc_row, first: [x, y, z], step: [x, y, z], count: n, radius: r}}.
+ * row of {@code count} discs facing -z, the first at {@code first}, each next one {@code step} on;
+ * plain data. {@link DiscRowType} registers it.
  */
 record DiscRow(Vector3d first, Vector3d step, int count, double radius) implements Shape {
-
-    static final ShapeType<DiscRow> TYPE = new ShapeType<>("disc_row", DiscRow.class,
-            List.of("first", "step", "count", "radius"), DiscRow::read, DiscRow::compile, DiscRow::count);
-
-    private static DiscRow read(Fields fields) throws InputException {
-        double count = fields.number("count");
-        if (!(count >= 1 && count <= 100 && count == Math.rint(count))) {
-            throw fields.error("count", "count must be a whole number from 1 to 100, got " + count);
-        }
-        return new DiscRow(fields.vector("first"), fields.vector("step"), (int) count, fields.length("radius"));
-    }
-
-    private static DiscKind compile(List<DiscRow> rows) {
-        int discs = rows.stream().mapToInt(DiscRow::count).sum();
-        double[] data = new double[7 * discs];
-        int at = 0;
-        for (DiscRow row : rows) {
-            for (int i = 0; i < row.count; i++, at += 7) {
-                Vector3d centre = row.first.add(row.step.scale(i));
-                double[] values = {centre.x(), centre.y(), centre.z(), 0, 0, -1, row.radius};
-                System.arraycopy(values, 0, data, at, 7);
-            }
-        }
-        return new DiscKind(data);
-    }
 }

@@ -1,7 +1,5 @@
 package glint.recipe;
 
-import glint.math.Vector3d;
-import glint.scene.MaterialType;
 import glint.shading.Bsdf;
 import glint.shading.BsdfSample;
 import glint.shading.Materials;
@@ -10,13 +8,11 @@ import glint.shading.Surface;
 import glint.shading.PathVertex;
 
 /**
- * A material type added by the recipe of docs/architecture.md, in test sources only: a surface
- * that sends back its colour as radiance, whatever lights it, and sends no rays on.
+ * The BSDF of a material type added by the recipe of docs/architecture.md, in test sources only: a
+ * surface that sends back its colour as radiance, whatever lights it, and sends no rays on.
+ * {@link GlowType} registers it.
  */
 final class Glow implements Bsdf {
-
-    /** {@code {type: glow, color: [r, g, b]}}; its preset glows white. */
-    static final MaterialType TYPE = new MaterialType("glow", new Glow(), Vector3d.ONE, 0, 0, 0, 1);
 
     @Override
     public boolean emits() {

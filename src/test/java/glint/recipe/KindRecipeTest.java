@@ -3,15 +3,15 @@ package glint.recipe;
 import static org.junit.jupiter.api.Assertions.assertEquals;
 import static org.junit.jupiter.api.Assertions.assertTrue;
 
+import glint.registry.Registry;
 import glint.render.FrameBuffer;
 import glint.render.Renders;
-import glint.scene.Registry;
 import org.junit.jupiter.api.Test;
 
 /** The primitive-kind recipe followed in test sources: a disc read, compiled and rendered. */
 class KindRecipeTest {
 
-    private static final Registry REGISTRY = Registry.STANDARD.with(Disc.TYPE);
+    private static final Registry REGISTRY = Registry.STANDARD.with(DiscType.TYPE);
 
     /**
      * A matte disc of albedo (0.5, 0.25, 1) facing the camera at z = 5, radius 1, under a
@@ -75,7 +75,7 @@ class KindRecipeTest {
     void aShapeOfManyPrimitivesGivesEachOfThemTheShapesMaterial() {
         // two rows of discs of their own colours before a blue wall, all facing a light along +z:
         // each disc's centre shows 1 / pi x irradiance 2 in its row's colour
-        Registry registry = REGISTRY.with(DiscRow.TYPE);
+        Registry registry = REGISTRY.with(DiscRowType.TYPE);
         String yaml = """
                 camera: {position: [0, 0, 0], look_at: [0, 0, 1], fov: 40}
                 lights:

@@ -3,15 +3,15 @@ package glint.recipe;
 import static org.junit.jupiter.api.Assertions.assertEquals;
 import static org.junit.jupiter.api.Assertions.assertTrue;
 
+import glint.registry.Registry;
 import glint.render.FrameBuffer;
 import glint.render.Renders;
-import glint.scene.Registry;
 import org.junit.jupiter.api.Test;
 
 /** The light recipe followed in test sources: a lamp without falloff read, compiled and rendered. */
 class LightRecipeTest {
 
-    private static final Registry REGISTRY = Registry.STANDARD.with(Lamp.TYPE);
+    private static final Registry REGISTRY = Registry.STANDARD.with(LampType.TYPE);
 
     /** A matte floor at y = -1 of albedo 0.5 under a lamp of intensity 3, a ball between them. */
     private static final String SCENE = """

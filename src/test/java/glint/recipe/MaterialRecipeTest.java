@@ -1,15 +1,20 @@
 package glint.recipe;
 
 import static org.junit.jupiter.api.Assertions.assertEquals;
+import static org.junit.jupiter.api.Assertions.assertThrows;
 
+import glint.math.Vector3d;
+import glint.registry.MaterialType;
+import glint.registry.Registry;
 import glint.render.FrameBuffer;
-import glint.scene.Registry;
+import glint.shading.Dielectric;
+import java.util.List;
 import org.junit.jupiter.api.Test;
 
 /** The material recipe followed in test sources: a glowing material read, compiled and rendered. */
 class MaterialRecipeTest {
 
-    private static final Registry REGISTRY = Registry.STANDARD.with(Glow.TYPE);
+    private static final Registry REGISTRY = Registry.STANDARD.with(GlowType.TYPE);
 
     @Test
     void aGlowingSphereShowsItsColourWithNoLightAtAll() {
@@ -50,10 +55,36 @@ class MaterialRecipeTest {
                 objects:
                   - {type: sphere, center: [0, 0, 5], radius: 1, material: glow}
                 """;
-        assertEquals(Glow.TYPE.preset(), Recipes.scene(REGISTRY, yaml).objects().get(0).material());
+        assertEquals(GlowType.TYPE.preset(), Recipes.scene(REGISTRY, yaml).objects().get(0).material());
         assertEquals("recipe.yaml:2:15: unknown material type 'glwo' (did you mean 'glow'?)",
                 Recipes.error(REGISTRY, "materials:\n  hot: {type: glwo}\n"));
         assertEquals("recipe.yaml:2:3: material name 'glow' is a preset and cannot be redefined (choose another name)",
                 Recipes.error(REGISTRY, "materials:\n  glow: {type: matte}\n"));
+    }
+
+    @Test
+    void theNewTypeReadsItsOwnKeysAndAKeyOfAnotherTypeIsRefusedNamingIt() {
+        assertEquals("recipe.yaml:2:19: a glow material has no roughness (roughness is a key of metal)",
+                Recipes.error(REGISTRY, "materials:\n  m: {type: glow, roughness: 0.5}\n"));
+        // a second type reading ior: both are named
+        MaterialType lens = new MaterialType("lens", List.of("ior"), new Dielectric(), Vector3d.ONE, 0, 0, 1, 1);
+        assertEquals("recipe.yaml:2:19: a glow material has no ior (ior is a key of glass and lens)",
+                Recipes.error(REGISTRY.with(lens), "materials:\n  m: {type: glow, ior: 1.2}\n"));
+        assertEquals("material type lamp reads [power], but a material's physical parameters are [ior, roughness]",
+                assertThrows(IllegalArgumentException.class, () -> new MaterialType("lamp", List.of("power"),
+                        new Glow(), Vector3d.ONE, 0, 0, 0, 1)).getMessage());
+    }
+
+    @Test
+    void anObjectWithoutAMaterialGetsThePresetOfTheRegistrysFirstMaterialType() {
+        String yaml = """
+                objects:
+                  - {type: sphere, center: [0, 0, 5], radius: 1}
+                """;
+        Registry glowFirst = new Registry(Registry.STANDARD.shapes(), List.of(GlowType.TYPE),
+                Registry.STANDARD.lights());
+        assertEquals(GlowType.TYPE.preset(), Recipes.scene(glowFirst, yaml).objects().get(0).material());
+        assertEquals(Registry.STANDARD.materials().get(0).preset(),
+                Recipes.scene(REGISTRY, yaml).objects().get(0).material());
     }
 }

@@ -2,14 +2,14 @@ package glint.recipe;
 
 import glint.config.Shading;
 import glint.input.InputException;
+import glint.registry.Registry;
 import glint.render.FrameBuffer;
 import glint.render.RenderScene;
 import glint.render.RenderSettings;
 import glint.render.Tracer;
-import glint.scene.Registry;
 import glint.scene.Scene;
-import glint.scene.SceneLimits;
-import glint.scene.SceneLoader;
+import glint.scenefile.SceneLimits;
+import glint.scenefile.SceneLoader;
 
 /** Test helper: a scene read and rendered through a registry with a type added by its recipe. */
 final class Recipes {

@@ -7,7 +7,7 @@ import glint.config.Config;
 import glint.config.LightTransport;
 import glint.config.Shading;
 import glint.image.PfmReader;
-import glint.scene.SceneLoader;
+import glint.scenefile.SceneLoader;
 import glint.study.ImageErrors;
 import glint.study.RelativeMse;
 import java.nio.file.Path;

@@ -7,7 +7,7 @@ import glint.config.Config;
 import glint.config.Shading;
 import glint.image.PfmReader;
 import glint.scene.Scene;
-import glint.scene.SceneLoader;
+import glint.scenefile.SceneLoader;
 import glint.study.RelativeMse;
 import java.nio.file.Path;
 import org.junit.jupiter.params.ParameterizedTest;

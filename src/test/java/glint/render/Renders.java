@@ -3,7 +3,7 @@ package glint.render;
 import glint.config.Shading;
 import glint.input.InputException;
 import glint.scene.Scene;
-import glint.scene.SceneLoader;
+import glint.scenefile.SceneLoader;
 
 /** Test helper: parse a scene text and render it. */
 public final class Renders {

@@ -5,7 +5,7 @@ import static org.junit.jupiter.api.Assertions.assertTrue;
 
 import glint.config.Config;
 import glint.config.ConfigLoader;
-import glint.scene.SceneLoader;
+import glint.scenefile.SceneLoader;
 import java.nio.file.Path;
 import java.util.ArrayList;
 import java.util.List;

@@ -3,7 +3,7 @@ package glint.render;
 import glint.config.Config;
 import glint.image.Srgb;
 import glint.scene.Scene;
-import glint.scene.SceneLoader;
+import glint.scenefile.SceneLoader;
 import java.nio.file.Files;
 import java.nio.file.Path;
 import java.util.Arrays;

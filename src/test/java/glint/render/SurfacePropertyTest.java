@@ -125,11 +125,15 @@ class SurfacePropertyTest {
                     """);
             String[] types = {"matte", "metal", "glass"};
             for (int i = 0; i < 8; i++) {
-                yaml.append(String.format(Locale.ROOT,
-                        "  - {type: sphere, center: [%f, %f, %f], radius: %f, material: {type: %s, color: [%f, %f, %f], ior: %f, roughness: %f}}%n",
+                String sphere = String.format(Locale.ROOT,
+                        "  - {type: sphere, center: [%f, %f, %f], radius: %f, material: {type: %s, color: [%f, %f, %f]",
                         random.nextDouble(-3, 3), random.nextDouble(0, 2.5), random.nextDouble(-1, 4),
                         random.nextDouble(0.2, 1.2), types[random.nextInt(3)], random.nextDouble(), random.nextDouble(),
-                        random.nextDouble(), random.nextDouble(1.05, 2.5), random.nextDouble()));
+                        random.nextDouble());
+                double ior = random.nextDouble(1.05, 2.5), roughness = random.nextDouble();
+                String physical = sphere.contains("glass") ? String.format(Locale.ROOT, ", ior: %f", ior)
+                        : sphere.contains("metal") ? String.format(Locale.ROOT, ", roughness: %f", roughness) : "";
+                yaml.append(sphere).append(physical).append("}}\n");
             }
             for (Shading shading : Shading.values()) {
                 FrameBuffer frame = Renders.render(yaml.toString(), 32, 24, 1, 8, shading);

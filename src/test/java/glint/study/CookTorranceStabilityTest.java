@@ -9,7 +9,7 @@ import glint.render.FrameBuffer;
 import glint.render.RenderScene;
 import glint.render.RenderSettings;
 import glint.render.Tracer;
-import glint.scene.SceneLoader;
+import glint.scenefile.SceneLoader;
 import org.junit.jupiter.api.Test;
 
 /**

@@ -6,7 +6,7 @@ import glint.input.InputException;
 import glint.math.Quaternion;
 import glint.math.Vector3d;
 import glint.scene.Camera;
-import glint.scene.SceneLoader;
+import glint.scenefile.SceneLoader;
 import java.util.Random;
 import org.junit.jupiter.api.Test;
 

@@ -354,6 +354,6 @@ class CameraControllerTest {
         assertEquals(new Vector3d(0, 0, 9e149), far.camera().position());
         // key C's block of that camera reads back as a scene
         String block = CameraBlock.yaml(far.camera());
-        assertEquals(far.camera().position(), glint.scene.SceneLoader.parse("c.yaml", block).camera().position(), block);
+        assertEquals(far.camera().position(), glint.scenefile.SceneLoader.parse("c.yaml", block).camera().position(), block);
     }
 }

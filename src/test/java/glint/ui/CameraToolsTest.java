@@ -11,7 +11,7 @@ import glint.render.RenderScene;
 import glint.render.RenderSettings;
 import glint.scene.Camera;
 import glint.scene.Scene;
-import glint.scene.SceneLoader;
+import glint.scenefile.SceneLoader;
 import org.junit.jupiter.api.Test;
 
 /** The modelling viewport's tools: orbit around a picked point, zoom, flying up along the world's up, key C. */

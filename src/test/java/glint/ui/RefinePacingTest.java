@@ -7,7 +7,7 @@ import glint.render.FrameBuffer;
 import glint.render.RenderScene;
 import glint.render.RenderSettings;
 import glint.render.Tracer;
-import glint.scene.SceneLoader;
+import glint.scenefile.SceneLoader;
 import java.awt.image.BufferedImage;
 import org.junit.jupiter.api.Test;
 

@@ -6,8 +6,8 @@ import static org.junit.jupiter.api.Assertions.assertTrue;
 
 import glint.input.InputException;
 import glint.scene.Scene;
-import glint.scene.SceneLimits;
-import glint.scene.SceneLoader;
+import glint.scenefile.SceneLimits;
+import glint.scenefile.SceneLoader;
 import java.io.IOException;
 import java.io.OutputStream;
 import java.nio.charset.StandardCharsets;

@@ -7,7 +7,7 @@ import static org.junit.jupiter.api.Assertions.assertTrue;
 import glint.config.Config;
 import glint.math.Vector3d;
 import glint.scene.Camera;
-import glint.scene.SceneLoader;
+import glint.scenefile.SceneLoader;
 import java.awt.GraphicsEnvironment;
 import java.awt.Robot;
 import java.awt.event.KeyEvent;

@@ -1,8 +1,12 @@
-package glint.scene;
+package glint.scenefile;
 
 import glint.input.InputException;
 import glint.input.Suggestions;
 import glint.math.Vector3d;
+import glint.registry.MaterialType;
+import glint.registry.Registry;
+import glint.scene.Material;
+import java.util.ArrayList;
 import java.util.LinkedHashMap;
 import java.util.LinkedHashSet;
 import java.util.List;
@@ -14,12 +18,10 @@ import org.snakeyaml.engine.v2.nodes.ScalarNode;
 
 /**
  * The materials of a scene file: its named {@code materials:} and each object's {@code material:},
- * a name or a mapping, every value checked against its range.
+ * a name or a mapping of the keys its type reads ({@link MaterialType#keys}), every value checked
+ * against its range.
  */
 final class MaterialReader {
-
-    private static final Set<String> MATERIAL_KEYS =
-            new LinkedHashSet<>(List.of("type", "color", "kd", "ks", "kt", "shininess", "ior", "roughness"));
 
     /**
      * The largest colour component and kd, ks and kt: shares of the light a surface sends back (1 is
@@ -37,6 +39,9 @@ final class MaterialReader {
     private final YamlTree yaml;
     private final Map<String, MaterialType> types = new LinkedHashMap<>();
     private final Map<String, Material> named = new LinkedHashMap<>(); // presets first, for hints
+    /** {@code type} and every key some type reads: a key beyond them is unknown, with a hint among them. */
+    private final Set<String> anyTypesKeys = new LinkedHashSet<>(List.of("type"));
+    private final Material defaultMaterial;
 
     MaterialReader(YamlTree yaml, Registry registry) {
         this.yaml = yaml;
@@ -44,6 +49,12 @@ final class MaterialReader {
             types.put(type.name(), type);
             named.put(type.name(), type.preset());
         }
+        for (String key : concat(MaterialType.COMMON_KEYS, MaterialType.PHYSICAL_KEYS)) {
+            if (types.values().stream().anyMatch(type -> type.keys().contains(key))) {
+                anyTypesKeys.add(key);
+            }
+        }
+        defaultMaterial = registry.defaultMaterial().preset();
     }
 
     /** {@code materials:}, a mapping of names to materials. */
@@ -68,9 +79,9 @@ final class MaterialReader {
         }
     }
 
-    /** An object's {@code material:} (a name or a mapping), or matte when it has none. */
+    /** An object's {@code material:} (a name or a mapping), or the registry's default preset when it has none. */
     Material of(Map<String, Node> object) throws InputException {
-        return object.containsKey("material") ? material(object.get("material")) : named.get("matte");
+        return object.containsKey("material") ? material(object.get("material")) : defaultMaterial;
     }
 
     private Material material(Node node) throws InputException {
@@ -86,18 +97,20 @@ final class MaterialReader {
     }
 
     private Material materialMap(Node node, String what) throws InputException {
-        Map<String, Node> m = yaml.mapping(node, what, MATERIAL_KEYS);
+        Map<String, Node> m = yaml.mapping(node, what, anyTypesKeys);
         Node typeNode = m.get("type");
         if (typeNode == null) {
             throw yaml.error(node, "missing required key 'type' in " + what
                     + " (one of: " + String.join(", ", types.keySet()) + ")");
         }
         String typeName = yaml.string(typeNode, "material type");
-        if (!types.containsKey(typeName)) {
+        MaterialType type = types.get(typeName);
+        if (type == null) {
             throw yaml.error(typeNode, "unknown material type " + InputException.quote(typeName)
                     + Suggestions.hint(typeName, types.keySet()));
         }
-        Material p = types.get(typeName).preset();
+        checkKeysOf(type, (MappingNode) node);
+        Material p = type.preset();
         Vector3d color = m.containsKey("color") ? color(m.get("color")) : p.color();
         double kd = share(m, "kd", p.kd());
         double ks = share(m, "ks", p.ks());
@@ -113,6 +126,35 @@ final class MaterialReader {
             }
         }
         return new Material(p.type(), color, kd, ks, kt, shininess, ior, roughness);
+    }
+
+    /** Refuses, at the key, a key some other type reads but {@code type} does not. */
+    private void checkKeysOf(MaterialType type, MappingNode map) throws InputException {
+        for (var tuple : map.getValue()) {
+            String key = ((ScalarNode) tuple.getKeyNode()).getValue();
+            if (!key.equals("type") && !type.keys().contains(key)) {
+                List<String> readers = types.values().stream().filter(other -> other.keys().contains(key))
+                        .map(MaterialType::name).toList();
+                throw yaml.error(tuple.getKeyNode(), (startsWithVowel(type.name()) ? "an " : "a ") + type.name()
+                        + " material has no " + key + " (" + key + " is a key of " + listed(readers) + ")");
+            }
+        }
+    }
+
+    private static boolean startsWithVowel(String word) {
+        return !word.isEmpty() && "aeiou".indexOf(Character.toLowerCase(word.charAt(0))) >= 0;
+    }
+
+    /** "a", "a and b", "a, b and c". */
+    private static String listed(List<String> names) {
+        int last = names.size() - 1;
+        return last == 0 ? names.get(0) : String.join(", ", names.subList(0, last)) + " and " + names.get(last);
+    }
+
+    private static List<String> concat(List<String> a, List<String> b) {
+        List<String> both = new ArrayList<>(a);
+        both.addAll(b);
+        return both;
     }
 
     private Vector3d color(Node node) throws InputException {

@@ -1,7 +1,8 @@
-package glint.scene;
+package glint.registry;
 
 import glint.geometry.PrimitiveKind;
 import glint.input.InputException;
+import glint.scene.Shape;
 import java.util.ArrayList;
 import java.util.List;
 import java.util.function.Function;

@@ -1,7 +1,9 @@
-package glint.scene;
+package glint.scenefile;
 
 import glint.input.InputException;
 import glint.math.Vector3d;
+import glint.scene.Camera;
+import glint.scene.View;
 import java.util.ArrayList;
 import java.util.LinkedHashSet;
 import java.util.List;

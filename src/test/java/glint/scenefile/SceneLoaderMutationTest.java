@@ -1,4 +1,4 @@
-package glint.scene;
+package glint.scenefile;
 
 import java.io.IOException;
 import java.nio.charset.StandardCharsets;
@@ -70,7 +70,7 @@ class SceneLoaderMutationTest {
 
     private static List<String> corpus() throws IOException {
         List<String> texts = new ArrayList<>();
-        for (Path folder : List.of(Path.of("src/test/resources/glint/scene/SceneLoaderFuzzTestInputs"),
+        for (Path folder : List.of(Path.of("src/test/resources/glint/scenefile/SceneLoaderFuzzTestInputs"),
                 Path.of("src/test/resources/malformed"), Path.of("scenes"))) {
             try (Stream<Path> files = Files.walk(folder)) {
                 for (Path file : files.filter(Files::isRegularFile).sorted().toList()) {

@@ -1,7 +1,8 @@
-package glint.scene;
+package glint.scenefile;
 
 import glint.input.InputException;
 import glint.input.Suggestions;
+import glint.scene.RenderBlock;
 import java.util.HashMap;
 import java.util.LinkedHashSet;
 import java.util.List;

@@ -1,4 +1,4 @@
-package glint.scene;
+package glint.scenefile;
 
 import glint.input.InputException;
 import java.util.ArrayList;

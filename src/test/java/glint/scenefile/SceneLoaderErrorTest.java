@@ -1,10 +1,11 @@
-package glint.scene;
+package glint.scenefile;
 
 import static org.junit.jupiter.api.Assertions.assertAll;
 import static org.junit.jupiter.api.Assertions.assertEquals;
 import static org.junit.jupiter.api.Assertions.assertThrows;
 
 import glint.input.InputException;
+import glint.scene.Scene;
 import java.io.IOException;
 import java.nio.file.Files;
 import java.nio.file.Path;
@@ -128,6 +129,48 @@ class SceneLoaderErrorTest {
         assertError("scenes/x.yaml:2:23: unknown key 'colour' in material 'gold' (did you mean 'color'?)", """
                 materials:
                   gold: {type: metal, colour: [1, 0.8, 0.3]}
+                """);
+    }
+
+    @Test
+    void aKeyOfAnotherMaterialTypeNamesTheTypeThatReadsIt() {
+        // "  - {type: sphere, center: [0, 0, 0], radius: 1, material: {type: matte, " is 73 characters:
+        // "ior" at 74, the first of the keys a matte material does not read, in the order written
+        assertError("scenes/x.yaml:2:74: a matte material has no ior (ior is a key of glass)", """
+                objects:
+                  - {type: sphere, center: [0, 0, 0], radius: 1, material: {type: matte, ior: 7, roughness: 0.9, kt: 3}}
+                """);
+        // "  gold: {" 1-9, "type: metal, " 10-22, "ior" at 23
+        assertError("scenes/x.yaml:2:23: a metal material has no ior (ior is a key of glass)", """
+                materials:
+                  gold: {type: metal, ior: 1.5}
+                """);
+        // "  pane: {" 1-9, "kt: 0.5, " 10-18, "roughness" at 19: before the type, still the glass's key check
+        assertError("scenes/x.yaml:2:19: a glass material has no roughness (roughness is a key of metal)", """
+                materials:
+                  pane: {kt: 0.5, roughness: 0.2, type: glass}
+                """);
+    }
+
+    @Test
+    void aKeyOfAnotherMaterialTypeIsCheckedBeforeItsValue() {
+        // a matte material's roughness is refused as a key, not as a value out of [0, 1]
+        assertError("scenes/x.yaml:2:20: a matte material has no roughness (roughness is a key of metal)", """
+                materials:
+                  m: {type: matte, roughness: 7}
+                """);
+    }
+
+    @Test
+    void aKeyNoMaterialTypeReadsIsUnknownWithAHintOrTheKeysOfEveryType() {
+        assertError("scenes/x.yaml:2:20: unknown key 'ior2' in material 'm' (did you mean 'ior'?)", """
+                materials:
+                  m: {type: matte, ior2: 1}
+                """);
+        assertError("scenes/x.yaml:2:20: unknown key 'albedo' in material 'm' (expected one of: type, color, kd, ks, kt,"
+                + " shininess, ior, roughness)", """
+                materials:
+                  m: {type: matte, albedo: [1, 1, 1]}
                 """);
     }
 

@@ -1,4 +1,4 @@
-package glint.scene;
+package glint.scenefile;
 
 import java.util.HashSet;
 import java.util.Set;

@@ -1,4 +1,4 @@
-package glint.scene;
+package glint.scenefile;
 
 import static org.junit.jupiter.api.Assertions.assertEquals;
 import static org.junit.jupiter.api.Assertions.assertNull;
@@ -6,6 +6,9 @@ import static org.junit.jupiter.api.Assertions.assertSame;
 import static org.junit.jupiter.api.Assertions.assertThrows;
 
 import glint.input.InputException;
+import glint.scene.Camera;
+import glint.scene.RenderBlock;
+import glint.scene.Scene;
 import org.junit.jupiter.api.Test;
 
 /** The scene key {@code render:}: how a scene is meant to be seen, and what is wrong with a bad block. */

@@ -1,4 +1,4 @@
-package glint.scene;
+package glint.scenefile;
 
 import static org.junit.jupiter.api.Assertions.assertEquals;
 import static org.junit.jupiter.api.Assertions.assertThrows;
@@ -6,6 +6,9 @@ import static org.junit.jupiter.api.Assertions.assertTrue;
 
 import glint.input.InputException;
 import glint.math.Vector3d;
+import glint.scene.Camera;
+import glint.scene.Scene;
+import glint.scene.View;
 import org.junit.jupiter.api.Test;
 
 /** The scene key {@code views:}: cameras the window's keys 1 to 9 go to, and what is wrong with bad ones. */

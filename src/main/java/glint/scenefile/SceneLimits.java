@@ -1,4 +1,4 @@
-package glint.scene;
+package glint.scenefile;
 
 /**
  * How big a scene the loader accepts, so that a mistaken or hostile file is refused up front

@@ -1,10 +1,11 @@
-package glint.scene;
+package glint.scenefile;
 
 import static org.junit.jupiter.api.Assertions.assertTrue;
 
 import com.code_intelligence.jazzer.junit.FuzzTest;
 import glint.config.Limits;
 import glint.input.InputException;
+import glint.scene.Scene;
 import java.nio.charset.StandardCharsets;
 import java.util.regex.Pattern;
 
@@ -12,7 +13,7 @@ import java.util.regex.Pattern;
  * Fuzzes the scene loader: whatever the text, it either yields a scene or an {@link InputException}
  * whose message has the user-facing form "file[:line[:col]]: problem" - never another exception,
  * never a hang. In `mvn verify` this replays the seed inputs in
- * src/test/resources/glint/scene/SceneLoaderFuzzTestInputs; with JAZZER_FUZZ=1 it fuzzes (docs/reliability.md).
+ * src/test/resources/glint/scenefile/SceneLoaderFuzzTestInputs; with JAZZER_FUZZ=1 it fuzzes (docs/reliability.md).
  */
 class SceneLoaderFuzzTest {
 

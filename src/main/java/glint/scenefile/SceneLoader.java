@@ -1,9 +1,19 @@
-package glint.scene;
+package glint.scenefile;
 
 import glint.input.InputException;
 import glint.input.Suggestions;
-import glint.math.Vector3d;
 import glint.input.TextFiles;
+import glint.math.Vector3d;
+import glint.registry.LightType;
+import glint.registry.Registry;
+import glint.registry.ShapeType;
+import glint.scene.Camera;
+import glint.scene.Light;
+import glint.scene.RenderBlock;
+import glint.scene.Scene;
+import glint.scene.SceneObject;
+import glint.scene.Shape;
+import glint.scene.View;
 import java.nio.file.Path;
 import java.util.ArrayList;
 import java.util.LinkedHashMap;
@@ -196,7 +206,7 @@ public final class SceneLoader {
         keys.addAll(type.keys());
         keys.add("material");
         Map<String, Node> m = yaml.mapping(node, type.name(), keys);
-        Shape shape = type.reader().read(new Fields(yaml, node, m, type.name()));
+        Shape shape = type.reader().read(new YamlFields(yaml, node, m, type.name()));
         return new SceneObject(shape, materials.of(m));
     }
 
@@ -223,7 +233,7 @@ public final class SceneLoader {
                     "color x intensity must be at most 1e30, got " + InputException.beyond(brightest, MAX_RADIANCE, 3)
                     + " (the image stores radiance as float, up to 3.4e38)");
         }
-        return type.reader().read(new Fields(yaml, node, m, what), color, intensity);
+        return type.reader().read(new YamlFields(yaml, node, m, what), color, intensity);
     }
 
     /** The {@code type} of an object or light mapping, checked against the known types. */

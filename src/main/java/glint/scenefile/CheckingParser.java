@@ -1,4 +1,4 @@
-package glint.scene;
+package glint.scenefile;
 
 import org.snakeyaml.engine.v2.events.Event;
 import org.snakeyaml.engine.v2.parser.Parser;

@@ -1,35 +1,32 @@
-package glint.scene;
+package glint.scenefile;
 
 import glint.input.InputException;
 import glint.math.Vector3d;
+import glint.registry.Fields;
 import java.util.Map;
 import org.snakeyaml.engine.v2.nodes.Node;
 
-/**
- * One object's or light's mapping in a scene file, its keys already checked: what a type's reader
- * ({@link ShapeType}, {@link LightType}) reads its values from. Each value is checked as it is read,
- * and a bad one is reported at its line and column.
- */
-public final class Fields {
+/** The {@link Fields} of one mapping of a scene file: each value read from its YAML node. */
+final class YamlFields implements Fields {
 
     private final YamlTree yaml;
     private final Node node;
     private final Map<String, Node> entries;
     private final String what;
 
-    Fields(YamlTree yaml, Node node, Map<String, Node> entries, String what) {
+    YamlFields(YamlTree yaml, Node node, Map<String, Node> entries, String what) {
         this.yaml = yaml;
         this.node = node;
         this.entries = entries;
         this.what = what;
     }
 
-    /** A vector the mapping must have, such as a centre or a position. */
+    @Override
     public Vector3d vector(String key) throws InputException {
         return yaml.vector(required(key), key);
     }
 
-    /** A unit direction the mapping must have: any vector but zero, normalised. */
+    @Override
     public Vector3d direction(String key) throws InputException {
         Node value = required(key);
         Vector3d v = SceneLoader.lengthSafe(yaml.vector(value, key));
@@ -39,10 +36,7 @@ public final class Fields {
         return v.normalize();
     }
 
-    /**
-     * A length the mapping must have, such as a radius: above 0, between 1e-150 and 1e150, so its
-     * square is a normal double and intersections neither underflow nor overflow.
-     */
+    @Override
     public double length(String key) throws InputException {
         Node value = required(key);
         double length = yaml.number(value, key);
@@ -56,12 +50,12 @@ public final class Fields {
         return length;
     }
 
-    /** A number the mapping must have. */
+    @Override
     public double number(String key) throws InputException {
         return yaml.number(required(key), key);
     }
 
-    /** An error about the value of {@code key} (which the mapping has), at its line and column. */
+    @Override
     public InputException error(String key, String problem) {
         Node value = entries.get(key);
         return yaml.error(value != null ? value : node, problem);

@@ -1,7 +1,8 @@
-package glint.scene;
+package glint.registry;
 
 import glint.input.InputException;
 import glint.math.Vector3d;
+import glint.scene.Light;
 import glint.shading.LightSampler;
 import java.util.List;
 import java.util.function.Function;

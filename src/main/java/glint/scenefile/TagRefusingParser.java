@@ -1,4 +1,4 @@
-package glint.scene;
+package glint.scenefile;
 
 import java.util.Optional;
 import org.snakeyaml.engine.v2.events.CollectionStartEvent;

@@ -1,4 +1,4 @@
-package glint.scene;
+package glint.scenefile;
 
 import static org.junit.jupiter.api.Assertions.assertEquals;
 import static org.junit.jupiter.api.Assertions.assertInstanceOf;
@@ -7,6 +7,14 @@ import static org.junit.jupiter.api.Assertions.assertTrue;
 
 import glint.input.InputException;
 import glint.math.Vector3d;
+import glint.registry.GlassType;
+import glint.registry.MatteType;
+import glint.scene.Camera;
+import glint.scene.Light;
+import glint.scene.Material;
+import glint.scene.Plane;
+import glint.scene.Scene;
+import glint.scene.Sphere;
 import java.io.IOException;
 import java.nio.file.Files;
 import java.nio.file.Path;
@@ -78,8 +86,8 @@ class SceneLoaderTest {
     void objectWithoutMaterialIsMatte() throws InputException {
         Scene scene = parse("objects:\n  - {type: sphere, center: [0, 0, 0], radius: 1}\n");
         Material m = material(scene, 0);
-        assertEquals(MaterialType.MATTE.preset(), m);
-        assertEquals(MaterialType.MATTE, m.type());
+        assertEquals(MatteType.TYPE.preset(), m);
+        assertEquals("matte", m.type());
         assertEquals(v(0.8, 0.8, 0.8), m.color());
     }
 
@@ -91,11 +99,11 @@ class SceneLoaderTest {
                   - {type: sphere, center: [0, 0, 0], radius: 1, material: metal}
                   - {type: sphere, center: [0, 0, 0], radius: 1, material: glass}
                 """);
-        assertEquals(new Material(MaterialType.MATTE, v(0.8, 0.8, 0.8), 0.99, 0.01, 0, 10, 1.5, 0),
+        assertEquals(new Material("matte", v(0.8, 0.8, 0.8), 0.99, 0.01, 0, 10, 1.5, 0),
                 material(scene, 0));
-        assertEquals(new Material(MaterialType.METAL, v(0.9, 0.9, 0.9), 0.1, 0.7, 0, 50, 1.5, 0),
+        assertEquals(new Material("metal", v(0.9, 0.9, 0.9), 0.1, 0.7, 0, 50, 1.5, 0),
                 material(scene, 1));
-        assertEquals(new Material(MaterialType.GLASS, v(1, 1, 1), 0.01, 0.2, 0.79, 125, 1.5, 0),
+        assertEquals(new Material("glass", v(1, 1, 1), 0.01, 0.2, 0.79, 125, 1.5, 0),
                 material(scene, 2));
     }
 
@@ -260,11 +268,17 @@ class SceneLoaderTest {
                       ks: 0.5
                       kt: 0.1
                       shininess: 20
-                      ior: 1.2
                       roughness: 0.5
+                  - type: sphere
+                    center: [0, 0, 0]
+                    radius: 1
+                    material: {type: glass, color: [0.4, 0.5, 0.6], kd: 0.2, ks: 0.3, kt: 0.4, shininess: 30, ior: 1.2}
                 """);
-        assertEquals(new Material(MaterialType.METAL, v(0.1, 0.2, 0.3), 0.3, 0.5, 0.1, 20, 1.2, 0.5),
+        // a metal keeps the preset's ior 1.5 (phong refracts its kt at it), a glass its roughness 0
+        assertEquals(new Material("metal", v(0.1, 0.2, 0.3), 0.3, 0.5, 0.1, 20, 1.5, 0.5),
                 material(scene, 0));
+        assertEquals(new Material("glass", v(0.4, 0.5, 0.6), 0.2, 0.3, 0.4, 30, 1.2, 0),
+                material(scene, 1));
     }
 
     @Test
@@ -274,11 +288,11 @@ class SceneLoaderTest {
                   - {type: plane, point: [0, 0, 0], normal: [0, 1, 0], material: {type: glass, kt: 0.5}}
                   - {type: plane, point: [0, 0, 0], normal: [0, 1, 0], material: {type: matte, color: [0.5, 0.5, 0.5]}}
                 """);
-        Material glass = MaterialType.GLASS.preset();
-        assertEquals(new Material(MaterialType.GLASS, glass.color(), glass.kd(), glass.ks(), 0.5, glass.shininess(),
+        Material glass = GlassType.TYPE.preset();
+        assertEquals(new Material("glass", glass.color(), glass.kd(), glass.ks(), 0.5, glass.shininess(),
                 glass.ior(), glass.roughness()), material(scene, 0));
-        Material matte = MaterialType.MATTE.preset();
-        assertEquals(new Material(MaterialType.MATTE, v(0.5, 0.5, 0.5), matte.kd(), matte.ks(), matte.kt(),
+        Material matte = MatteType.TYPE.preset();
+        assertEquals(new Material("matte", v(0.5, 0.5, 0.5), matte.kd(), matte.ks(), matte.kt(),
                 matte.shininess(), matte.ior(), matte.roughness()), material(scene, 1));
     }
 
@@ -308,11 +322,11 @@ class SceneLoaderTest {
                   gold:  {type: metal, color: [1.0, 0.77, 0.34], roughness: 0.05}
                 """);
         Material red = material(scene, 0);
-        assertEquals(MaterialType.MATTE, red.type());
+        assertEquals("matte", red.type());
         assertEquals(v(0.8, 0.1, 0.1), red.color());
         assertEquals(0.99, red.kd());
         Material gold = material(scene, 1);
-        assertEquals(new Material(MaterialType.METAL, v(1.0, 0.77, 0.34), 0.1, 0.7, 0, 50, 1.5, 0.05), gold);
+        assertEquals(new Material("metal", v(1.0, 0.77, 0.34), 0.1, 0.7, 0, 50, 1.5, 0.05), gold);
         assertSame(red, material(scene, 2));
     }
 
@@ -354,7 +368,7 @@ class SceneLoaderTest {
         assertEquals(Camera.defaults(), scene.camera());
         Light.Directional sun = (Light.Directional) scene.lights().get(1);
         assertVector(v(0, -1, 0.2).normalize(), sun.direction());
-        assertEquals(MaterialType.GLASS.preset(), material(scene, 1));
+        assertEquals(GlassType.TYPE.preset(), material(scene, 1));
     }
 
     // ---------------------------------------------------------------- shipped scenes
@@ -367,7 +381,7 @@ class SceneLoaderTest {
         assertInstanceOf(Light.Point.class, scene.lights().get(0));
         long spheres = scene.objects().stream().filter(o -> o.shape() instanceof Sphere).count();
         assertEquals(3, spheres);
-        assertEquals(List.of(MaterialType.MATTE, MaterialType.GLASS, MaterialType.METAL, MaterialType.MATTE),
+        assertEquals(List.of("matte", "glass", "metal", "matte"),
                 scene.objects().stream().map(o -> o.material().type()).toList());
         Camera camera = scene.camera();
         assertTrue(camera.fovDegrees() > 0 && camera.fovDegrees() < 180);
