@@ -1,0 +1,130 @@
+package glint.ui.view;
+
+import glint.render.RenderScene;
+import glint.scene.Camera;
+import glint.scene.Scene;
+import glint.ui.input.CameraController;
+
+/**
+ * What the window shows: the scene, the camera flying through it, the settings it is seen with, the scene
+ * compiled for them, and how far the still refinement of the view has come. Whatever changes the view calls
+ * {@link #invalidate}, which starts the frame over. Engine thread only, except {@link #camera()} and
+ * {@link #sceneNow()}, which any thread may read.
+ */
+public final class SceneView {
+
+    private final ViewSettings seen; // the scene's settings, the user's shading and depth
+    private final CameraController controller;
+    private final StatusLine status;
+    private final CompiledScenes compiledScenes = new CompiledScenes();
+    private Scene scene;
+    private Camera fileCamera;
+    private RenderScene compiled; // null: compile again before the next frame
+    private boolean needFrame = true;
+    private int passesDone;
+
+    private volatile Camera cameraNow;
+    private volatile Scene sceneNow;
+
+    /** A view with no scene yet: {@link #show} one before the first frame. */
+    public SceneView(ViewSettings seen, CameraController controller, StatusLine status) {
+        this.seen = seen;
+        this.controller = controller;
+        this.status = status;
+    }
+
+    /**
+     * Shows a new scene. The camera takes the file's pose when asked or when the file's camera
+     * changed; otherwise the user's view stays where it is.
+     */
+    public void show(Scene newScene, boolean resetCamera) {
+        if (resetCamera || !newScene.camera().equals(fileCamera)) {
+            controller.reset(newScene.camera());
+        }
+        fileCamera = newScene.camera();
+        seen.scene(newScene);
+        status.error(seen.blockError());
+        scene = newScene;
+        sceneNow = newScene;
+        cameraNow = controller.camera();
+        invalidate();
+    }
+
+    /** Home: back to the scene file's camera. */
+    public void home() {
+        controller.reset(fileCamera);
+        cameraMoved();
+    }
+
+    /** The camera moved or jumped (a motion, Home, a view, L): the view is drawn anew. */
+    public void cameraMoved() {
+        cameraNow = controller.camera();
+        invalidate();
+    }
+
+    /** Something the frame depends on changed: compile again, draw a frame and refine it from the start. */
+    public void invalidate() {
+        compiled = null;
+        needFrame = true;
+        passesDone = 0;
+        status.changed();
+    }
+
+    /** The scene compiled with the settings now, seen from the camera now. */
+    public RenderScene compiled() {
+        if (compiled == null) {
+            compiled = compiledScenes.of(scene, seen.render(), controller.camera());
+        }
+        return compiled;
+    }
+
+    /** Whether a moving frame is still to be drawn since the view last changed. */
+    public boolean needFrame() {
+        return needFrame;
+    }
+
+    /** Still passes accumulated in the frame on screen. */
+    public int passesDone() {
+        return passesDone;
+    }
+
+    /** A moving frame is on screen: the refinement starts from nothing when the camera stops. */
+    public void movingFrameShown() {
+        needFrame = false;
+        passesDone = 0;
+    }
+
+    /** {@code count} more still passes are on screen. */
+    public void passesShown(int count) {
+        needFrame = false;
+        passesDone += count;
+    }
+
+    /** A frame failed: a failed pass may have reached the average, so the refinement starts over. */
+    public void frameFailed() {
+        needFrame = true;
+        passesDone = 0;
+    }
+
+    public Scene scene() {
+        return scene;
+    }
+
+    public ViewSettings settings() {
+        return seen;
+    }
+
+    public CameraController controller() {
+        return controller;
+    }
+
+    /** The camera now (any thread). */
+    public Camera camera() {
+        return cameraNow;
+    }
+
+    /** The scene on screen: the last one that loaded (any thread). */
+    public Scene sceneNow() {
+        return sceneNow;
+    }
+}
