@@ -4,13 +4,11 @@ import glint.scene.View;
 import glint.ui.capture.CameraBlock;
 import glint.ui.capture.Captures;
 import glint.ui.input.Action;
-import glint.ui.input.CameraController;
 import glint.ui.input.InputFrame;
 import glint.ui.scenes.Reloads;
 import glint.ui.scenes.SceneBrowser;
 import glint.ui.view.SceneView;
 import glint.ui.view.StatusLine;
-import glint.ui.view.ViewSettings;
 import java.io.PrintWriter;
 import java.util.List;
 
@@ -46,34 +44,16 @@ final class Commands {
     }
 
     /** Does what {@code action} asks; {@code in} is the input it came with (which view a digit asks for). */
-    void run(Action action, InputFrame in) {
-        ViewSettings seen = view.settings();
-        CameraController controller = view.controller();
+    public void run(Action action, InputFrame in) {
         switch (action) {
-            case TOGGLE_SHADING -> {
-                status.note(seen.toggleShading());
-                view.invalidate();
-            }
-            case TOGGLE_INTEGRATOR -> {
-                status.note(seen.toggleTransport());
-                view.invalidate();
-            }
-            case DEPTH_UP, DEPTH_DOWN -> {
-                int max = seen.config.limits().maxRecursion();
-                int next = Math.max(1, Math.min(max, seen.depth + (action == Action.DEPTH_UP ? 1 : -1)));
-                status.note(next == seen.depth ? "depth stays " + seen.depth + " (from 1 to " + max
-                        + ", max_recursion)" : "depth " + next);
-                if (next != seen.depth) {
-                    seen.depth = next;
-                    view.invalidate();
-                }
-            }
+            case TOGGLE_SHADING -> status.note(view.toggleShading());
+            case TOGGLE_INTEGRATOR -> status.note(view.toggleTransport());
+            case DEPTH_UP -> status.note(view.stepDepth(1));
+            case DEPTH_DOWN -> status.note(view.stepDepth(-1));
             case SCREENSHOT -> status.note(captures.screenshot());
             case RELOAD -> reloads.reload();
             case LEVEL -> {
-                if (controller.level()) {
-                    view.cameraMoved();
-                }
+                view.level();
                 status.note("level");
             }
             case HOME -> {
@@ -81,7 +61,7 @@ final class Commands {
                 status.note("the scene's camera");
             }
             case VIEW -> goToView(in.view());
-            case PRINT_CAMERA -> status.note(CameraBlock.print(controller.camera(), out, status.log()));
+            case PRINT_CAMERA -> status.note(CameraBlock.print(view.camera(), out, status.log()));
             case NEXT_SCENE -> browser.open(1);
             case PREVIOUS_SCENE -> browser.open(-1);
             case RENDER_STILL, RENDER_STILL_PFM -> status.note(captures.still(action == Action.RENDER_STILL_PFM, out));
@@ -112,8 +92,7 @@ final class Commands {
                     : " views (keys 1 to " + views.size() + ")"));
             return;
         }
-        view.controller().reset(views.get(index).camera());
-        view.cameraMoved();
+        view.goTo(views.get(index).camera());
         status.note("view " + (index + 1) + ": " + views.get(index).name());
     }
 }

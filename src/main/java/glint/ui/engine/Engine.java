@@ -112,7 +112,7 @@ public final class Engine implements Runnable, SceneWatcher.Listener {
                 () -> running = false);
         this.lastMotion = clock.nanoTime() - MOTION_HOLD_NANOS - 1;
         source.limits(config.limits().scene());
-        size.check(view.settings().config.limits());
+        size.check(view.settings().config().limits());
         view.show(scene, true);
     }
 
@@ -251,7 +251,7 @@ public final class Engine implements Runnable, SceneWatcher.Listener {
         }
         reloads.takePending();
         if (size.resize(input.viewWidth(), input.viewHeight())) {
-            size.check(view.settings().config.limits());
+            size.check(view.settings().config().limits());
             view.invalidate();
         }
         if (in.wheelNotches() != 0) {
@@ -262,13 +262,12 @@ public final class Engine implements Runnable, SceneWatcher.Listener {
             controller.orbitAround(OrbitPivot.pick(view.compiled(), controller.camera(), in, size.width(),
                     size.height()));
         }
-        boolean moved = controller.apply(in);
+        boolean moved = view.fly(in);
         if (in.seconds(Action.ZOOM_IN) > 0 || in.seconds(Action.ZOOM_OUT) > 0) { // Z or X held: the fov as it changes
             status.note(controller.fovNote());
         }
         if (moved) {
             lastMotion = start;
-            view.cameraMoved();
         }
         for (Action command : in.commands()) {
             if (command.jumpsCamera()) { // after the interval's motion: the key came after it
@@ -298,14 +297,10 @@ public final class Engine implements Runnable, SceneWatcher.Listener {
 
     /** F5 read the config again: every part takes its settings. */
     private void configure(Config c) {
-        CameraController controller = view.controller();
-        view.settings().configFile(c, view.scene());
-        controller.setSpeeds(c.moveSpeed(), c.turnSpeed());
-        controller.setFreeFlight(c.freeFlight());
+        view.configFile(c); // the view's settings and speeds, drawn anew
         maker.configure(c);
         source.limits(c.limits().scene());
-        size.check(view.settings().config.limits());
+        size.check(view.settings().config().limits());
         presenter.title(c.name());
-        view.invalidate();
     }
 }

@@ -55,11 +55,11 @@ final class FrameOutput {
         lastStats = stats(meter.fps(), nanos / 1e6, image.getWidth(), image.getHeight(), size.width(), size.height(),
                 samples, moving);
         publish();
-        if (view.settings().config.debug() && meter.windowClosed()) {
+        if (view.settings().config().debug() && meter.windowClosed()) {
             err.println(String.format(Locale.ROOT, "glint: window %.1f fps, %.1f ms/frame, %dx%d of %dx%d, %s",
                     lastStats.fps(), lastStats.msPerFrame(), lastStats.renderWidth(), lastStats.renderHeight(),
                     size.width(), size.height(), moving ? "moving" : "still, samples " + samples + "/"
-                            + view.settings().config.samples()));
+                            + view.settings().config().samples()));
         }
     }
 
@@ -103,11 +103,11 @@ final class FrameOutput {
     private FrameStats stats(double fps, double msPerFrame, int renderWidth, int renderHeight, int frameViewWidth,
                              int frameViewHeight, int samplesDone, boolean moving) {
         ViewSettings seen = view.settings();
-        boolean path = seen.transport == LightTransport.PATH;
+        boolean path = seen.transport() == LightTransport.PATH;
         double noise = path && !moving && samplesDone > 1 ? renderer.relativeNoise() : Double.NaN;
         return new FrameStats(fps, msPerFrame, renderWidth, renderHeight, frameViewWidth, frameViewHeight,
-                samplesDone, Refinement.passes(seen.still()), moving, renderer.threads(), seen.shading,
-                seen.transport, noise, seen.depth,
+                samplesDone, Refinement.passes(seen.still()), moving, renderer.threads(), seen.shading(),
+                seen.transport(), noise, seen.depth(),
                 view.controller().speed(), source.scenePath().toString(), status.message(), status.error(),
                 size.sizeLimit(), faults.overlayLine());
     }

@@ -1,14 +1,17 @@
 package glint.ui.view;
 
+import glint.config.Config;
 import glint.render.RenderScene;
 import glint.scene.Camera;
 import glint.scene.Scene;
 import glint.ui.input.CameraController;
+import glint.ui.input.InputFrame;
 
 /**
  * What the window shows: the scene, the camera flying through it, the settings it is seen with, the scene
- * compiled for them, and how far the still refinement of the view has come. Whatever changes the view calls
- * {@link #invalidate}, which starts the frame over. Engine thread only, except {@link #camera()} and
+ * compiled for them, and how far the still refinement of the view has come. The camera and the settings
+ * change only through this class, which starts the frame over ({@link #invalidate}) whenever they do; others
+ * read them ({@link #controller()}, {@link #settings()}). Engine thread only, except {@link #camera()} and
  * {@link #sceneNow()}, which any thread may read.
  */
 public final class SceneView {
@@ -52,12 +55,65 @@ public final class SceneView {
 
     /** Home: back to the scene file's camera. */
     public void home() {
-        controller.reset(fileCamera);
+        goTo(fileCamera);
+    }
+
+    /** Keys 1 to 9: the camera jumps to {@code camera} (a view of the scene). */
+    public void goTo(Camera camera) {
+        controller.reset(camera);
         cameraMoved();
     }
 
+    /** L: the roll taken out of the camera, if it has any. */
+    public void level() {
+        if (controller.level()) {
+            cameraMoved();
+        }
+    }
+
+    /** One interval of input flies the camera; returns whether it moved (then the view is drawn anew). */
+    public boolean fly(InputFrame in) {
+        boolean moved = controller.apply(in);
+        if (moved) {
+            cameraMoved();
+        }
+        return moved;
+    }
+
+    /** M or Tab: the other shading model (phong brings Whitted's integrator); returns what the overlay says. */
+    public String toggleShading() {
+        String note = seen.toggleShading();
+        invalidate();
+        return note;
+    }
+
+    /** I: the other integrator (the path integrator brings cook-torrance); returns what the overlay says. */
+    public String toggleTransport() {
+        String note = seen.toggleTransport();
+        invalidate();
+        return note;
+    }
+
+    /** + (+1) or - (-1): the depth one step up or down within 1 to max_recursion; returns what the overlay says. */
+    public String stepDepth(int step) {
+        int before = seen.depth();
+        String note = seen.stepDepth(step);
+        if (seen.depth() != before) {
+            invalidate();
+        }
+        return note;
+    }
+
+    /** F5 read the config again: its settings (under the scene's block) and flying speeds replace the user's. */
+    public void configFile(Config config) {
+        seen.configFile(config, scene);
+        controller.setSpeeds(config.moveSpeed(), config.turnSpeed());
+        controller.setFreeFlight(config.freeFlight());
+        invalidate();
+    }
+
     /** The camera moved or jumped (a motion, Home, a view, L): the view is drawn anew. */
-    public void cameraMoved() {
+    private void cameraMoved() {
         cameraNow = controller.camera();
         invalidate();
     }

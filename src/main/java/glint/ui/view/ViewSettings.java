@@ -11,20 +11,18 @@ import glint.ui.frames.ResolutionGovernor;
 
 /**
  * What the window sees a scene with: config.properties under the scene's {@code render:} block, under the
- * command line's flags ({@link Flags#effective}); and on top, the shading and depth the user picked with M,
- * + and -, which hold until the scene's or the config's value for them changes. Engine thread only.
+ * command line's flags ({@link Flags#effective}); and on top, the shading, integrator and depth the user
+ * picked with M, I, + and -, which hold until the scene's or the config's value for them changes. Others
+ * read it; only its {@link SceneView} changes it, and starts the frame over when it does. Engine thread only.
  */
 public final class ViewSettings {
 
     private final Flags flags;
     private Config base; // config.properties with the command line's flags
-    /** The scene's settings: base under its render: block, under the flags. */
-    public Config config;
-    /** The shading and depth on screen: the scene's, or the user's. */
-    public Shading shading;
-    public int depth;
-    /** The integrator on screen: the scene's, or the user's (key I). */
-    public LightTransport transport;
+    private Config config; // the scene's settings: base under its render: block, under the flags
+    private Shading shading; // the shading, integrator and depth on screen: the scene's, or the user's
+    private LightTransport transport;
+    private int depth;
     private String blockError = "";
 
     public ViewSettings(Config base, Flags flags) {
@@ -58,6 +56,26 @@ public final class ViewSettings {
         shading = config.shading();
         transport = config.transport();
         depth = config.recursionMax(); // at most max_recursion: the config loader and the block refuse more
+    }
+
+    /** The scene's settings: config.properties under its render: block, under the command line's flags. */
+    public Config config() {
+        return config;
+    }
+
+    /** The shading model on screen: the scene's, or the user's (M or Tab). */
+    public Shading shading() {
+        return shading;
+    }
+
+    /** The integrator on screen: the scene's, or the user's (key I). */
+    public LightTransport transport() {
+        return transport;
+    }
+
+    /** The recursion depth on screen: the scene's, or the user's (+ and -). */
+    public int depth() {
+        return depth;
     }
 
     /** Why the scene's render: block was left out (beyond the config's limits), or empty. */
@@ -96,6 +114,20 @@ public final class ViewSettings {
             return "integrator path, shading cook-torrance (path needs it)";
         }
         return "integrator " + transport.key();
+    }
+
+    /**
+     * One step up (+1) or down (-1) in depth, from 1 to the config's max_recursion; returns what the overlay
+     * says.
+     */
+    String stepDepth(int step) {
+        int max = config.limits().maxRecursion();
+        int next = Math.max(1, Math.min(max, depth + step));
+        if (next == depth) {
+            return "depth stays " + depth + " (from 1 to " + max + ", max_recursion)";
+        }
+        depth = next;
+        return "depth " + next;
     }
 
     /**

@@ -101,27 +101,25 @@ class CommandsTest {
 
     /** The user flew somewhere else than the file's camera. */
     private void flyAway() {
-        view.controller().reset(Camera.lookAt(new Vector3d(5, 2, 5), new Vector3d(0, 1, 0), new Vector3d(0, 1, 0),
-                40));
-        view.cameraMoved();
+        view.goTo(Camera.lookAt(new Vector3d(5, 2, 5), new Vector3d(0, 1, 0), new Vector3d(0, 1, 0), 40));
     }
 
     @Test
     void shadingSwitchesAndTheViewIsDrawnAnew() {
         view.movingFrameShown();
         run(Action.TOGGLE_SHADING);
-        assertEquals(Shading.PHONG, view.settings().shading);
+        assertEquals(Shading.PHONG, view.settings().shading());
         assertEquals("shading phong", status.message());
         assertTrue(view.needFrame());
         run(Action.TOGGLE_SHADING);
-        assertEquals(Shading.COOK_TORRANCE, view.settings().shading);
+        assertEquals(Shading.COOK_TORRANCE, view.settings().shading());
     }
 
     @Test
     void depthStaysWithinOneAndMaxRecursion() {
         view.movingFrameShown();
         run(Action.DEPTH_UP);
-        assertEquals(3, view.settings().depth);
+        assertEquals(3, view.settings().depth());
         assertEquals("depth stays 3 (from 1 to 3, max_recursion)", status.message());
         assertFalse(view.needFrame(), "nothing to draw again");
         run(Action.DEPTH_DOWN);
@@ -129,7 +127,7 @@ class CommandsTest {
         assertEquals("depth 1", status.message());
         assertTrue(view.needFrame());
         run(Action.DEPTH_DOWN);
-        assertEquals(1, view.settings().depth);
+        assertEquals(1, view.settings().depth());
         assertEquals("depth stays 1 (from 1 to 3, max_recursion)", status.message());
     }
 
@@ -216,6 +214,6 @@ class CommandsTest {
         assertFalse(view.needFrame());
         assertEquals("", status.message());
         assertEquals(0, quits.get());
-        assertNotEquals(Shading.PHONG, view.settings().shading);
+        assertNotEquals(Shading.PHONG, view.settings().shading());
     }
 }

@@ -106,20 +106,20 @@ class PathRefinementTest {
     void keyISwitchesTheIntegratorAndPhongAndThePathExcludeEachOther() {
         view.movingFrameShown();
         press(Action.TOGGLE_INTEGRATOR);
-        assertEquals(LightTransport.PATH, view.settings().transport);
+        assertEquals(LightTransport.PATH, view.settings().transport());
         assertEquals("integrator path", status.message());
         assertTrue(view.needFrame(), "drawn anew");
         assertEquals(LightTransport.PATH, view.settings().render().transport());
         press(Action.TOGGLE_SHADING);
-        assertEquals(Shading.PHONG, view.settings().shading);
-        assertEquals(LightTransport.WHITTED, view.settings().transport);
+        assertEquals(Shading.PHONG, view.settings().shading());
+        assertEquals(LightTransport.WHITTED, view.settings().transport());
         assertEquals("shading phong, integrator whitted (path needs cook-torrance)", status.message());
         press(Action.TOGGLE_INTEGRATOR);
-        assertEquals(Shading.COOK_TORRANCE, view.settings().shading);
-        assertEquals(LightTransport.PATH, view.settings().transport);
+        assertEquals(Shading.COOK_TORRANCE, view.settings().shading());
+        assertEquals(LightTransport.PATH, view.settings().transport());
         assertEquals("integrator path, shading cook-torrance (path needs it)", status.message());
         press(Action.TOGGLE_INTEGRATOR);
-        assertEquals(LightTransport.WHITTED, view.settings().transport);
+        assertEquals(LightTransport.WHITTED, view.settings().transport());
         assertEquals("integrator whitted", status.message());
     }
 

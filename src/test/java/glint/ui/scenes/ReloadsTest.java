@@ -76,8 +76,7 @@ class ReloadsTest {
     /** The user flew somewhere else than the file's camera. */
     private Camera flyAway() {
         Camera elsewhere = Camera.lookAt(new Vector3d(5, 2, 5), new Vector3d(0, 1, 0), new Vector3d(0, 1, 0), 40);
-        view.controller().reset(elsewhere);
-        view.cameraMoved();
+        view.goTo(elsewhere);
         return view.controller().camera();
     }
 
