@@ -43,9 +43,40 @@ public final class SceneWatcher implements AutoCloseable {
         void failed(InputException error);
     }
 
+    /** What runs the watcher's reads: a thread of its own, or a test that says when a period has passed. */
+    interface Timer extends AutoCloseable {
+
+        /** Runs {@code read} every {@code periodMillis} ms, the first time one period from now. */
+        void every(long periodMillis, Runnable read);
+
+        /** No more reads. */
+        @Override
+        void close();
+    }
+
+    /** The reads on a daemon thread, {@code glint-scene-watcher}. */
+    private static final class ThreadTimer implements Timer {
+
+        private final ScheduledExecutorService executor = Executors.newSingleThreadScheduledExecutor(r -> {
+            Thread t = new Thread(r, "glint-scene-watcher");
+            t.setDaemon(true);
+            return t;
+        });
+
+        @Override
+        public void every(long periodMillis, Runnable read) {
+            executor.scheduleWithFixedDelay(read, periodMillis, periodMillis, TimeUnit.MILLISECONDS);
+        }
+
+        @Override
+        public void close() {
+            executor.shutdownNow();
+        }
+    }
+
     private final SceneSource source;
     private Path file; // the source's scene when last read
-    private final ScheduledExecutorService timer;
+    private final Timer timer;
     private volatile Listener listener;
     private byte[] last;     // the content last reported (at start: the content loaded before watching)
     private byte[] pending;  // a new content read once, loaded if the next read finds it again
@@ -58,33 +89,29 @@ public final class SceneWatcher implements AutoCloseable {
      * {@link SceneSource#loadScene}, within the source's limits.
      */
     public SceneWatcher(SceneSource source) {
+        this(source, new ThreadTimer());
+    }
+
+    /** A watcher whose reads {@code timer} runs (tests: when they say a period has passed). */
+    SceneWatcher(SceneSource source, Timer timer) {
         this.source = source;
         this.file = source.scenePath();
         this.last = read();
-        this.timer = Executors.newSingleThreadScheduledExecutor(r -> {
-            Thread t = new Thread(r, "glint-scene-watcher");
-            t.setDaemon(true);
-            return t;
-        });
+        this.timer = timer;
     }
 
     /** Starts reading the file every {@link #PERIOD_MILLIS} ms, reporting changes to {@code to}. */
     public void start(Listener to) {
         this.listener = to;
-        timer.scheduleWithFixedDelay(this::pollSafely, PERIOD_MILLIS, PERIOD_MILLIS, TimeUnit.MILLISECONDS);
-    }
-
-    /** Reports changes to {@code to} from the next {@link #poll} on, without a timer (tests). */
-    void listen(Listener to) {
-        this.listener = to;
+        timer.every(PERIOD_MILLIS, this::pollSafely);
     }
 
     /**
      * Reads the file once. A content that differs from the one last reported is remembered; if the next
-     * poll reads it again (it stayed the same for a period), it is loaded and reported. A file that is
-     * gone is reported the same way (gone for two reads: an editor saving by rename is not).
+     * read, a period later, finds it again (it stayed the same for a period), it is loaded and reported. A
+     * file that is gone is reported the same way (gone for two reads: an editor saving by rename is not).
      */
-    void poll() {
+    private void poll() {
         if (!file.equals(source.scenePath())) { // the window opened another scene: watch that one from now
             file = source.scenePath();
             last = read();
@@ -185,6 +212,6 @@ public final class SceneWatcher implements AutoCloseable {
 
     @Override
     public void close() {
-        timer.shutdownNow();
+        timer.close();
     }
 }

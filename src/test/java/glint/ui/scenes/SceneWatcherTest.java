@@ -15,18 +15,24 @@ import java.io.OutputStream;
 import java.nio.charset.StandardCharsets;
 import java.nio.file.Files;
 import java.nio.file.Path;
+import java.nio.file.StandardOpenOption;
+import java.nio.file.attribute.FileTime;
 import java.time.Duration;
 import java.util.ArrayList;
 import java.util.List;
+import java.util.Locale;
+import java.util.TreeMap;
 import org.junit.jupiter.api.AfterEach;
 import org.junit.jupiter.api.BeforeEach;
 import org.junit.jupiter.api.Test;
 import org.junit.jupiter.api.io.TempDir;
 
 /**
- * The scene watcher never loads a file that is half written: a change is loaded only once it reads the
- * same for one period. The dangerous half is one that is itself a valid scene (the objects cut off after
- * the first), so the scenes here are cut just there.
+ * The scene watcher never loads a file that is half written: a change is loaded only once two reads a
+ * period apart find the same bytes and the same modification time. The dangerous half is one that is
+ * itself a valid scene (the objects cut off after the first), so the scenes here are cut just there. The
+ * test says when a period has passed ({@link ManualTimer}), and sets the files' modification times itself:
+ * no test waits for the watcher's thread but the one that checks that thread.
  */
 class SceneWatcherTest {
 
@@ -35,26 +41,34 @@ class SceneWatcherTest {
 
     private Path file;
     private SceneSource source;
+    private final ManualTimer timer = new ManualTimer();
     private SceneWatcher watcher;
     private final Recorder recorder = new Recorder();
 
-    /** Everything the watcher reported, in order. */
+    /** Everything the watcher reported, in order, and on which thread. */
     static final class Recorder implements SceneWatcher.Listener {
 
         private final List<Object> reports = new ArrayList<>();
+        private final List<String> threads = new ArrayList<>();
 
         @Override
         public synchronized void loaded(Scene scene) {
             reports.add(scene);
+            threads.add(Thread.currentThread().getName());
         }
 
         @Override
         public synchronized void failed(InputException error) {
             reports.add(error);
+            threads.add(Thread.currentThread().getName());
         }
 
         synchronized List<Object> reports() {
             return List.copyOf(reports);
+        }
+
+        synchronized List<String> threads() {
+            return List.copyOf(threads);
         }
     }
 
@@ -64,7 +78,7 @@ class SceneWatcherTest {
         source = new SceneSource(file, () -> {
             throw new AssertionError("no config read");
         });
-        watcher = new SceneWatcher(source);
+        watcher = new SceneWatcher(source, timer);
     }
 
     @AfterEach
@@ -77,6 +91,12 @@ class SceneWatcherTest {
         return scene.substring(0, scene.lastIndexOf("  - {type: plane"));
     }
 
+    /** Writes the file in place (truncated, then written) and gives it the modification time {@code millis}. */
+    private void write(String text, long millis) throws IOException {
+        Files.writeString(file, text);
+        Files.setLastModifiedTime(file, FileTime.fromMillis(millis));
+    }
+
     @Test
     void theFirstHalfOfASceneIsItselfAValidScene() throws InputException {
         String whole = TestScenes.sphere(0.9, 0.1, 0.1);
@@ -85,38 +105,61 @@ class SceneWatcherTest {
     }
 
     @Test
+    void theFileIsReadEveryPeriodAndAChangeLoadedWhenTwoReadsAPeriodApartAgree() throws IOException {
+        watcher.start(recorder);
+        assertEquals(250, timer.periodMillis(), "four reads a second");
+        assertEquals(SceneWatcher.PERIOD_MILLIS, timer.periodMillis());
+        timer.tick();
+        assertEquals(List.of(), recorder.reports(), "unchanged: nothing to report");
+        write(TestScenes.sphere(0.9, 0.1, 0.1), 1_000_000);
+        timer.tick(); // the change, read once: maybe still being written
+        assertEquals(List.of(), recorder.reports());
+        timer.tick(); // a period later, the same bytes and time: loaded
+        assertEquals(1, recorder.reports().size(), recorder.reports().toString());
+        assertEquals(0.9, ((Scene) recorder.reports().get(0)).background().x(), 1e-12);
+        timer.tick();
+        timer.tick();
+        assertEquals(1, recorder.reports().size(), "reported once");
+    }
+
+    @Test
     void aFileWrittenInTwoHalvesIsLoadedOnlyWhole() throws IOException {
-        watcher.listen(recorder);
+        watcher.start(recorder);
         String whole = TestScenes.sphere(0.9, 0.1, 0.1);
-        Files.writeString(file, firstHalf(whole));
-        watcher.poll(); // reads the half: maybe still being written
+        write(firstHalf(whole), 1_000_000);
+        timer.tick(); // reads the half: maybe still being written
         assertEquals(List.of(), recorder.reports());
-        Files.writeString(file, whole);
-        watcher.poll(); // changed again
+        write(whole, 1_000_030);
+        timer.tick(); // changed again
         assertEquals(List.of(), recorder.reports());
-        watcher.poll(); // the same for a period: loaded
+        timer.tick(); // the same for a period: loaded
         List<Object> reports = recorder.reports();
         assertEquals(1, reports.size(), reports.toString());
         Scene loaded = (Scene) reports.get(0);
         assertEquals(2, loaded.objects().size());
-        watcher.poll();
+        timer.tick();
         assertEquals(1, recorder.reports().size(), "reported once");
     }
 
     @Test
     void aChangeUndoneWithinAPeriodIsNotReported() throws IOException {
-        watcher.listen(recorder);
+        watcher.start(recorder);
         String original = Files.readString(file);
         Files.writeString(file, "");
-        watcher.poll();
+        timer.tick();
         Files.writeString(file, original);
-        watcher.poll();
-        watcher.poll();
+        timer.tick();
+        timer.tick();
         assertEquals(List.of(), recorder.reports());
     }
 
+    /**
+     * A writer that stops half way (an editor, a network copy) for less than a period is read at most once
+     * in the pause, so its half is never loaded: each save, written in place through one stream, is reported
+     * once and whole.
+     */
     @Test
-    void aWriterPausingHalfWayNeverShowsAHalfScene() throws Exception {
+    void aWriterPausingHalfWayForLessThanAPeriodNeverShowsAHalfScene() throws Exception {
         watcher.start(recorder);
         int rounds = 8;
         for (int round = 1; round <= rounds; round++) {
@@ -126,11 +169,12 @@ class SceneWatcherTest {
             try (OutputStream out = Files.newOutputStream(file)) { // truncates, writes in place
                 out.write(bytes, 0, half);
                 out.flush();
-                Thread.sleep(SceneWatcher.PERIOD_MILLIS * 2 / 5); // an editor or a network copy stalls
+                timer.tick(); // the one read that falls in the pause
                 out.write(bytes, half, bytes.length - half);
             }
-            int expected = round;
-            Poll.until(() -> recorder.reports().size() >= expected, 5_000, "round " + round + " loaded");
+            timer.tick();
+            timer.tick();
+            assertEquals(round, recorder.reports().size(), "round " + round + " loaded");
         }
         List<Object> reports = recorder.reports();
         assertEquals(rounds, reports.size(), "each save once, nothing in between: " + reports);
@@ -143,20 +187,14 @@ class SceneWatcherTest {
 
     /** Version {@code n} of a scene whose versions differ only near the end: their first halves are the same bytes. */
     private static String version(int n) {
-        return TestScenes.sphere(0.5, 0.5, 0.5) + String.format(java.util.Locale.ROOT,
+        return TestScenes.sphere(0.5, 0.5, 0.5) + String.format(Locale.ROOT,
                 "  - {type: sphere, center: [2, 1, 0], radius: %.3f}%n", 0.5 + n / 1000.0);
     }
 
-    /** Truncates the file and writes the first half of {@code text}, then, {@code pauseMillis} later, the rest. */
-    private void saveInTwoHalves(String text, long pauseMillis) throws Exception {
+    /** The first half of {@code text}'s bytes: mid-line, a YAML error. */
+    private static byte[] half(String text) {
         byte[] bytes = text.getBytes(StandardCharsets.UTF_8);
-        int half = bytes.length / 2; // mid-line: a YAML error
-        try (OutputStream out = Files.newOutputStream(file)) {
-            out.write(bytes, 0, half);
-            out.flush();
-            Thread.sleep(pauseMillis); // the writer's own pace, as the user's editor or copy goes
-            out.write(bytes, half, bytes.length - half);
-        }
+        return java.util.Arrays.copyOf(bytes, bytes.length / 2);
     }
 
     /**
@@ -166,56 +204,85 @@ class SceneWatcherTest {
      */
     @Test
     void theSameHalfOfTwoSavesIsNotTakenForAFileThatStayedTheSame() throws Exception {
-        watcher.listen(recorder);
-        String half = version(1).substring(0, version(1).getBytes(StandardCharsets.UTF_8).length / 2);
-        assertTrue(version(2).startsWith(half), "the two saves' first halves are the same bytes");
-        Files.writeString(file, half);
-        watcher.poll(); // the first save's half
-        Thread.sleep(30); // the saves' own pace
-        Files.writeString(file, version(1));
-        Thread.sleep(10);
-        Files.writeString(file, half); // the next save has written its first half, the same bytes...
-        watcher.poll(); // ... when the watcher reads again
+        watcher.start(recorder);
+        assertTrue(version(2).startsWith(new String(half(version(1)), StandardCharsets.UTF_8)),
+                "the two saves' first halves are the same bytes");
+        Files.write(file, half(version(1)));
+        Files.setLastModifiedTime(file, FileTime.fromMillis(1_000_000));
+        timer.tick(); // the first save's half
+        write(version(1), 1_000_030);
+        Files.write(file, half(version(2))); // the next save has written its first half, the same bytes...
+        Files.setLastModifiedTime(file, FileTime.fromMillis(1_000_040));
+        timer.tick(); // ... when the watcher reads again
         assertEquals(List.of(), recorder.reports(), "nothing loaded: the file changed between the two reads");
-        Files.writeString(file, version(2));
-        watcher.poll();
-        watcher.poll();
+        write(version(2), 1_000_070);
+        timer.tick();
+        timer.tick();
         List<Object> reports = recorder.reports();
         assertEquals(1, reports.size(), reports.toString());
         assertEquals(3, ((Scene) reports.get(0)).objects().size(), "the last save, whole");
     }
 
-    /** 50 valid saves in 2 s, each written in two halves 30 ms apart: never an error, and the last one loads. */
+    /**
+     * 50 valid saves in 2 s, each written in two halves 30 ms apart (the first half a YAML error, and the same
+     * bytes in every save), read every 250 ms: never an error, and the last one loads. The time line is the
+     * test's: each write gets the modification time of its moment, and the watcher reads at each period.
+     */
     @Test
     void fiftySavesInTwoSecondsEachInTwoHalvesNeverShowAHalfFile() throws Exception {
         watcher.start(recorder);
+        long origin = 1_000_000;
+        TreeMap<Long, List<String>> timeLine = new TreeMap<>(); // ms from the origin: what happens then
         for (int n = 1; n <= 50; n++) {
-            saveInTwoHalves(version(n), 30);
-            Thread.sleep(10);
+            timeLine.computeIfAbsent(40L * n, t -> new ArrayList<>()).add("half " + n);
+            timeLine.computeIfAbsent(40L * n + 30, t -> new ArrayList<>()).add("rest " + n);
         }
-        Poll.until(() -> !recorder.reports().isEmpty() && recorder.reports().get(recorder.reports().size() - 1)
-                instanceof Scene last && last.objects().size() == 3, 5_000, () -> "the last save loaded: "
-                + recorder.reports());
-        for (Object report : recorder.reports()) {
-            assertTrue(report instanceof Scene, () -> "only whole saves reported: " + recorder.reports());
+        long end = 40L * 50 + 30 + 2 * SceneWatcher.PERIOD_MILLIS;
+        for (long t = SceneWatcher.PERIOD_MILLIS; t <= end; t += SceneWatcher.PERIOD_MILLIS) {
+            timeLine.computeIfAbsent(t, x -> new ArrayList<>()).add("read");
         }
+        int halvesRead = 0;
+        boolean half = false;
+        for (var moment : timeLine.entrySet()) {
+            for (String event : moment.getValue()) {
+                String[] words = event.split(" ");
+                if (words[0].equals("read")) {
+                    halvesRead += half ? 1 : 0;
+                    timer.tick();
+                    continue;
+                }
+                String text = version(Integer.parseInt(words[1]));
+                if (words[0].equals("half")) {
+                    Files.write(file, half(text));
+                } else {
+                    byte[] bytes = text.getBytes(StandardCharsets.UTF_8);
+                    Files.write(file, java.util.Arrays.copyOfRange(bytes, bytes.length / 2, bytes.length),
+                            StandardOpenOption.APPEND);
+                }
+                half = words[0].equals("half");
+                Files.setLastModifiedTime(file, FileTime.fromMillis(origin + moment.getKey()));
+            }
+        }
+        assertTrue(halvesRead >= 2, "reads fell on half files, the same bytes each time: " + halvesRead);
         List<Object> reports = recorder.reports();
+        for (Object report : reports) {
+            assertTrue(report instanceof Scene, () -> "only whole saves reported: " + reports);
+        }
+        assertTrue(!reports.isEmpty(), "the last save loaded");
         String lastRadius = String.valueOf(((Scene) reports.get(reports.size() - 1)).objects().get(2));
         assertTrue(lastRadius.contains("0.55"), lastRadius);
     }
 
-    /** Memory running out on the watcher's thread (here, in what it reports to) does not end the watching. */
+    /** Memory running out in a read (here, in what the watcher reports to) is reported, and the reads go on. */
     @Test
-    void theWatcherGoesOnAfterMemoryRanOutOnItsThread() throws Exception {
+    void theWatcherGoesOnAfterMemoryRanOutInARead() throws Exception {
         boolean[] thrown = {false};
         watcher.start(new SceneWatcher.Listener() {
             @Override
             public void loaded(Scene scene) {
-                synchronized (thrown) {
-                    if (!thrown[0]) {
-                        thrown[0] = true;
-                        throw new OutOfMemoryError("Java heap space");
-                    }
+                if (!thrown[0]) {
+                    thrown[0] = true;
+                    throw new OutOfMemoryError("Java heap space");
                 }
                 recorder.loaded(scene);
             }
@@ -225,71 +292,92 @@ class SceneWatcherTest {
                 recorder.failed(error);
             }
         });
-        TestScenes.replace(file, TestScenes.sphere(0.7, 0.5, 0.5));
-        Poll.until(() -> !recorder.reports().isEmpty(), 5_000, "the failure reported");
+        write(TestScenes.sphere(0.7, 0.5, 0.5), 1_000_000);
+        timer.tick();
+        timer.tick();
         assertEquals(file + ": cannot watch: java.lang.OutOfMemoryError: Java heap space",
                 ((InputException) recorder.reports().get(0)).getMessage());
-        TestScenes.replace(file, TestScenes.sphere(0.3, 0.5, 0.5));
-        Poll.until(() -> recorder.reports().size() >= 2, 5_000, () -> "the next save loaded: " + recorder.reports());
+        write(TestScenes.sphere(0.3, 0.5, 0.5), 1_000_500);
+        timer.tick();
+        timer.tick();
+        assertEquals(2, recorder.reports().size(), () -> "the next save loaded: " + recorder.reports());
         assertEquals(0.3, ((Scene) recorder.reports().get(1)).background().x(), 1e-12);
+    }
+
+    /** The watcher of the program reads on a thread of its own, and closing it stops its timer. */
+    @Test
+    void theProgramsWatcherReadsOnAThreadOfItsOwn() throws Exception {
+        SceneWatcher own = new SceneWatcher(source);
+        try {
+            own.start(recorder);
+            TestScenes.replace(file, TestScenes.sphere(0.7, 0.5, 0.5));
+            Poll.until(() -> !recorder.reports().isEmpty(), 10_000, "the save loaded");
+            assertEquals(0.7, ((Scene) recorder.reports().get(0)).background().x(), 1e-12);
+            assertEquals(List.of("glint-scene-watcher"), recorder.threads());
+        } finally {
+            own.close();
+        }
+        watcher.start(recorder);
+        watcher.close();
+        assertTrue(timer.closed());
     }
 
     @Test
     void theSceneIsReadWithinTheSourcesLimits() throws IOException {
-        watcher.listen(recorder);
+        watcher.start(recorder);
         source.limits(new SceneLimits(SceneLimits.DEFAULT.maxFileBytes(), 1, SceneLimits.DEFAULT.maxLights()));
         Files.writeString(file, TestScenes.sphere(0.5, 0.5, 0.5));
-        watcher.poll();
-        watcher.poll();
+        timer.tick();
+        timer.tick();
         InputException e = (InputException) recorder.reports().get(0);
         assertTrue(e.getMessage().endsWith("too many objects: more than 1 (config key max_objects)"), e.getMessage());
     }
 
     @Test
     void aFileOverTheSizeLimitIsRefusedWithoutReadingIt() throws IOException {
-        watcher.listen(recorder);
+        watcher.start(recorder);
         source.limits(new SceneLimits(1000, SceneLimits.DEFAULT.maxObjects(), SceneLimits.DEFAULT.maxLights()));
         Files.writeString(file, TestScenes.sphere(0.5, 0.5, 0.5) + "#".repeat(5000) + "\n");
-        watcher.poll();
-        watcher.poll();
+        timer.tick();
+        timer.tick();
         InputException e = (InputException) recorder.reports().get(0);
         assertTrue(e.getMessage().endsWith("(config key max_scene_bytes)"), e.getMessage());
-        watcher.poll();
+        timer.tick();
         assertEquals(1, recorder.reports().size(), "reported once");
     }
 
     @Test
     void aVanishedFileIsReportedOnlyIfItStaysAway() throws IOException {
-        watcher.listen(recorder);
+        watcher.start(recorder);
         String original = Files.readString(file);
         Files.delete(file);
-        watcher.poll(); // an editor saving by rename: gone for a moment
+        timer.tick(); // an editor saving by rename: gone for a moment
         Files.writeString(file, original);
-        watcher.poll();
-        watcher.poll();
+        timer.tick();
+        timer.tick();
         assertEquals(List.of(), recorder.reports());
         Files.delete(file);
-        watcher.poll();
-        watcher.poll();
+        timer.tick();
+        timer.tick();
         assertEquals(file + ": no such file", ((InputException) recorder.reports().get(0)).getMessage());
     }
 
     @Test
     void aSceneReplacedByAFifoIsReportedWithoutBlockingAndTheNextGoodFileLoads() throws Exception {
-        watcher.listen(recorder);
+        watcher.start(recorder);
         Files.delete(file);
         Process mkfifo = new ProcessBuilder("mkfifo", file.toString()).start();
         assertEquals(0, mkfifo.waitFor(), "mkfifo");
         assertTimeoutPreemptively(Duration.ofSeconds(20), () -> {
-            watcher.poll(); // opening a FIFO for reading would block until a writer comes: never opened
-            watcher.poll();
+            timer.tick(); // opening a FIFO for reading would block until a writer comes: never opened
+            timer.tick();
         });
         assertEquals(file + ": is not a regular file (a pipe, device or socket); expected a file on disk",
                 ((InputException) recorder.reports().get(0)).getMessage());
         Files.delete(file);
         Files.writeString(file, TestScenes.sphere(0.3, 0.6, 0.9));
-        watcher.poll();
-        watcher.poll();
+        timer.tick();
+        timer.tick();
         assertEquals(0.6, ((Scene) recorder.reports().get(1)).background().y(), 1e-12, "the watcher still works");
     }
 }
