@@ -6,7 +6,6 @@ import glint.scene.Scene;
 import glint.ui.capture.Screenshots;
 import glint.ui.engine.Engine;
 import glint.ui.frames.RefinePacing;
-import glint.ui.input.Clock;
 import glint.ui.input.InputState;
 import glint.ui.scenes.SceneSource;
 import glint.ui.scenes.SceneWatcher;
@@ -101,9 +100,9 @@ public final class GlintWindow {
             frame[0].pack();
             frame[0].setLocationByPlatform(true); // the window manager places it; (0, 0) without one
         }, watcher);
-        InputState input = new InputState(Clock.SYSTEM, display[0].getWidth(), display[0].getHeight());
+        InputState input = new InputState(hooks.clock(), display[0].getWidth(), display[0].getHeight());
         Engine engine = new Engine(config, scene, source, input, hooks.presenter().apply(display[0]), screenshots,
-                Clock.SYSTEM, err, hooks.trace());
+                hooks.clock(), err, hooks.trace());
         engine.paceRefinement(RefinePacing.windowInterval(config.targetFps())); // quick passes: several at once
         engine.printTo(out);
         GlintWindow window = new GlintWindow(frame[0], display[0], engine, input, watcher);

@@ -5,7 +5,6 @@ import static org.junit.jupiter.api.Assertions.assertEquals;
 import static org.junit.jupiter.api.Assertions.assertFalse;
 import static org.junit.jupiter.api.Assertions.assertNotEquals;
 import static org.junit.jupiter.api.Assertions.assertSame;
-import static org.junit.jupiter.api.Assertions.assertThrows;
 import static org.junit.jupiter.api.Assertions.assertTrue;
 
 import glint.config.Config;
@@ -23,7 +22,6 @@ import glint.ui.input.InputState;
 import glint.ui.scenes.SceneSource;
 import glint.ui.screen.FrameStats;
 import glint.ui.screen.OverlayText;
-import glint.ui.swing.GlintWindow;
 import java.awt.image.BufferedImage;
 import java.io.IOException;
 import java.io.PrintWriter;
@@ -300,18 +298,6 @@ class EngineFaultTest {
         BufferedImage saved = ImageIO.read(png.toFile());
         assertEquals("163x122", saved.getWidth() + "x" + saved.getHeight());
         assertEquals("saved " + png + " at 163x122 (at most 20,000 pixels (max_image_pixels))", lastStats().message());
-    }
-
-    @Test
-    void aConfiguredWindowLargerThanTheLimitIsRefusedBeforeItOpens() {
-        Limits small = new Limits(1_000_000, Limits.DEFAULT.maxSceneBytes(), Limits.DEFAULT.maxObjects(),
-                Limits.DEFAULT.maxLights(), Limits.DEFAULT.maxRecursion());
-        Config tooLarge = Config.defaults().withSize(1600, 1200).withLimits(small);
-        InputException e = assertThrows(InputException.class, () -> GlintWindow.open(tooLarge,
-                new SceneSource(dir.resolve("never-read.yaml"), () -> tooLarge), new Screenshots(dir),
-                new PrintWriter(errText, true)));
-        assertEquals("glint: display_width x display_height: 1600x1200 is 1.9 megapixels; the largest image allowed"
-                + " is 1.0 megapixels (config key max_image_pixels)", e.getMessage());
     }
 
     @Test

@@ -6,9 +6,13 @@ import static org.junit.jupiter.api.Assertions.assertTrue;
 
 import glint.config.Config;
 import glint.math.Vector3d;
+import glint.scene.Camera;
+import glint.ui.FakeClock;
 import glint.ui.Poll;
 import glint.ui.TestScenes;
 import glint.ui.capture.Screenshots;
+import glint.ui.engine.Engine;
+import glint.ui.frames.FrameRenderer;
 import glint.ui.input.Action;
 import glint.ui.input.CameraController;
 import glint.ui.scenes.SceneSource;
@@ -38,8 +42,9 @@ import org.junit.jupiter.api.condition.EnabledIf;
 import org.junit.jupiter.api.io.TempDir;
 
 /**
- * The real window on a real display (Xvfb in CI), driven by java.awt.Robot. Skipped without a display,
- * so that {@code mvn verify} passes anywhere.
+ * The real window on a real display (Xvfb in CI), driven by java.awt.Robot, on a clock the test moves: a
+ * key held for a second of that clock flies the camera exactly a second's worth. Skipped without a
+ * display, so that {@code mvn verify} passes anywhere.
  */
 @EnabledIf("hasDisplay")
 class WindowTest {
@@ -52,6 +57,7 @@ class WindowTest {
     @TempDir
     Path dir;
 
+    private final FakeClock clock = new FakeClock();
     private GlintWindow window;
     private Robot robot;
     private final StringWriter err = new StringWriter();
@@ -65,7 +71,7 @@ class WindowTest {
         Path scene = Files.writeString(dir.resolve("scene.yaml"), TestScenes.sphere(0.1, 0.2, 0.3));
         Config config = Config.defaults().withSize(W, H).withSamples(4).withThreads(2);
         window = GlintWindow.open(config, new SceneSource(scene, () -> config), new Screenshots(dir),
-                new PrintWriter(err, true));
+                new PrintWriter(err, true), new WindowHooks(FrameRenderer.TraceCall.TRACER, p -> p, clock));
         robot = new Robot();
         Poll.until(() -> window.frame().isShowing() && refined(),
                 20_000, () -> "the window shows a refined frame; err: " + err);
@@ -89,17 +95,23 @@ class WindowTest {
         return f != null && f.image() != null && f.stats().refined() && f.stats().viewWidth() == W;
     }
 
-    /** Holds a key for about {@code millis}; returns how long it was held, in seconds. */
-    private double hold(int keyCode, long millis) throws InterruptedException {
-        long start = System.nanoTime();
+    /**
+     * Holds the key of {@code action} for {@code seconds} of the window's clock, then lets the motion hold
+     * pass, and waits until the view is refined from the new camera.
+     */
+    private void hold(int keyCode, Action action, double seconds) throws InterruptedException {
+        Camera before = window.engine().camera();
+        BufferedImage shownBefore = window.display().shown().image();
         robot.keyPress(keyCode);
-        Thread.sleep(millis); // the duration of the key press itself
+        Poll.until(() -> window.input().isDown(action), 5_000, () -> action + " down; err: " + err);
+        clock.advance(seconds);
         robot.keyRelease(keyCode);
-        double seconds = (System.nanoTime() - start) / 1e9;
-        Poll.until(() -> !window.input().isDown(Action.FORWARD) && !window.input().isDown(Action.YAW_RIGHT)
-                && !window.input().isDown(Action.RIGHT), 5_000, () -> "the key up; err: " + err);
-        Poll.until(this::refined, 20_000, () -> "still again; err: " + err);
-        return seconds;
+        Poll.until(() -> !window.input().isDown(action), 5_000, () -> action + " up; err: " + err);
+        Poll.until(() -> !window.engine().camera().equals(before), 5_000, () -> "the camera moved; err: " + err);
+        clock.advance(Engine.MOTION_HOLD_NANOS / 1e9); // the camera at rest: the view refines
+        window.input().signal();
+        Poll.until(() -> refined() && window.display().shown().image() != shownBefore, 20_000,
+                () -> "still again; err: " + err);
     }
 
     private void tap(int keyCode) {
@@ -141,22 +153,24 @@ class WindowTest {
     @Test
     void holdingWFliesForwardBySpeedTimesTime() throws Exception {
         Vector3d before = window.engine().camera().position();
-        double seconds = hold(KeyEvent.VK_W, 1000);
+        hold(KeyEvent.VK_W, Action.FORWARD, 1);
         Vector3d moved = window.engine().camera().position().sub(before);
-        double expected = SPEED * seconds;
-        assertEquals(expected, moved.z(), 0.15 * expected, "flew " + moved + " in " + seconds + " s");
+        assertEquals(SPEED * 1, moved.z(), 1e-9, "flew " + moved + " in a second");
         assertEquals(0, moved.x(), 1e-9);
         assertEquals(0, moved.y(), 1e-9);
+        hold(KeyEvent.VK_W, Action.FORWARD, 0.25);
+        assertEquals(SPEED * 1.25, window.engine().camera().position().sub(before).z(), 1e-9, "and a quarter more");
     }
 
     @Test
     void arrowKeysTurnTheCamera() throws Exception {
-        double seconds = hold(KeyEvent.VK_RIGHT, 750);
+        hold(KeyEvent.VK_RIGHT, Action.YAW_RIGHT, 0.75);
         double yaw = yawDegrees(window.engine().camera().orientation().forward());
-        assertEquals(TURN * seconds, yaw, 0.15 * TURN * seconds, "turned right " + yaw + " degrees");
+        assertEquals(TURN * 0.75, yaw, 1e-9, "turned right " + yaw + " degrees");
 
-        hold(KeyEvent.VK_UP, 500);
-        assertTrue(window.engine().camera().orientation().forward().y() > 0.2, "looks up");
+        hold(KeyEvent.VK_UP, Action.PITCH_UP, 0.5);
+        assertEquals(Math.sin(Math.toRadians(TURN * 0.5)), window.engine().camera().orientation().forward().y(), 1e-9,
+                "looks up by 30 degrees");
     }
 
     @Test
@@ -176,7 +190,7 @@ class WindowTest {
     @Test
     void theWindowChangesAsTheCameraMoves() throws Exception {
         BufferedImage first = capture();
-        hold(KeyEvent.VK_D, 500);
+        hold(KeyEvent.VK_D, Action.RIGHT, 0.5);
         BufferedImage second = capture();
         int[] a = pixels(first);
         int[] b = pixels(second);
