@@ -93,7 +93,7 @@ class CameraBlockTest {
         assertTrue(printed.contains("\nviews:\n  - {position: [0.123457, 1, -3], look_at: ["), printed);
     }
 
-    /** Flight stops 1e150 from the origin, the longest length of a scene: key C's block of a camera there reads back. */
+    /** Flight stops 1e150 from the origin, a scene's longest length: key C's block of a camera there reads back. */
     @Test
     void aCameraAsFarOutAsFlightGoesReadsBack() throws InputException {
         Camera far = new Camera(new Vector3d(0, 0, 9e149), Quaternion.IDENTITY, 60);

@@ -107,7 +107,8 @@ class SceneViewTest {
         assertEquals(view.scene().camera(), view.camera());
         assertStartsOver("W held", v -> assertTrue(v.fly(new InputFrame.Builder().hold(Action.FORWARD, 0.5).build())));
         Vector3d flown = view.camera().position().sub(view.scene().camera().position());
-        assertEquals(0, flown.sub(new Vector3d(0, 0, 1)).length(), 1e-12, "half a second at 2 units a second: " + flown);
+        assertEquals(0, flown.sub(new Vector3d(0, 0, 1)).length(), 1e-12,
+                "half a second at 2 units a second: " + flown);
         Camera rolled = new Camera(Vector3d.ZERO, Quaternion.fromAxisAngle(Vector3d.UNIT_Z, 0.3), 60);
         view.goTo(rolled);
         assertStartsOver("L", SceneView::level);
