@@ -170,6 +170,10 @@ public final class SceneView {
         return seen;
     }
 
+    /**
+     * The camera's controller, to read (its speed, the fov note) and to give the orbit's pivot; its pose
+     * changes through this class ({@link #fly}, {@link #goTo}, {@link #home}, {@link #level}, {@link #show}).
+     */
     public CameraController controller() {
         return controller;
     }
