@@ -1,7 +1,7 @@
 package glint.app;
 
 import glint.config.JarCommand;
-import glint.ui.KeyBindings;
+import glint.ui.input.KeyBindings;
 import java.util.ArrayList;
 import java.util.List;
 

@@ -1,15 +1,15 @@
 package glint.app;
 
 import glint.config.Config;
-import glint.config.JarCommand;
 import glint.config.Flags;
+import glint.config.JarCommand;
 import glint.input.InputException;
 import glint.scene.Scene;
 import glint.scenefile.SceneLoader;
-import glint.ui.ConfigSource;
-import glint.ui.GlintWindow;
-import glint.ui.SceneSource;
-import glint.ui.Screenshots;
+import glint.ui.capture.Screenshots;
+import glint.ui.scenes.ConfigSource;
+import glint.ui.scenes.SceneSource;
+import glint.ui.swing.GlintWindow;
 import java.awt.AWTError;
 import java.awt.GraphicsEnvironment;
 import java.awt.HeadlessException;

@@ -3,7 +3,7 @@ package glint.app;
 import static org.junit.jupiter.api.Assertions.assertEquals;
 import static org.junit.jupiter.api.Assertions.assertTrue;
 
-import glint.ui.KeyBindings;
+import glint.ui.input.KeyBindings;
 import java.io.PrintWriter;
 import java.io.StringWriter;
 import org.junit.jupiter.api.Test;

@@ -1,9 +1,10 @@
 package glint.ui;
 
+import glint.ui.input.Clock;
 import java.util.concurrent.atomic.AtomicLong;
 
 /** A clock that moves only when told to. */
-final class FakeClock implements Clock {
+public final class FakeClock implements Clock {
 
     private final AtomicLong now = new AtomicLong(1_000_000_000L);
 
@@ -12,7 +13,7 @@ final class FakeClock implements Clock {
         return now.get();
     }
 
-    void advance(double seconds) {
+    public void advance(double seconds) {
         now.addAndGet(Math.round(seconds * 1e9));
     }
 }

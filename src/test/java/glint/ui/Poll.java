@@ -1,5 +1,6 @@
 package glint.ui;
 
+import glint.ui.swing.GlintWindow;
 import java.awt.Point;
 import java.awt.Robot;
 import java.awt.event.InputEvent;
@@ -9,7 +10,7 @@ import java.util.function.Supplier;
 import javax.swing.SwingUtilities;
 
 /** Waiting in tests for what another thread (the engine, the watcher, Swing) does, without fixed sleeps. */
-final class Poll {
+public final class Poll {
 
     private Poll() {
     }
@@ -18,7 +19,7 @@ final class Poll {
      * Checks {@code condition} every few milliseconds until it holds; fails with {@code what} and the
      * deadline if it does not within {@code deadlineMillis}. Returns the milliseconds it took.
      */
-    static long until(BooleanSupplier condition, long deadlineMillis, Supplier<String> what)
+    public static long until(BooleanSupplier condition, long deadlineMillis, Supplier<String> what)
             throws InterruptedException {
         long start = System.nanoTime();
         while (!condition.getAsBoolean()) {
@@ -31,12 +32,12 @@ final class Poll {
     }
 
     /** {@link #until} with a fixed description. */
-    static long until(BooleanSupplier condition, long deadlineMillis, String what) throws InterruptedException {
+    public static long until(BooleanSupplier condition, long deadlineMillis, String what) throws InterruptedException {
         return until(condition, deadlineMillis, () -> what);
     }
 
     /** The value of {@code task} computed on the Swing event thread. */
-    static <T> T onEventThread(Supplier<T> task) throws Exception {
+    public static <T> T onEventThread(Supplier<T> task) throws Exception {
         Object[] result = new Object[1];
         SwingUtilities.invokeAndWait(() -> result[0] = task.get());
         @SuppressWarnings("unchecked")
@@ -45,7 +46,7 @@ final class Poll {
     }
 
     /** Clicks the middle of the window's display and waits until it holds the keyboard focus. */
-    static void clickToFocus(GlintWindow window, Robot robot, Supplier<String> what) throws Exception {
+    public static void clickToFocus(GlintWindow window, Robot robot, Supplier<String> what) throws Exception {
         Point centre = onEventThread(() -> {
             Point p = window.display().getLocationOnScreen();
             return new Point(p.x + window.display().getWidth() / 2, p.y + window.display().getHeight() / 2);

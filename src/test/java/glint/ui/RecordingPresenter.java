@@ -1,10 +1,12 @@
 package glint.ui;
 
+import glint.ui.screen.Presenter;
+import glint.ui.screen.ShownFrame;
 import java.util.ArrayList;
 import java.util.List;
 
 /** Keeps every frame the engine presents. */
-final class RecordingPresenter implements Presenter {
+public final class RecordingPresenter implements Presenter {
 
     private final List<ShownFrame> frames = new ArrayList<>();
     private String title;
@@ -19,15 +21,15 @@ final class RecordingPresenter implements Presenter {
         this.title = newTitle;
     }
 
-    synchronized List<ShownFrame> frames() {
+    public synchronized List<ShownFrame> frames() {
         return List.copyOf(frames);
     }
 
-    synchronized ShownFrame last() {
+    public synchronized ShownFrame last() {
         return frames.isEmpty() ? null : frames.get(frames.size() - 1);
     }
 
-    synchronized String title() {
+    public synchronized String title() {
         return title;
     }
 }

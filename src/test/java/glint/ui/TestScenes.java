@@ -8,13 +8,13 @@ import java.nio.file.StandardCopyOption;
 import java.util.Locale;
 
 /** Small scenes for the window tests. */
-final class TestScenes {
+public final class TestScenes {
 
     private TestScenes() {
     }
 
     /** A red sphere on a grey floor, camera at (0, 1, -4) looking along +z, the given background. */
-    static String sphere(double r, double g, double b) {
+    public static String sphere(double r, double g, double b) {
         return String.format(Locale.ROOT, """
                 camera: {position: [0, 1, -4], look_at: [0, 1, 0]}
                 background: [%s, %s, %s]
@@ -27,7 +27,7 @@ final class TestScenes {
     }
 
     /** Replaces a file's content at once (as editors do: write aside, then rename over it). */
-    static void replace(Path file, String text) throws IOException {
+    public static void replace(Path file, String text) throws IOException {
         Path aside = file.resolveSibling(file.getFileName() + ".tmp");
         Files.writeString(aside, text, StandardCharsets.UTF_8);
         Files.move(aside, file, StandardCopyOption.REPLACE_EXISTING, StandardCopyOption.ATOMIC_MOVE);

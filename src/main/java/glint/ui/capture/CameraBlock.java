@@ -1,0 +1,106 @@
+package glint.ui.capture;
+
+import glint.input.InputException;
+import glint.math.Vector3d;
+import glint.scene.Camera;
+import glint.scenefile.SceneLoader;
+import java.math.BigDecimal;
+import java.math.RoundingMode;
+
+/**
+ * A camera written as the {@code camera:} block of a scene file (key C): position, a look_at one unit
+ * ahead, the camera's up and its field of view. Pasted into a scene, or under {@code views:}, it gives the
+ * same picture: the numbers keep six decimals, a hundred-thousandth of a degree of the view. A scene far
+ * smaller or larger than a unit (a position of 5e-20, or 1e20) keeps its numbers whole instead, and a
+ * camera far from the origin looks at a point as much farther ahead as six decimals need.
+ */
+public final class CameraBlock {
+
+    private CameraBlock() {
+    }
+
+    /**
+     * What key C prints: the {@code camera:} block and the same camera as a one-line item of {@code views:},
+     * ready to paste under a scene's {@code views:}; the whole is a scene of its own, too.
+     */
+    static String blocks(Camera camera) {
+        return yaml(camera) + "views:\n" + viewItem(camera) + "\n";
+    }
+
+    /**
+     * Prints {@link #blocks} (key C) and returns it for the overlay; if standard output does not take it,
+     * returns why, and says so on {@code err}.
+     */
+    public static String print(Camera camera, java.io.PrintWriter out, java.io.PrintWriter err) {
+        String text = blocks(camera);
+        String failed = Printing.print(out, text);
+        if (failed == null) {
+            return text.strip();
+        }
+        err.println("glint: camera not printed: " + failed);
+        return "camera not printed: " + failed;
+    }
+
+    /** The camera as an item of a scene's {@code views:} list, indented as under the key: {@code - {...}}. */
+    static String viewItem(Camera camera) {
+        Vector3d p = camera.position();
+        return "  - {position: " + vector(p) + ", look_at: " + vector(lookAt(camera))
+                + ", up: " + vector(camera.orientation().up()) + ", fov: " + number(camera.fovDegrees()) + "}";
+    }
+
+    /** The camera a scene holding the printed block has: the block read back as the scene loader reads it. */
+    static Camera asPrinted(Camera camera) {
+        try {
+            return SceneLoader.parse("camera", yaml(camera)).camera();
+        } catch (InputException e) { // a camera no block can hold (turned, 1e300 out): the still is of it as it is
+            return camera;
+        }
+    }
+
+    /** The block, four lines under {@code camera:}, each ending in a newline. */
+    static String yaml(Camera camera) {
+        Vector3d p = camera.position();
+        return "camera:\n"
+                + "  position: " + vector(p) + "\n"
+                + "  look_at: " + vector(lookAt(camera)) + "\n"
+                + "  up: " + vector(camera.orientation().up()) + "\n"
+                + "  fov: " + number(camera.fovDegrees()) + "\n";
+    }
+
+    /**
+     * A point ahead of the camera: one unit, or a millionth of the position's distance from the origin
+     * when that is more (at 1e20, one unit ahead would round to the position itself), at most 1e150,
+     * the farthest a scene's look_at may be.
+     */
+    private static Vector3d lookAt(Camera camera) {
+        Vector3d p = camera.position();
+        return p.add(camera.orientation().forward().scale(Math.min(1e150, Math.max(1, largest(p) * 1e-6))));
+    }
+
+    private static double largest(Vector3d v) {
+        return Math.max(Math.abs(v.x()), Math.max(Math.abs(v.y()), Math.abs(v.z())));
+    }
+
+    /**
+     * Six decimals when the vector's largest number is of a size six decimals keep (1e-3 to 1e15);
+     * otherwise every number whole, as the shortest decimal that reads back as it is.
+     */
+    private static String vector(Vector3d v) {
+        double largest = largest(v);
+        if (largest == 0 || largest >= 1e-3 && largest < 1e15) {
+            return "[" + number(v.x()) + ", " + number(v.y()) + ", " + number(v.z()) + "]";
+        }
+        return "[" + whole(v.x()) + ", " + whole(v.y()) + ", " + whole(v.z()) + "]";
+    }
+
+    /** The shortest decimal that reads back as x: {@code 5.0E-20}; 0 as {@code 0}. */
+    static String whole(double x) {
+        return x == 0 ? "0" : Double.toString(x);
+    }
+
+    /** Six decimals at most, no trailing zeros, no minus zero. */
+    static String number(double x) {
+        String s = BigDecimal.valueOf(x).setScale(6, RoundingMode.HALF_EVEN).stripTrailingZeros().toPlainString();
+        return s.equals("-0") ? "0" : s;
+    }
+}

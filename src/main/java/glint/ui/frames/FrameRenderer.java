@@ -1,0 +1,131 @@
+package glint.ui.frames;
+
+import glint.render.FrameBuffer;
+import glint.render.RenderScene;
+import glint.render.Tracer;
+import java.awt.image.BufferedImage;
+
+/**
+ * The engine's use of the tracer: a quick one-sample frame while the camera moves, or the next
+ * sample pass of the progressive still image. Each call returns a new image of a complete frame.
+ *
+ * <p>After the render threads have traced a pass, adding it to the average and encoding the average
+ * to sRGB is split among as many threads as render ({@link PixelRanges}), so that a still pass in the
+ * window costs little more than the same pass headless.
+ */
+public final class FrameRenderer implements AutoCloseable {
+
+    /**
+     * How a frame is traced: by the tracer (the window), or by a test's stand-in around it that injects a
+     * fault into a tile or stamps each frame (the fault and soak tests).
+     */
+    @FunctionalInterface
+    public interface TraceCall {
+
+        /** What {@code pass} is for a moving frame: every sample of the pixel in one go. */
+        int WHOLE_FRAME = -1;
+
+        /** The tracer itself. */
+        TraceCall TRACER = (tracer, scene, target, samples, pass, count, divider) -> {
+            if (pass == WHOLE_FRAME) {
+                tracer.render(scene, target, samples, 0, divider);
+            } else if (count == 1) {
+                tracer.renderPass(scene, target, samples, pass, divider);
+            } else {
+                tracer.renderPasses(scene, target, samples, pass, count, divider);
+            }
+        };
+
+        /**
+         * Renders into {@code target}: samples {@code pass} .. {@code pass + count - 1} of {@code samples} of
+         * every pixel (their average), or all of them when {@code pass} is {@link #WHOLE_FRAME}; returns when
+         * every pixel is written.
+         */
+        void trace(Tracer tracer, RenderScene scene, FrameBuffer target, int samples, int pass, int count,
+                   int divider);
+    }
+
+    private final TraceCall call;
+    private Tracer tracer;
+    private int divider;
+    private FrameBuffer buffer;
+    private final Accumulator accumulator = new Accumulator();
+    private PixelRanges ranges;
+
+    public FrameRenderer(int threads, int divider) {
+        this(threads, divider, TraceCall.TRACER);
+    }
+
+    public FrameRenderer(int threads, int divider, TraceCall call) {
+        this.call = call;
+        this.tracer = new Tracer(threads);
+        this.ranges = new PixelRanges(threads);
+        this.divider = divider;
+    }
+
+    public int threads() {
+        return tracer.threads();
+    }
+
+    /** Uses {@code threads} render threads from now on (a new pool if the count changed). */
+    public void configure(int threads, int newDivider) {
+        if (threads != tracer.threads()) {
+            tracer.close();
+            tracer = new Tracer(threads);
+            ranges.close();
+            ranges = new PixelRanges(threads);
+        }
+        divider = newDivider;
+    }
+
+    /** A frame with one sample per pixel, through the pixel centres. */
+    public BufferedImage renderMoving(RenderScene scene, int width, int height) {
+        FrameBuffer frame = buffer(width, height);
+        call.trace(tracer, scene, frame, 1, TraceCall.WHOLE_FRAME, 1, divider);
+        BufferedImage image = SrgbEncoder.newImage(width, height);
+        int[] pixels = SrgbEncoder.pixels(image);
+        ranges.run(width * height, (from, to) -> SrgbEncoder.encode(frame, pixels, from, to));
+        return image;
+    }
+
+    /**
+     * Pass {@code pass} of the still image of {@code samples} samples per pixel, averaged with the
+     * passes before it (pass 0 starts over; after a failed pass the engine starts over).
+     */
+    BufferedImage renderPass(RenderScene scene, int width, int height, int samples, int pass) {
+        return renderPasses(scene, width, height, samples, pass, 1);
+    }
+
+    /** Passes {@code pass} .. {@code pass + count - 1} traced in one go, averaged with those before them. */
+    public BufferedImage renderPasses(RenderScene scene, int width, int height, int samples, int pass, int count) {
+        if (pass == 0) {
+            accumulator.reset(width, height);
+        }
+        FrameBuffer frame = buffer(width, height);
+        call.trace(tracer, scene, frame, samples, pass, count, divider);
+        BufferedImage image = SrgbEncoder.newImage(width, height);
+        int[] pixels = SrgbEncoder.pixels(image);
+        accumulator.beginPasses(count);
+        ranges.run(width * height, (from, to) -> accumulator.addAndEncode(frame, pixels, from, to));
+        return image;
+    }
+
+    /** The noise left in the still passes on screen, relative to their brightness ({@link Accumulator#relativeNoise}). */
+    public double relativeNoise() {
+        return accumulator.relativeNoise();
+    }
+
+    private FrameBuffer buffer(int width, int height) {
+        if (buffer == null || buffer.width() != width || buffer.height() != height) {
+            buffer = null; // the old one can go before the new one is taken
+            buffer = new FrameBuffer(width, height);
+        }
+        return buffer;
+    }
+
+    @Override
+    public void close() {
+        tracer.close();
+        ranges.close();
+    }
+}

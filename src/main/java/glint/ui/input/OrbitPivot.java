@@ -1,0 +1,42 @@
+package glint.ui.input;
+
+import glint.accel.Aggregate;
+import glint.geometry.Hit;
+import glint.math.Vector3d;
+import glint.render.RenderScene;
+import glint.scene.Camera;
+
+/** The point an orbit drag turns around: where the ray through the pixel under the mouse meets the scene. */
+public final class OrbitPivot {
+
+    private OrbitPivot() {
+    }
+
+    /** The point under the pixel where the orbit drag of {@code in} started. */
+    public static Vector3d pick(RenderScene scene, Camera camera, InputFrame in, int width, int height) {
+        return pick(scene, camera, in.orbitFromX(), in.orbitFromY(), width, height);
+    }
+
+    /**
+     * The nearest point of the scene on the ray through pixel (x, y) of a width x height view (the mapping
+     * of the tracer's pixel centres); when the ray meets nothing, the point
+     * {@link CameraController#ORBIT_MISS_DISTANCE} ahead of the camera, in the view's centre.
+     */
+    public static Vector3d pick(RenderScene scene, Camera camera, double x, double y, int width, int height) {
+        Vector3d eye = camera.position();
+        Vector3d forward = camera.orientation().forward();
+        double halfWidth = Math.tan(Math.toRadians(camera.fovDegrees()) / 2);
+        double halfHeight = halfWidth * height / width;
+        double sx = (x + 0.5) * 2 * halfWidth / width - halfWidth;
+        double sy = halfHeight - (y + 0.5) * 2 * halfHeight / height;
+        Vector3d d = forward.add(camera.orientation().right().scale(sx)).add(camera.orientation().up().scale(sy))
+                .normalize();
+        Aggregate aggregate = scene.aggregate();
+        Hit hit = new Hit();
+        if (aggregate.nearest(eye.x(), eye.y(), eye.z(), d.x(), d.y(), d.z(), Double.POSITIVE_INFINITY, Hit.NONE,
+                Hit.NONE, hit, aggregate.newStack()) && Double.isFinite(hit.t)) {
+            return eye.add(d.scale(hit.t));
+        }
+        return eye.add(forward.scale(CameraController.ORBIT_MISS_DISTANCE));
+    }
+}

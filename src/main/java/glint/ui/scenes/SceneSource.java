@@ -1,0 +1,66 @@
+package glint.ui.scenes;
+
+import glint.config.Config;
+import glint.config.Flags;
+import glint.input.InputException;
+import glint.scene.Scene;
+import glint.scenefile.SceneLimits;
+import glint.scenefile.SceneLoader;
+import java.nio.file.Path;
+
+/**
+ * Where the window's scene and config come from, to read them again on F5 or when the file changes, or to
+ * read the next scene of the folder (Page Down). The
+ * scene is read within the config's scene limits ({@code max_scene_bytes}, {@code max_objects},
+ * {@code max_lights}); the window sets them from its config at start and again after F5.
+ */
+public final class SceneSource {
+
+    private volatile Path scenePath;
+    private final ConfigSource configSource;
+    private volatile SceneLimits limits = SceneLimits.DEFAULT;
+    private final Flags flags;
+
+    public SceneSource(Path scenePath, ConfigSource configSource) {
+        this(scenePath, configSource, Flags.NONE);
+    }
+
+    /** A source whose scenes are seen with the command line's {@code flags} above their render: blocks. */
+    public SceneSource(Path scenePath, ConfigSource configSource, Flags flags) {
+        this.scenePath = scenePath;
+        this.configSource = configSource;
+        this.flags = flags;
+    }
+
+    /** The command line's settings, which rank above a scene's render: block. */
+    public Flags flags() {
+        return flags;
+    }
+
+    public Path scenePath() {
+        return scenePath;
+    }
+
+    /** Reads and watches another scene file from now on (Page Down, Page Up; any thread). */
+    public void scenePath(Path newScene) {
+        this.scenePath = newScene;
+    }
+
+    /** The limits the scene is read within. */
+    public SceneLimits limits() {
+        return limits;
+    }
+
+    /** Reads the scene within these limits from now on (any thread). */
+    public void limits(SceneLimits sceneLimits) {
+        this.limits = sceneLimits;
+    }
+
+    public Scene loadScene() throws InputException {
+        return SceneLoader.load(scenePath, limits);
+    }
+
+    public Config loadConfig() throws InputException {
+        return configSource.load();
+    }
+}

@@ -1,0 +1,109 @@
+package glint.ui.swing;
+
+import static org.junit.jupiter.api.Assertions.assertEquals;
+import static org.junit.jupiter.api.Assertions.assertFalse;
+import static org.junit.jupiter.api.Assertions.assertTrue;
+
+import glint.config.Config;
+import glint.config.Limits;
+import glint.ui.FaultyTrace;
+import glint.ui.Poll;
+import glint.ui.TestScenes;
+import glint.ui.capture.Screenshots;
+import glint.ui.frames.FrameRenderer;
+import glint.ui.scenes.SceneSource;
+import glint.ui.screen.FrameStats;
+import glint.ui.screen.OverlayText;
+import glint.ui.screen.ShownFrame;
+import java.awt.GraphicsEnvironment;
+import java.io.PrintWriter;
+import java.io.StringWriter;
+import java.nio.file.Files;
+import java.nio.file.Path;
+import javax.swing.SwingUtilities;
+import org.junit.jupiter.api.AfterEach;
+import org.junit.jupiter.api.Test;
+import org.junit.jupiter.api.condition.EnabledIf;
+import org.junit.jupiter.api.io.TempDir;
+
+/**
+ * Faults in the real window (Xvfb in CI; skipped without a display): render workers that throw, and a
+ * window resized beyond the frame size limit.
+ */
+@EnabledIf("hasDisplay")
+class WindowFaultTest {
+
+    private static final int W = 320;
+    private static final int H = 240;
+
+    @TempDir
+    Path dir;
+
+    private GlintWindow window;
+    private final StringWriter err = new StringWriter();
+
+    static boolean hasDisplay() {
+        return !GraphicsEnvironment.isHeadless();
+    }
+
+    private GlintWindow open(Config config, FrameRenderer.TraceCall trace) throws Exception {
+        Path scene = Files.writeString(dir.resolve("scene.yaml"), TestScenes.sphere(0.1, 0.2, 0.3));
+        window = GlintWindow.open(config, new SceneSource(scene, () -> config), new Screenshots(dir),
+                new PrintWriter(err, true), new WindowHooks(trace, p -> p));
+        return window;
+    }
+
+    @AfterEach
+    void close() throws InterruptedException {
+        if (window != null) {
+            window.close();
+            assertEquals(0, window.awaitExit(), "the engine never stopped on an error");
+        }
+        assertFalse(err.toString().contains("\tat "), () -> "stack trace on err:\n" + err);
+        assertFalse(err.toString().contains("unexpected"), () -> "error on err:\n" + err);
+    }
+
+    private ShownFrame shown() {
+        return window.display().shown();
+    }
+
+    @Test
+    void tilesThatThrowAreShownAndTheWindowRecoversByItself() throws Exception {
+        FaultyTrace trace = new FaultyTrace();
+        trace.faults.set(4);
+        Config config = Config.defaults().withSize(W, H).withSamples(4).withThreads(2);
+        open(config, trace);
+        Poll.until(() -> shown() != null && shown().stats().renderError().startsWith("render failed: a render worker"),
+                10_000, () -> "the error in the overlay; err: " + err);
+        assertTrue(window.engineAlive());
+        Poll.until(() -> shown().stats().refined() && shown().image() != null, 20_000,
+                "a refined frame, with no key pressed");
+        assertEquals("", shown().stats().renderError());
+        assertEquals(1, err.toString().lines().filter(l -> l.contains("render failed")).count(), err.toString());
+        assertTrue(err.toString().contains("rendering works again after 4 failed tries"), err.toString());
+        assertTrue(window.engineAlive());
+    }
+
+    @Test
+    void resizingBeyondTheLimitRendersSmallerFrames() throws Exception {
+        Limits limits = new Limits(100_000, Limits.DEFAULT.maxSceneBytes(), Limits.DEFAULT.maxObjects(),
+                Limits.DEFAULT.maxLights(), Limits.DEFAULT.maxRecursion());
+        Config config = Config.defaults().withSize(W, H).withSamples(1).withThreads(2).withLimits(limits);
+        open(config, FrameRenderer.TraceCall.TRACER);
+        Poll.until(() -> shown() != null && shown().image() != null && shown().stats().refined(),
+                20_000, () -> "first frame; err: " + err);
+        assertEquals(W * H, shown().image().getWidth() * shown().image().getHeight(), "76,800 pixels: allowed");
+
+        SwingUtilities.invokeAndWait(() -> window.frame().setSize(window.frame().getWidth() + 240,
+                window.frame().getHeight() + 180));
+        Poll.until(() -> shown().stats().viewWidth() == W + 240 && shown().stats().refined(), 20_000,
+                "a refined frame at the new size");
+        FrameStats s = shown().stats();
+        long pixels = (long) shown().image().getWidth() * shown().image().getHeight();
+        assertTrue(pixels <= 100_000 && pixels > 95_000, "as large as allowed, no larger: " + pixels);
+        assertEquals("100,000 pixels (max_image_pixels)", s.sizeLimit());
+        assertTrue(OverlayText.lines(s).contains(new OverlayText.Line(
+                "window too large: rendered at most 100,000 pixels (max_image_pixels)", OverlayText.Tone.NOTE)));
+        assertTrue(err.toString().contains("glint: the window is " + (W + 240) + "x" + (H + 180)), err.toString());
+    }
+}
