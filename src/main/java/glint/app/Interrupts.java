@@ -1,10 +1,5 @@
 package glint.app;
 
-import glint.image.ImageWriter;
-import glint.image.PartFile;
-import glint.render.Tracer;
-import java.io.IOException;
-import java.io.InterruptedIOException;
 import java.io.PrintWriter;
 import java.util.List;
 import java.util.concurrent.CountDownLatch;
@@ -13,14 +8,21 @@ import java.util.concurrent.atomic.AtomicBoolean;
 
 /**
  * A signal that ends the program (Ctrl-C's SIGINT, SIGTERM, SIGHUP, and the others of
- * {@link #OTHER_ENDING_SIGNALS}) during a headless run: cancels
- * the render or the image's write at once, gives the main thread a moment to stop and clean up, and
- * deletes the image's temporary file, so that no partial image is left and no stack trace is
- * printed. The rename that puts a finished image in place and the decision to stop exclude each
- * other: either the image was written (and the program says so) or it was not (and an existing one
- * is as it was). Installed for the length of one run; the JVM exits with 128 + the signal's number.
+ * {@link #OTHER_ENDING_SIGNALS}) during a headless run: cancels the work it watches at once (a still's
+ * render or write, whose hidden files its cancel deletes: {@link glint.still.StillRun#cancel}; the frames
+ * of {@code --bench}) and gives the main thread a moment to stop and clean up, so that no partial image is
+ * left and no stack trace is printed. A still's rename and its cancel exclude each other: either the image
+ * was written (and the program says so) or it was not (and an existing one is as it was). Installed for
+ * the length of one run; the JVM exits with 128 + the signal's number.
  */
-final class Interrupts implements AutoCloseable, ImageWriter.Watcher {
+final class Interrupts implements AutoCloseable {
+
+    /** The work a signal stops. */
+    @FunctionalInterface
+    interface Work {
+        /** Stops the work at once; returns false when it came too late (the image is in place). */
+        boolean cancel();
+    }
 
     /** How long the JVM waits for the main thread to stop before it exits anyway. */
     static final long WAIT_MILLIS = 2000;
@@ -30,11 +32,8 @@ final class Interrupts implements AutoCloseable, ImageWriter.Watcher {
     private final AtomicBoolean reported = new AtomicBoolean();
     private final PrintWriter err;
     private final String message;
-    private volatile Tracer tracer;
-    private volatile PartFile temp;
+    private volatile Work work;
     private volatile boolean stopping;
-    private volatile boolean written;
-    private volatile double writeProgress;
 
     private Interrupts(PrintWriter err, String message) {
         this.err = err;
@@ -79,65 +78,25 @@ final class Interrupts implements AutoCloseable, ImageWriter.Watcher {
         }
     }
 
-    /** The tracer to cancel and the temporary file to delete if the program is stopped. */
-    void watch(Tracer renderer, PartFile temporaryFile) {
-        this.tracer = renderer;
-        if (temporaryFile != null) {
-            this.temp = temporaryFile;
-        }
-        if (stopping && renderer != null) {
-            renderer.cancel();
-        }
-    }
-
-    /** True once the program is being stopped. */
-    boolean stopping() {
-        return stopping;
-    }
-
-    @Override
-    public boolean cancelled() {
-        return stopping;
-    }
-
-    @Override
-    public void progress(double fraction) {
-        writeProgress = fraction;
-    }
-
-    /** How far the image's write is, from 0 to 1. */
-    double writeProgress() {
-        return writeProgress;
-    }
-
-    /** Renames the finished image into place, unless the program is being stopped. */
-    @Override
-    public void replace(ImageWriter.Rename rename) throws IOException {
-        synchronized (this) {
-            if (stopping) {
-                throw new InterruptedIOException("interrupted");
-            }
-            rename.run();
-            written = true;
+    /** The work to stop if the program is stopped; stopped at once if it is being stopped already. */
+    void watch(Work stoppable) {
+        this.work = stoppable;
+        if (stopping) {
+            stoppable.cancel();
         }
     }
 
     /** What the shutdown hook does; also callable directly. */
     void stop() {
-        synchronized (this) { // after a rename under way, before any other
-            stopping = true;
-        }
-        Tracer t = tracer;
-        if (t != null) {
-            t.cancel();
-        }
+        stopping = true;
+        Work w = work;
+        boolean lost = w == null || w.cancel(); // after a rename under way, before any other
         try {
             finished.await(WAIT_MILLIS, TimeUnit.MILLISECONDS);
         } catch (InterruptedException e) {
             Thread.currentThread().interrupt();
         }
-        deleteTemp();
-        if (!written) {
+        if (lost) {
             report(message);
         }
     }
@@ -150,17 +109,9 @@ final class Interrupts implements AutoCloseable, ImageWriter.Watcher {
         }
     }
 
-    private void deleteTemp() {
-        PartFile p = temp;
-        if (p != null) {
-            p.delete();
-        }
-    }
-
     /** The run is over: the hook is removed (or, if the JVM is already stopping, let go). */
     @Override
     public void close() {
-        deleteTemp();
         finished.countDown();
         try {
             Runtime.getRuntime().removeShutdownHook(hook);

@@ -5,6 +5,8 @@ import glint.config.ConfigLoader;
 import glint.config.Flags;
 import glint.config.JarCommand;
 import glint.input.InputException;
+import glint.still.OutputFile;
+import glint.still.WriteFailure;
 import java.io.PrintWriter;
 import java.nio.file.Files;
 import java.nio.file.Path;
@@ -124,7 +126,7 @@ public final class Main implements Callable<Integer> {
             if (e instanceof Output.Failure failure) {
                 return outputFailed(failure, err);
             }
-            if (e instanceof Headless.WriteFailure failure) {
+            if (e instanceof WriteFailure failure) {
                 err.println(line("glint: " + failure.getMessage()));
                 return FAILURE;
             }

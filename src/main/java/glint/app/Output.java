@@ -1,5 +1,6 @@
 package glint.app;
 
+import glint.still.OutputFile;
 import java.io.FileDescriptor;
 import java.io.FileOutputStream;
 import java.io.FilterOutputStream;

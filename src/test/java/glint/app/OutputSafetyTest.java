@@ -196,18 +196,6 @@ class OutputSafetyTest {
         return all;
     }
 
-    @Test
-    void theFileSizeLimitIsReadFromTheProcessLimits() throws Exception {
-        Path limits = dir.resolve("limits");
-        Files.writeString(limits, "Limit                     Soft Limit           Hard Limit           Units\n"
-                + "Max cpu time              unlimited            unlimited            seconds\n"
-                + "Max file size             51200                unlimited            bytes\n");
-        assertEquals(51200, OutputFile.fileSizeLimit(limits));
-        Files.writeString(limits, "Max file size             unlimited            unlimited            bytes\n");
-        assertEquals(Long.MAX_VALUE, OutputFile.fileSizeLimit(limits));
-        assertEquals(Long.MAX_VALUE, OutputFile.fileSizeLimit(dir.resolve("no such file")));
-    }
-
     // ---------------------------------------------------------------- as another user
 
     @Test

@@ -270,7 +270,7 @@ class EngineStillTest {
         input.command(Action.RENDER_STILL);
         stepUntil("still not written: ");
         String image = Pattern.quote(notAFolder + "/") + "ball-\\d{8}-\\d{6}-\\d{3}\\.png";
-        assertTrue(message().matches("still not written: " + image + ": Not a directory"), message());
+        assertTrue(message().matches("still not written: cannot write '" + image + "': Not a directory"), message());
         assertTrue(err.toString().contains("glint: " + message() + "\n"), err::toString);
         assertFalse(err.toString().contains(".part"), err::toString);
     }
@@ -286,12 +286,32 @@ class EngineStillTest {
             input.command(Action.RENDER_STILL);
             stepUntil("still not written: ");
             String image = Pattern.quote(readOnly + "/") + "ball-\\d{8}-\\d{6}-\\d{3}\\.png";
-            assertTrue(message().matches("still not written: " + image + ": permission denied"), message());
+            assertTrue(message().matches("still not written: cannot write '" + image + "': Permission denied"), message());
             try (var list = Files.list(readOnly)) {
                 assertEquals(List.of(), list.toList());
             }
         } finally {
             Files.setPosixFilePermissions(readOnly, java.nio.file.attribute.PosixFilePermissions.fromString("rwxr-xr-x"));
         }
+    }
+
+    /**
+     * The window and {@code --output} check an image file in one place: the window's still into a folder that
+     * is a file is refused in the words the command line refuses the same file with, after its own prefix.
+     */
+    @Test
+    void theWindowAndTheCommandLineRefuseTheSameImageFileInTheSameWords() throws Exception {
+        Path notAFolder = Files.writeString(dir.resolve("not-a-folder"), "");
+        open(1, notAFolder);
+        input.command(Action.RENDER_STILL);
+        stepUntil("still not written: ");
+        String problem = message().substring("still not written: ".length());
+        Matcher image = Pattern.compile("cannot write '(.*)': .*").matcher(problem);
+        assertTrue(image.matches(), problem);
+        Path config = Files.writeString(dir.resolve("empty.properties"), "");
+        StringWriter mainErr = new StringWriter();
+        assertEquals(Main.BAD_INPUT, Main.run(new String[] {"--config", config.toString(), "--scene", sceneFile.toString(),
+                "--output", image.group(1)}, new PrintWriter(new StringWriter(), true), new PrintWriter(mainErr, true)));
+        assertEquals("glint: --output: " + problem + "\n", mainErr.toString());
     }
 }

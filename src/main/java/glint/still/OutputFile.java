@@ -1,4 +1,4 @@
-package glint.app;
+package glint.still;
 
 import glint.image.ImageWriter;
 import glint.image.PartFile;
@@ -17,15 +17,15 @@ import java.util.List;
 import java.util.Locale;
 
 /**
- * The image file of a headless render, checked before any work: everything that would make the
- * final rename fail or lose a file is refused up front, with one line and status 2. The image is
- * then written to a temporary file beside it (made here, so that an unwritable folder is found now)
- * and renamed over it when complete.
+ * An image file of a still, checked before any work: everything that would make the final rename fail
+ * or lose a file is refused up front ({@link StillRefused}). The image is then written to a hidden
+ * temporary file beside it (made here, so that an unwritable folder is found now) and renamed over it
+ * when complete ({@link StillRun}).
  */
-final class OutputFile {
+public final class OutputFile {
 
     /** Refuses a PFM output of this size that would be larger than this process may write (ulimit -f). */
-    static void checkSize(Path output, int width, int height) throws InputException {
+    static void checkSize(Path output, int width, int height) throws StillRefused {
         if (output.getFileName().toString().toLowerCase(Locale.ROOT).endsWith(".pfm")) {
             long size = ImageWriter.pfmBytes(width, height);
             long limit = fileSizeLimit(Path.of("/proc/self/limits"));
@@ -49,9 +49,10 @@ final class OutputFile {
      * the config) and what would fail only at the end, and makes its temporary file. What depends
      * on the image's size, known once the scene is read, is {@link #checkSize}'s.
      *
+     * @param inputs the files the output may not be: the scene, then the config (if any)
      * @return the temporary file beside the output, empty
      */
-    static PartFile prepare(Path output, List<Path> inputs) throws InputException {
+    static PartFile prepare(Path output, List<Path> inputs) throws StillRefused {
         if (!ImageWriter.isSupported(output)) {
             throw refused("expected a file ending in .png or .pfm, got " + InputException.quotePath(output));
         }
@@ -92,7 +93,7 @@ final class OutputFile {
                 checkReplaceable(output, folder, temp.path());
             }
             return temp;
-        } catch (InputException | RuntimeException e) {
+        } catch (StillRefused | RuntimeException e) {
             temp.close();
             throw e;
         }
@@ -103,7 +104,7 @@ final class OutputFile {
      * or root may rename over it; anyone else would find out only at the end. The temporary file,
      * just made, tells who this process is.
      */
-    private static void checkReplaceable(Path output, Path folder, Path temp) throws InputException {
+    private static void checkReplaceable(Path output, Path folder, Path temp) throws StillRefused {
         try {
             int mode = (Integer) Files.getAttribute(folder, "unix:mode");
             if ((mode & STICKY) == 0) {
@@ -172,7 +173,7 @@ final class OutputFile {
     }
 
     /** The output's attributes (following a symlink), or null when there is no such file. */
-    private static BasicFileAttributes attributes(Path output) throws InputException {
+    private static BasicFileAttributes attributes(Path output) throws StillRefused {
         try {
             return Files.readAttributes(output, BasicFileAttributes.class);
         } catch (NoSuchFileException e) {
@@ -183,7 +184,7 @@ final class OutputFile {
     }
 
     /** Why a file operation failed, in the system's words: {@code Permission denied}, never a Java class name. */
-    static String reason(IOException e) {
+    public static String reason(IOException e) {
         if (e instanceof FileSystemException fs && fs.getReason() != null) {
             return fs.getReason();
         }
@@ -208,7 +209,7 @@ final class OutputFile {
         return e.getMessage();
     }
 
-    private static InputException refused(String problem) {
-        return new InputException("glint", 0, 0, "--output: " + problem);
+    private static StillRefused refused(String problem) {
+        return new StillRefused(problem, true);
     }
 }

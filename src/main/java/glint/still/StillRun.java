@@ -1,0 +1,239 @@
+package glint.still;
+
+import glint.config.Config;
+import glint.config.LightTransport;
+import glint.image.ImageWriter;
+import glint.image.PartFile;
+import glint.image.PartGuard;
+import glint.render.FrameBuffer;
+import glint.render.RenderScene;
+import glint.render.Tracer;
+import java.io.IOException;
+import java.io.InterruptedIOException;
+import java.nio.file.Path;
+import java.util.ArrayList;
+import java.util.List;
+import java.util.Locale;
+import java.util.concurrent.CancellationException;
+import java.util.function.DoubleSupplier;
+
+/**
+ * One still image, from its files checked to its files in place: the one pipeline of {@code --output} and
+ * the window's render key. In order, on one thread: {@link #open} checks each image file and makes its
+ * hidden file beside it ({@code .a.png.1a2b.part}) before any work, with a guard process that deletes them
+ * if the program ends too abruptly to do it itself ({@link PartGuard}); {@link #render} checks the size
+ * against {@code ulimit -f} and the heap, then renders on a tracer of its own; {@link #write} writes each
+ * image to its hidden file and renames them all into place; {@link #close} deletes what was not renamed.
+ * {@link #cancel}, from any thread at any time, stops the render or the write at once and deletes the hidden
+ * files; it and the rename exclude each other, so "cancelled, nothing written" and "written" are never both
+ * true. A refusal before the work is a {@link StillRefused}, a failed write a {@link WriteFailure}, and a
+ * cancelled still throws {@link CancellationException} (open, render) or {@link InterruptedIOException}
+ * (write).
+ */
+public final class StillRun implements ImageWriter.Watcher, AutoCloseable {
+
+    /** Where a still says which step it is on and how far that step is (the command line's progress). */
+    @FunctionalInterface
+    public interface Steps {
+        /** Nobody is told. */
+        Steps NONE = (name, done) -> { };
+
+        /**
+         * The still goes on to the next step.
+         *
+         * @param done the fraction of the step done, from 0 to 1
+         */
+        void step(String name, DoubleSupplier done);
+    }
+
+    private final List<Path> images;
+    private final String ended;
+    // under this object's lock, as cancelled is set: the hidden files, and whether they are in place
+    private final List<PartFile> parts = new ArrayList<>();
+    private boolean renamed;
+    private volatile boolean cancelled;
+    private volatile Tracer tracer;
+    private PartGuard guard;
+    private volatile int filesWritten;
+    private volatile double writeFraction = -1; // of the file being written; below 0: not writing yet
+
+    /**
+     * @param images the files to write: a PNG, a PFM, or both (one frame, each in its format)
+     * @param ended  what the guard process says if it has to delete the hidden files
+     */
+    public StillRun(List<Path> images, String ended) {
+        this.images = List.copyOf(images);
+        this.ended = ended;
+    }
+
+    /** The files this still writes. */
+    public List<Path> images() {
+        return images;
+    }
+
+    /**
+     * Checks each image file against what it must never be ({@code inputs}: the scene, then the config)
+     * and what would fail only at the end ({@link OutputFile}), and makes its hidden file.
+     */
+    public void open(List<Path> inputs) throws StillRefused {
+        List<Path> made;
+        synchronized (this) {
+            checkCancelled();
+            for (Path image : images) {
+                parts.add(OutputFile.prepare(image, inputs));
+            }
+            made = parts.stream().map(PartFile::path).toList();
+        }
+        guard = PartGuard.of(made, ended); // SIGKILL, a crash, the X server gone: no Java code runs
+    }
+
+    /** Refuses a PFM of the config's size that would be larger than this process may write (ulimit -f). */
+    public void checkSize(Config config) throws StillRefused {
+        for (Path image : images) {
+            OutputFile.checkSize(image, config.displayWidth(), config.displayHeight());
+        }
+    }
+
+    /**
+     * Renders {@code scene} at the config's size, samples, threads and tiles, once the size and the heap
+     * allow it, into a new frame.
+     */
+    public FrameBuffer render(RenderScene scene, Config config, Steps steps) throws StillRefused {
+        checkSize(config);
+        MemoryCheck.check(config, MemoryCheck.STILL_BYTES_PER_PIXEL, Runtime.getRuntime());
+        FrameBuffer frame = new FrameBuffer(config.displayWidth(), config.displayHeight());
+        Tracer t;
+        synchronized (this) {
+            checkCancelled();
+            t = new Tracer(config.effectiveThreads());
+            tracer = t;
+        }
+        try {
+            steps.step("rendering", () -> t.tilesDone() / (double) t.frameTiles());
+            t.render(scene, frame, config.samples(), 0, config.screenDivider());
+            return frame;
+        } finally {
+            t.close();
+        }
+    }
+
+    /** Writes each image to its hidden file, then renames them all into place, unless cancelled before. */
+    public void write(FrameBuffer frame, Steps steps) throws IOException {
+        writeFraction = 0;
+        steps.step("writing the image", this::writtenFraction);
+        for (int i = 0; i < images.size(); i++) {
+            filesWritten = i;
+            writeFraction = 0;
+            Path image = images.get(i), part = parts.get(i).path();
+            OutputFile.keepPermissions(image, part);
+            try {
+                ImageWriter.writeTemporary(frame, image, part, this);
+            } catch (InterruptedIOException e) {
+                throw e;
+            } catch (IOException e) {
+                throw new WriteFailure(image, e);
+            }
+        }
+        synchronized (this) {
+            if (cancelled) {
+                throw new InterruptedIOException("cancelled");
+            }
+            for (int i = 0; i < images.size(); i++) {
+                try {
+                    ImageWriter.rename(parts.get(i).path(), images.get(i));
+                } catch (IOException e) {
+                    if (i == 0) {
+                        throw new WriteFailure(images.get(0), e);
+                    }
+                    renamed = true; // the first is there: say so, and why the next is not
+                    throw new WriteFailure(images.get(i), e, " (" + images.get(0) + " was written)");
+                }
+            }
+            renamed = true;
+        }
+    }
+
+    /**
+     * Cancels the still at once (any thread): no rename follows, the hidden files are deleted now (a write
+     * under way goes on into nothing and stops at its next bytes), the render's tiles not yet started are
+     * skipped. Returns false, changing nothing, when it comes too late: the images are in place.
+     */
+    public boolean cancel() {
+        Tracer t;
+        synchronized (this) {
+            if (renamed) {
+                return false;
+            }
+            cancelled = true;
+            parts.forEach(PartFile::delete);
+            t = tracer;
+        }
+        if (t != null) {
+            t.cancel();
+        }
+        return true;
+    }
+
+    /** Whether the still was cancelled. */
+    @Override
+    public boolean cancelled() {
+        return cancelled;
+    }
+
+    @Override
+    public void progress(double fraction) {
+        writeFraction = fraction;
+    }
+
+    /** Whether the images are being written (the render is done). */
+    public boolean writing() {
+        return writeFraction >= 0;
+    }
+
+    /** Percent of the render's tiles done (0 before it starts). */
+    public int percentRendered() {
+        Tracer t = tracer;
+        return t == null ? 0 : (int) (100L * t.tilesDone() / Math.max(1, t.frameTiles()));
+    }
+
+    /** Percent of the images written (0 before the write starts). */
+    public int percentWritten() {
+        return (int) (100 * (filesWritten + Math.min(1, Math.max(0, writeFraction))) / images.size());
+    }
+
+    private double writtenFraction() {
+        return (filesWritten + Math.min(1, writeFraction)) / images.size();
+    }
+
+    private void checkCancelled() {
+        if (cancelled) {
+            throw new CancellationException("the still was cancelled");
+        }
+    }
+
+    /** Deletes the hidden files not renamed into place, wherever their folder is now; ends the guard. */
+    @Override
+    public void close() {
+        synchronized (this) {
+            parts.forEach(PartFile::close);
+        }
+        if (guard != null) {
+            guard.close();
+        }
+        Tracer t = tracer;
+        if (t != null) {
+            t.close();
+        }
+    }
+
+    /**
+     * What a still is rendered with, as its report says it: {@code 800x600, 4 spp, phong, depth 16}, with
+     * {@code threads} {@code 800x600, 4 spp, 2 threads, cook-torrance, path, depth 16}.
+     */
+    public static String describe(Config config, boolean threads) {
+        return String.format(Locale.ROOT, "%dx%d, %d spp, %s%s%s, depth %d", config.displayWidth(),
+                config.displayHeight(), config.samples(), threads ? config.effectiveThreads() + " threads, " : "",
+                config.shading().key(), config.transport() == LightTransport.PATH ? ", path" : "",
+                config.recursionMax());
+    }
+}
