@@ -9,12 +9,12 @@ public final class Conductor implements Bsdf {
 
     /** The mirrored ray, weighted by Schlick's Fresnel per channel, whatever the roughness. */
     @Override
-    public void specular(Materials m, Surface s, PathVertex v) {
+    public void specular(Materials m, Surface s, SingleRays out) {
         int material = s.material;
         double cos = s.cosIncident;
-        v.setReflect(Optics.schlick(m.color(material, 0), cos), Optics.schlick(m.color(material, 1), cos),
+        out.setReflect(Optics.schlick(m.color(material, 0), cos), Optics.schlick(m.color(material, 1), cos),
                 Optics.schlick(m.color(material, 2), cos));
-        v.setTransmit(0, 0, 0);
+        out.setTransmit(0, 0, 0);
     }
 
     /**
