@@ -10,9 +10,9 @@ import java.util.List;
  * A primitive kind added by the recipe of docs/architecture.md, in test sources only: a flat disc,
  * written {@code {type: disc, center: [x, y, z], normal: [x, y, z], radius: r}}.
  */
-record Disc(Vector3d center, Vector3d normal, double radius) implements Shape {
+public record Disc(Vector3d center, Vector3d normal, double radius) implements Shape {
 
-    static final ShapeType<Disc> TYPE = new ShapeType<>("disc", Disc.class, List.of("center", "normal", "radius"),
+    public static final ShapeType<Disc> TYPE = new ShapeType<>("disc", Disc.class, List.of("center", "normal", "radius"),
             fields -> new Disc(fields.vector("center"), fields.direction("normal"), fields.length("radius")),
             Disc::compile);
 
