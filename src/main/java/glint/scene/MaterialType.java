@@ -7,10 +7,11 @@ import glint.shading.Dielectric;
 import glint.shading.Lambert;
 
 /**
- * A kind of material, registered once in {@link Registry}: its name in scene files (also the name
- * of its preset material), the preset's values (SPEC section 2 and the phong table of section 4),
- * and its {@link Bsdf}, how the physically based model scatters light at it. The phong model reads
- * only a material's coefficients, and passes kt of a light through a material whose BSDF transmits.
+ * A kind of material, registered once in {@link Registry}: its name in scene files (also the name of
+ * its preset material), the preset's values (docs/scene-format.md and the phong table of
+ * docs/conventions.md), and its {@link Bsdf}, how the physically based model scatters light at it. The
+ * phong model reads only a material's coefficients, and passes kt of a light through a material whose
+ * BSDF transmits.
  */
 public final class MaterialType {
 

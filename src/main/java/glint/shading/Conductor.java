@@ -1,9 +1,10 @@
 package glint.shading;
 
 /**
- * A metal (SPEC section 4): the GGX microfacet lobe with Schlick's Fresnel, F0 = the material's
- * colour, and height-correlated Smith masking; a delta mirror below {@link Microfacet#MIRROR_ALPHA}.
- * Whitted's integrator follows its mirror direction and lights its lobe (the highlight).
+ * A metal (docs/conventions.md, "cook-torrance"): the GGX microfacet lobe with Schlick's Fresnel, F0 =
+ * the material's colour, and height-correlated Smith masking; a delta mirror below
+ * {@link Microfacet#MIRROR_ALPHA}. Whitted's integrator follows its mirror direction and lights its
+ * lobe (the highlight).
  */
 public final class Conductor implements Bsdf {
 

@@ -1,10 +1,10 @@
 package glint.shading;
 
 /**
- * The physically based model (SPEC section 4) in Whitted's integrator: each material scatters light
- * by its own {@link Bsdf}. A surface sends back its own light, ambient x its albedo where ambient
- * reaches it, and the lights it sees through its lobes that are not delta; it sends on the single rays
- * of {@link Bsdf#specular}. Shadows are hard; glass blocks light.
+ * The physically based model (docs/conventions.md, "cook-torrance") in Whitted's integrator: each
+ * material scatters light by its own {@link Bsdf}. A surface sends back its own light, ambient x its
+ * albedo where ambient reaches it, and the lights it sees through its lobes that are not delta; it
+ * sends on the single rays of {@link Bsdf#specular}. Shadows are hard; glass blocks light.
  */
 public final class CookTorrance implements ShadingModel {
 

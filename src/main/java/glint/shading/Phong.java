@@ -1,9 +1,9 @@
 package glint.shading;
 
 /**
- * The seed's model (SPEC section 4): ka ambient x colour + the sum over lights of (kd colour E n.l
- * + ks E (r.v)^shininess), + ks I_reflected + kt colour I_transmitted, with ka = kd, whatever the
- * material's type. A shadow ray passes kt of the light through each object whose material
+ * The seed's model (docs/conventions.md, "phong"): ka ambient x colour + the sum over lights of (kd
+ * colour E n.l + ks E (r.v)^shininess), + ks I_reflected + kt colour I_transmitted, with ka = kd,
+ * whatever the material's type. A shadow ray passes kt of the light through each object whose material
  * transmits light.
  */
 public final class Phong implements ShadingModel {
