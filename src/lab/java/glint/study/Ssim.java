@@ -8,8 +8,8 @@ import glint.render.FrameBuffer;
  * reference implementation: an 11 x 11 Gaussian window of sigma 1.5, K1 = 0.01, K2 = 0.03, dynamic
  * range L = 1, the mean over every window position that fits inside the image ("valid"). It is
  * computed on what a viewer sees: the luma Y' = 0.2126 R' + 0.7152 G' + 0.0722 B' of the sRGB-encoded
- * values (each channel clamped to [0, 1], SPEC section 3). Java has no maintained SSIM library, so
- * this is Glint's own.
+ * values (each channel clamped to [0, 1], docs/conventions.md, "Units and colour"). Java has no
+ * maintained SSIM library, so this is Glint's own.
  */
 public final class Ssim {
 

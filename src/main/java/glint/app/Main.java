@@ -17,7 +17,7 @@ import picocli.CommandLine;
 import picocli.CommandLine.Command;
 import picocli.CommandLine.Option;
 
-/** The command line of SPEC section 6: parses arguments, loads the config, hands over to a mode. */
+/** The command line (README.md, "Using it"): parses arguments, loads the config, hands over to a mode. */
 @Command(name = "glint", mixinStandardHelpOptions = true, version = "Glint 0.1.0",
         description = "Interactive Whitted ray tracer for spheres and planes.%n"
                 + "Without --output or --bench, opens the window on the scene.",

@@ -8,9 +8,9 @@ import java.util.ArrayList;
 import java.util.List;
 
 /**
- * Which camera a headless run sees the scene from ({@code --view}, SPEC section 6): its own camera, its
- * view N (counted from 1, as keys 1 to 9 of the window) or the view of a name. A whole number is a
- * view's number, anything else a name.
+ * Which camera a headless run sees the scene from ({@code --view}, README.md, "Using it"): its own
+ * camera, its view N (counted from 1, as keys 1 to 9 of the window) or the view of a name. A whole
+ * number is a view's number, anything else a name.
  */
 final class ViewChoice {
 

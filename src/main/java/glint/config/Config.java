@@ -3,7 +3,7 @@ package glint.config;
 import java.util.function.Consumer;
 
 /**
- * The settings of config.properties (SPEC section 5), each with a default.
+ * The settings of config.properties (docs/config.md), each with a default.
  *
  * @param debug          print diagnostics (timings, tile counts) to standard error
  * @param epsilon        base of the self-intersection offset: a spawned ray starts

@@ -3,8 +3,9 @@ package glint.config;
 import java.util.List;
 
 /**
- * How light is carried through a scene (SPEC section 3b): {@link #WHITTED}, direct light and the
- * mirror and glass rays it spawns, or {@link #PATH}, the rendering equation solved by path tracing.
+ * How light is carried through a scene (docs/conventions.md, "Light that bounces"): {@link #WHITTED},
+ * direct light and the mirror and glass rays it spawns, or {@link #PATH}, the rendering equation
+ * solved by path tracing.
  */
 public enum LightTransport {
     WHITTED("whitted"), PATH("path");

@@ -1,6 +1,6 @@
 package glint.config;
 
-/** The shading models of SPEC section 4. */
+/** The shading models of docs/conventions.md ("Shading models"). */
 public enum Shading {
     COOK_TORRANCE("cook-torrance"), PHONG("phong");
 

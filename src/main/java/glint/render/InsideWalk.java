@@ -3,10 +3,11 @@ package glint.render;
 import glint.geometry.Hit;
 import glint.geometry.Primitives;
 import glint.geometry.PrimitiveKind;
+import glint.shading.LightSample;
 import glint.shading.Optics;
-import glint.shading.PathVertex;
 import glint.shading.Rgb;
 import glint.shading.ShadingModel;
+import glint.shading.SingleRays;
 import glint.shading.Surface;
 
 /**
@@ -17,49 +18,82 @@ import glint.shading.Surface;
  * factors and the bend of the ray leaving are not worked out again. The radiance is what
  * {@link WhittedIntegrator#trace} would find, to rounding, and the roulette's numbers are drawn in the same
  * order: first each bounce's reflected ray, going in, then each leaving ray, from the deepest bounce
- * out, as the recursion draws them. Bounce k uses the path vertex of its level, as the recursion
- * would, and a ray leaving it overwrites only the deeper ones, which are done with by then.
+ * out, as the recursion draws them. The walk keeps what it learns of each bounce going in and reads
+ * it coming out in a {@link Bounce} of its own, one per level of recursion: a ray leaving bounce k
+ * (traced with fewer hits left) may walk another inside, which overwrites only deeper bounces, done
+ * with by then.
  */
 final class InsideWalk {
 
+    /** What the walk knows of the bounce at one level, from going in until coming out. */
+    private static final class Bounce {
+        final Hit end = new Hit();
+        final Surface surface = new Surface();
+        final LightSample light = new LightSample();
+        final Rgb f = new Rgb();
+        /** The light the bounce sends back by itself. */
+        final Rgb own = new Rgb();
+        final SingleRays rays = new SingleRays();
+        /** The direction of the ray leaving the bounce: refracted out, or past the critical angle reflected. */
+        final double[] leaving = new double[3];
+        boolean leavesThrough;
+        /** The path weight of the ray that met the bounce, and what its reflected ray counts for (0: not traced). */
+        double weight, keepReflected;
+        /** The radiance the bounce sends back along the ray that met it (at the level below the deepest, what the search found). */
+        final Rgb radiance = new Rgb();
+    }
+
     private final WhittedIntegrator it;
+    private Bounce[] bounces = new Bounce[0];
 
     InsideWalk(WhittedIntegrator integrator) {
         this.it = integrator;
     }
 
+    /** Makes room for a walk of up to {@code recursionMax} hits. */
+    void prepare(int recursionMax) {
+        if (bounces.length <= recursionMax) {
+            Bounce[] grown = new Bounce[recursionMax + 1];
+            for (int i = 0; i < grown.length; i++) {
+                grown[i] = i < bounces.length ? bounces[i] : new Bounce();
+            }
+            bounces = grown;
+        }
+    }
+
     /**
      * The radiance of the ray refracted through {@code entry} (which it enters on its outer side)
-     * along unit u, with {@code hitsLeft} hits and path weight {@code weight}: the scratch value of
-     * level {@code hitsLeft}.
+     * along unit u, with {@code hitsLeft} hits and path weight {@code weight}: a scratch value, to read
+     * before the walk is asked again.
      */
     Rgb trace(Surface entry, double ux, double uy, double uz, int hitsLeft, double weight) {
         int primitive = entry.insideFar;
         int deepest = walkIn(entry, ux, uy, uz, hitsLeft, weight);
         double r = 0, g = 0, b = 0;
-        if (deepest > hitsLeft || it.vertex(deepest).keepReflected > 0) { // the search traced the rest
-            Rgb rest = it.vertex(deepest - 1).radiance;
+        if (deepest > hitsLeft || bounces[deepest].keepReflected > 0) { // the search traced the rest
+            Rgb rest = bounces[deepest - 1].radiance;
             r = rest.r;
             g = rest.g;
             b = rest.b;
         }
         for (int level = deepest; level <= hitsLeft; level++) {
-            PathVertex v = it.vertex(level);
-            double sumR = v.sum.r, sumG = v.sum.g, sumB = v.sum.b;
+            Bounce v = bounces[level];
+            double sumR = v.own.r, sumG = v.own.g, sumB = v.own.b;
+            SingleRays rays = v.rays;
             if (v.keepReflected > 0) {
                 double k = v.keepReflected;
-                sumR += k * v.reflectR * r;
-                sumG += k * v.reflectG * g;
-                sumB += k * v.reflectB * b;
+                sumR += k * rays.reflectR * r;
+                sumG += k * rays.reflectG * g;
+                sumB += k * rays.reflectB * b;
             }
             if (level > 1) {
-                double childWeight = v.weight * Math.max(v.transmitR, Math.max(v.transmitG, v.transmitB));
+                double childWeight = v.weight * rays.transmitMax();
                 double keep = childWeight > 0 ? it.keep(childWeight) : 0;
                 if (keep > 0) {
                     Rgb left = leave(v, primitive, level, childWeight * keep);
-                    sumR += keep * v.transmitR * left.r;
-                    sumG += keep * v.transmitG * left.g;
-                    sumB += keep * v.transmitB * left.b;
+                    sumR += keep * rays.transmitR * left.r;
+                    sumG += keep * rays.transmitG * left.g;
+                    sumB += keep * rays.transmitB * left.b;
                 }
             }
             v.radiance.set(sumR, sumG, sumB);
@@ -67,7 +101,7 @@ final class InsideWalk {
             g = v.radiance.g;
             b = v.radiance.b;
         }
-        return it.vertex(hitsLeft).radiance;
+        return bounces[hitsLeft].radiance;
     }
 
     /**
@@ -88,32 +122,34 @@ final class InsideWalk {
         double cos = -(ux * entry.nx + uy * entry.ny + uz * entry.nz), offset = entry.offset;
         double bend = Double.NaN;
         double weightIn = weight;
-        PathVertex previous = null;
+        Bounce previous = null;
         for (int level = hitsLeft; ; level--) {
-            PathVertex v = it.vertex(level);
-            Hit end = v.hit;
+            Bounce v = bounces[level];
+            Hit end = v.end;
             double cosEnd = kind.chordInside(index, px, py, pz, ux, uy, uz, cos, offset, end);
             if (Double.isNaN(cosEnd)) {
-                it.trace(sx, sy, sz, ux, uy, uz, level, weightIn, Hit.NONE, primitive);
+                Rgb rest = it.trace(sx, sy, sz, ux, uy, uz, level, weightIn, Hit.NONE, primitive);
+                v.radiance.set(rest.r, rest.g, rest.b);
                 return level + 1;
             }
             it.countRay();
             Surface s = v.surface;
             s.setInside(end, cosEnd, it.epsilon(), material, primitive);
-            model.direct(it, v, ux, uy, uz);
+            model.direct(it, s, ux, uy, uz, v.light, v.f, v.own);
+            SingleRays rays = v.rays;
             boolean sameAngle = previous != null && cosEnd == previous.surface.cosIncident;
             if (sameAngle) {
-                copyBoundary(previous, v);
+                rays.setTo(previous.rays);
             } else {
-                model.specular(it, v);
-                bend = Optics.refractionBend(cosEnd, v.eta);
+                model.specular(it, s, rays);
+                bend = Optics.refractionBend(cosEnd, rays.eta);
             }
             v.weight = weightIn;
             v.keepReflected = 0;
             v.leavesThrough = !Double.isNaN(bend);
-            double[] out = v.refracted;
+            double[] out = v.leaving;
             if (v.leavesThrough) {
-                Optics.refractWithBend(ux, uy, uz, s.nx, s.ny, s.nz, v.eta, bend, out);
+                Optics.refractWithBend(ux, uy, uz, s.nx, s.ny, s.nz, rays.eta, bend, out);
             } else { // past the critical angle the leaving ray reflects: keep the incoming direction
                 out[0] = ux;
                 out[1] = uy;
@@ -122,7 +158,7 @@ final class InsideWalk {
             if (level <= 1) {
                 return level;
             }
-            double reflect = v.reflectMax();
+            double reflect = rays.reflectMax();
             v.keepReflected = it.keep(weightIn * reflect);
             if (!(v.keepReflected > 0)) {
                 return level;
@@ -145,20 +181,12 @@ final class InsideWalk {
     }
 
     /** Traces the ray leaving bounce v (at {@code level}) through the surface, or past the critical angle reflected. */
-    private Rgb leave(PathVertex v, int primitive, int level, double weight) {
+    private Rgb leave(Bounce v, int primitive, int level, double weight) {
         Surface s = v.surface;
-        double[] d = v.refracted;
+        double[] d = v.leaving;
         if (v.leavesThrough) {
             return it.trace(s.farX(), s.farY(), s.farZ(), d[0], d[1], d[2], level - 1, weight, primitive, Hit.NONE);
         }
         return it.traceReflected(s, d[0], d[1], d[2], level, weight);
-    }
-
-    private static void copyBoundary(PathVertex from, PathVertex to) {
-        to.eta = from.eta;
-        to.setReflect(from.reflectR, from.reflectG, from.reflectB);
-        to.transmitR = from.transmitR;
-        to.transmitG = from.transmitG;
-        to.transmitB = from.transmitB;
     }
 }

@@ -9,12 +9,12 @@ import glint.shading.Rgb;
 import glint.shading.Surface;
 
 /**
- * One render thread's path tracer (SPEC section 3b): from the camera ray's hit, a path of surface
- * hits, each lit by every light through a shadow ray where its material has a lobe that is not a
- * delta (next-event estimation), and continued along a direction its BSDF samples; a ray that
- * escapes brings the background's radiance, whatever its depth, so a sky lights the scene. The path
- * ends at {@code recursion_max} hits, where no direction is sampled, or by Russian roulette on its
- * throughput. Ambient light plays no part. Allocates nothing per ray.
+ * One render thread's path tracer (docs/conventions.md, "Light that bounces"): from the camera ray's
+ * hit, a path of surface hits, each lit by every light through a shadow ray where its material has a
+ * lobe that is not a delta (next-event estimation), and continued along a direction its BSDF samples;
+ * a ray that escapes brings the background's radiance, whatever its depth, so a sky lights the scene.
+ * The path ends at {@code recursion_max} hits, where no direction is sampled, or by Russian roulette
+ * on its throughput. Ambient light plays no part. Allocates nothing per ray.
  */
 final class PathIntegrator extends Integrator {
 

@@ -6,11 +6,11 @@ import glint.shading.CookTorrance;
 import glint.shading.Lights;
 import glint.shading.Materials;
 import glint.shading.Optics;
-import glint.shading.PathVertex;
 import glint.shading.Phong;
 import glint.shading.Rgb;
 import glint.shading.ShadingContext;
 import glint.shading.ShadingModel;
+import glint.shading.SingleRays;
 import glint.shading.Surface;
 
 /**
@@ -46,6 +46,7 @@ final class WhittedIntegrator extends Integrator implements ShadingContext {
             }
             vertices = grown;
         }
+        walk.prepare(settings.recursionMax());
     }
 
     /** Starts the path of camera ray (pixel, frame, sample); the roulette's draws follow from it. */
@@ -108,13 +109,16 @@ final class WhittedIntegrator extends Integrator implements ShadingContext {
     /** The radiance vertex v's hit (found by the unit ray from o along d) sends back along the ray. */
     private Rgb shadeHit(PathVertex v, double ox, double oy, double oz, double dx, double dy, double dz,
                          int hitsLeft, double weight) {
-        describe(v.hit, ox, oy, oz, dx, dy, dz, v.surface);
-        model.direct(this, v, dx, dy, dz);
+        Surface s = v.surface;
+        Rgb sum = v.sum;
+        describe(v.hit, ox, oy, oz, dx, dy, dz, s);
+        model.direct(this, s, dx, dy, dz, v.light, v.f, sum);
         if (hitsLeft > 1) {
-            model.specular(this, v);
-            scatter(v, dx, dy, dz, hitsLeft, weight);
+            SingleRays rays = v.rays;
+            model.specular(this, s, rays);
+            scatter(s, rays, v.refracted, dx, dy, dz, hitsLeft, weight, sum);
         }
-        v.radiance.set(v.sum.r, v.sum.g, v.sum.b);
+        v.radiance.set(sum.r, sum.g, sum.b);
         return v.radiance;
     }
 
@@ -146,46 +150,41 @@ final class WhittedIntegrator extends Integrator implements ShadingContext {
     }
 
     /**
-     * Adds to {@code v.sum} what the single rays of v's surface (their factors from
-     * {@link ShadingModel#specular}) bring back: the reflected ray through {@link #addReflected}, then
-     * the refracted one, of path weight weight x the tint's largest channel, traced if {@link #keep}
+     * Adds to {@code sum} what the single rays of surface s (of factors {@code rays}) bring back: the
+     * reflected ray through {@link #addReflected}, then the refracted one (its direction written into
+     * {@code refracted}), of path weight weight x the tint's largest channel, traced if {@link #keep}
      * keeps it. {@code hitsLeft} (at least 2) counts this surface.
      */
-    private void scatter(PathVertex v, double dx, double dy, double dz, int hitsLeft, double weight) {
-        Rgb sum = v.sum;
-        if (v.reflectMax() > 0) {
-            addReflected(v.surface, dx, dy, dz, hitsLeft, weight, v.reflectR, v.reflectG, v.reflectB, sum);
+    private void scatter(Surface s, SingleRays rays, double[] refracted, double dx, double dy, double dz,
+                         int hitsLeft, double weight, Rgb sum) {
+        if (rays.reflectMax() > 0) {
+            addReflected(s, dx, dy, dz, hitsLeft, weight, rays.reflectR, rays.reflectG, rays.reflectB, sum);
         }
-        double childWeight = weight * Math.max(v.transmitR, Math.max(v.transmitG, v.transmitB));
+        double childWeight = weight * rays.transmitMax();
         double keep = childWeight > 0 ? keep(childWeight) : 0;
         if (keep > 0) {
-            Rgb refracted = traceRefracted(v, dx, dy, dz, hitsLeft, childWeight * keep);
-            sum.r += keep * v.transmitR * refracted.r;
-            sum.g += keep * v.transmitG * refracted.g;
-            sum.b += keep * v.transmitB * refracted.b;
+            Rgb radiance = traceRefracted(s, rays.eta, refracted, dx, dy, dz, hitsLeft, childWeight * keep);
+            sum.r += keep * rays.transmitR * radiance.r;
+            sum.g += keep * rays.transmitG * radiance.g;
+            sum.b += keep * rays.transmitB * radiance.b;
         }
     }
 
     /**
-     * Traces the ray refracted through v's surface (eta = {@code v.eta}), its origin offset to the
-     * far side; past the critical angle, the reflected one. Into a closed primitive nothing else
-     * reaches into, the ray walks its inside ({@link InsideWalk}). Returns its radiance.
+     * Traces the ray refracted through surface s (ratio {@code eta}) along the direction it writes
+     * into {@code t}, its origin offset to the far side; past the critical angle, the reflected one.
+     * Into a closed primitive nothing else reaches into, the ray walks its inside ({@link InsideWalk}).
+     * Returns its radiance.
      */
-    private Rgb traceRefracted(PathVertex v, double dx, double dy, double dz, int hitsLeft, double weight) {
-        Surface s = v.surface;
-        double[] t = v.refracted;
-        if (!Optics.refract(dx, dy, dz, s.nx, s.ny, s.nz, s.cosIncident, v.eta, t)) {
+    private Rgb traceRefracted(Surface s, double eta, double[] t, double dx, double dy, double dz, int hitsLeft,
+                               double weight) {
+        if (!Optics.refract(dx, dy, dz, s.nx, s.ny, s.nz, s.cosIncident, eta, t)) {
             return traceReflected(s, dx, dy, dz, hitsLeft, weight);
         }
         if (s.insideFar != Hit.NONE && aggregate.emptyInside(s.insideFar)) {
             return walk.trace(s, t[0], t[1], t[2], hitsLeft - 1, weight);
         }
         return trace(s.farX(), s.farY(), s.farZ(), t[0], t[1], t[2], hitsLeft - 1, weight, s.skipFar, s.insideFar);
-    }
-
-    /** The scratch values of recursion level {@code hitsLeft}. */
-    PathVertex vertex(int hitsLeft) {
-        return vertices[hitsLeft];
     }
 
     ShadingModel model() {

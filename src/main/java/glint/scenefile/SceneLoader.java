@@ -34,7 +34,7 @@ import org.snakeyaml.engine.v2.nodes.MappingNode;
 import org.snakeyaml.engine.v2.nodes.Node;
 import org.snakeyaml.engine.v2.nodes.ScalarNode;
 
-/** Reads a scene file (SPEC section 2) into an immutable {@link Scene}, or explains what is wrong. */
+/** Reads a scene file (docs/scene-format.md) into an immutable {@link Scene}, or explains what is wrong. */
 public final class SceneLoader {
 
     private static final Set<String> TOP_KEYS =

@@ -33,12 +33,11 @@ public interface Bsdf {
 
     /**
      * Whitted's rays: the factors of the single rays the surface sends on in place of its lobes, into
-     * {@code v}: the mirrored ray's per channel ({@code v.reflectR/G/B}; a glossy lobe is followed along
-     * its mirror direction) and, for one that refracts, eta and the tint of the refracted ray
-     * ({@code v.eta}, {@code v.transmitR/G/B}; 0 for none). They depend on the material, the side met
-     * and the cosine alone.
+     * {@code out}: the mirrored ray's per channel (a glossy lobe is followed along its mirror
+     * direction) and, for one that refracts, eta and the tint of the refracted ray (0 for none). They
+     * depend on the material, the side met and the cosine alone.
      */
-    void specular(Materials m, Surface s, PathVertex v);
+    void specular(Materials m, Surface s, SingleRays out);
 
     /** Whether Whitted's ambient light reaches the surface, times its colour (a matte surface's albedo). */
     default boolean ambientLit() {

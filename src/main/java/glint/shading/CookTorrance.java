@@ -1,24 +1,23 @@
 package glint.shading;
 
 /**
- * The physically based model (SPEC section 4) in Whitted's integrator: each material scatters light
- * by its own {@link Bsdf}. A surface sends back its own light, ambient x its albedo where ambient
- * reaches it, and the lights it sees through its lobes that are not delta; it sends on the single rays
- * of {@link Bsdf#specular}. Shadows are hard; glass blocks light.
+ * The physically based model (docs/conventions.md, "cook-torrance") in Whitted's integrator: each
+ * material scatters light by its own {@link Bsdf}. A surface sends back its own light, ambient x its
+ * albedo where ambient reaches it, and the lights it sees through its lobes that are not delta; it
+ * sends on the single rays of {@link Bsdf#specular}. Shadows are hard; glass blocks light.
  */
 public final class CookTorrance implements ShadingModel {
 
     @Override
-    public void direct(ShadingContext c, PathVertex v, double dx, double dy, double dz) {
-        Surface s = v.surface;
+    public void direct(ShadingContext c, Surface s, double dx, double dy, double dz, LightSample light, Rgb f,
+                       Rgb sum) {
         Materials m = c.materials();
         int material = s.material;
         Bsdf bsdf = m.bsdf(material);
-        Rgb sum = v.sum;
         if (m.isDelta(material)) {
             sum.set(0, 0, 0);
         } else {
-            DirectLight.sum(c, c.lights(), m, bsdf, s, -dx, -dy, -dz, v.light, v.f, sum);
+            DirectLight.sum(c, c.lights(), m, bsdf, s, -dx, -dy, -dz, light, f, sum);
         }
         if (m.ambientLit(material)) {
             sum.r += c.ambient(0) * m.color(material, 0);
@@ -26,16 +25,16 @@ public final class CookTorrance implements ShadingModel {
             sum.b += c.ambient(2) * m.color(material, 2);
         }
         if (m.emits(material)) {
-            bsdf.emitted(m, s, v.f);
-            sum.r += v.f.r;
-            sum.g += v.f.g;
-            sum.b += v.f.b;
+            bsdf.emitted(m, s, f);
+            sum.r += f.r;
+            sum.g += f.g;
+            sum.b += f.b;
         }
     }
 
     @Override
-    public void specular(ShadingContext c, PathVertex v) {
+    public void specular(ShadingContext c, Surface s, SingleRays out) {
         Materials m = c.materials();
-        m.bsdf(v.surface.material).specular(m, v.surface, v);
+        m.bsdf(s.material).specular(m, s, out);
     }
 }

@@ -7,12 +7,12 @@ package glint.shading;
 public final class Dielectric implements Bsdf {
 
     @Override
-    public void specular(Materials m, Surface s, PathVertex v) {
+    public void specular(Materials m, Surface s, SingleRays out) {
         int material = s.material;
-        v.eta = Optics.eta(m.ior(material), s.front);
-        double reflectance = reflectance(m, s.cosIncident, v.eta);
-        v.setReflect(reflectance, reflectance, reflectance);
-        v.setTransmit((1 - reflectance) * m.color(material, 0), (1 - reflectance) * m.color(material, 1),
+        out.eta = Optics.eta(m.ior(material), s.front);
+        double reflectance = reflectance(m, s.cosIncident, out.eta);
+        out.setReflect(reflectance, reflectance, reflectance);
+        out.setTransmit((1 - reflectance) * m.color(material, 0), (1 - reflectance) * m.color(material, 1),
                 (1 - reflectance) * m.color(material, 2));
     }
 

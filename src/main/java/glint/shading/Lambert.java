@@ -7,9 +7,9 @@ public final class Lambert implements Bsdf {
 
     /** A matte surface sends no single rays on. */
     @Override
-    public void specular(Materials m, Surface s, PathVertex v) {
-        v.setReflect(0, 0, 0);
-        v.setTransmit(0, 0, 0);
+    public void specular(Materials m, Surface s, SingleRays out) {
+        out.setReflect(0, 0, 0);
+        out.setTransmit(0, 0, 0);
     }
 
     @Override

@@ -1,10 +1,11 @@
 package glint.shading;
 
 /**
- * The GGX (Trowbridge-Reitz) microfacet distribution of SPEC section 4 as a full lobe: Smith's
- * masking (height-correlated for the pair of directions) and the sampling of the normals visible
- * from a direction (Heitz 2018, "Sampling the GGX Distribution of Visible Normals"). Directions are
- * in the local space of the surface (normal +z), unit length, alpha = roughness^2.
+ * The GGX (Trowbridge-Reitz) microfacet distribution of docs/conventions.md ("cook-torrance", metal)
+ * as a full lobe: Smith's masking (height-correlated for the pair of directions) and the sampling of
+ * the normals visible from a direction (Heitz 2018, "Sampling the GGX Distribution of Visible
+ * Normals"). Directions are in the local space of the surface (normal +z), unit length, alpha =
+ * roughness^2.
  */
 public final class Microfacet {
 

@@ -1,22 +1,21 @@
 package glint.shading;
 
 /**
- * The seed's model (SPEC section 4): ka ambient x colour + the sum over lights of (kd colour E n.l
- * + ks E (r.v)^shininess), + ks I_reflected + kt colour I_transmitted, with ka = kd, whatever the
- * material's type. A shadow ray passes kt of the light through each object whose material
+ * The seed's model (docs/conventions.md, "phong"): ka ambient x colour + the sum over lights of (kd
+ * colour E n.l + ks E (r.v)^shininess), + ks I_reflected + kt colour I_transmitted, with ka = kd,
+ * whatever the material's type. A shadow ray passes kt of the light through each object whose material
  * transmits light.
  */
 public final class Phong implements ShadingModel {
 
     /** Ambient, and per light the diffuse term and the highlight, through what the shadow ray passes. */
     @Override
-    public void direct(ShadingContext c, PathVertex v, double dx, double dy, double dz) {
-        Surface s = v.surface;
+    public void direct(ShadingContext c, Surface s, double dx, double dy, double dz, LightSample light, Rgb f,
+                       Rgb sum) {
         Materials m = c.materials();
         int material = s.material;
         double diffuseR = c.ambient(0), diffuseG = c.ambient(1), diffuseB = c.ambient(2);
         double specR = 0, specG = 0, specB = 0;
-        LightSample light = v.light;
         Lights lights = c.lights();
         for (int i = 0; i < lights.count(); i++) {
             double pass = c.lightReaching(s, i, light);
@@ -36,21 +35,19 @@ public final class Phong implements ShadingModel {
             }
         }
         double kd = m.kd(material), ks = m.ks(material);
-        v.sum.set(kd * m.color(material, 0) * diffuseR + ks * specR, kd * m.color(material, 1) * diffuseG + ks * specG,
+        sum.set(kd * m.color(material, 0) * diffuseR + ks * specR, kd * m.color(material, 1) * diffuseG + ks * specG,
                 kd * m.color(material, 2) * diffuseB + ks * specB);
     }
 
     /** ks of the light reflected, kt x colour of the light refracted, whatever the angle. */
     @Override
-    public void specular(ShadingContext c, PathVertex v) {
+    public void specular(ShadingContext c, Surface s, SingleRays out) {
         Materials m = c.materials();
-        int material = v.surface.material;
+        int material = s.material;
         double kt = m.kt(material), ks = m.ks(material);
-        v.eta = Optics.eta(m.ior(material), v.surface.front);
-        v.setReflect(ks, ks, ks);
-        v.transmitR = kt * m.color(material, 0);
-        v.transmitG = kt * m.color(material, 1);
-        v.transmitB = kt * m.color(material, 2);
+        out.eta = Optics.eta(m.ior(material), s.front);
+        out.setReflect(ks, ks, ks);
+        out.setTransmit(kt * m.color(material, 0), kt * m.color(material, 1), kt * m.color(material, 2));
     }
 
     /**

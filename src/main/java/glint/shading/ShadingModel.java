@@ -8,14 +8,14 @@ package glint.shading;
 public interface ShadingModel {
 
     /**
-     * The light v's surface (filled in) sends back along the ray of unit direction d by itself
-     * (its own light, ambient and the lights it sees), into {@code v.sum}.
+     * The light surface s sends back along the ray of unit direction d by itself (its own light,
+     * ambient and the lights it sees), into {@code sum}; {@code light} and {@code f} are scratch values.
      */
-    void direct(ShadingContext c, PathVertex v, double dx, double dy, double dz);
+    void direct(ShadingContext c, Surface s, double dx, double dy, double dz, LightSample light, Rgb f, Rgb sum);
 
     /**
-     * The factors of the rays v's surface sends on, into {@code v.reflectR/G/B}, {@code v.eta} and
-     * {@code v.transmitR/G/B}: they depend on the material, the side met and the cosine alone.
+     * The factors of the rays surface s sends on, into {@code out}: they depend on the material, the
+     * side met and the cosine alone.
      */
-    void specular(ShadingContext c, PathVertex v);
+    void specular(ShadingContext c, Surface s, SingleRays out);
 }

@@ -22,7 +22,7 @@ import org.junit.jupiter.api.BeforeEach;
 import org.junit.jupiter.api.Test;
 import org.junit.jupiter.api.io.TempDir;
 
-/** The command line of SPEC section 6: exit statuses, the messages on err, headless output. */
+/** The command line of README.md ("Using it"): exit statuses, the messages on err, headless output. */
 class MainTest {
 
     /** What one run of the program did. */

@@ -8,9 +8,9 @@ import java.util.List;
  * The registration of the disc: {@code {type: disc, center: [x, y, z], normal: [x, y, z], radius: r}},
  * a {@link Disc}, compiled to a {@link DiscKind}.
  */
-final class DiscType {
+public final class DiscType {
 
-    static final ShapeType<Disc> TYPE = new ShapeType<>("disc", Disc.class, List.of("center", "normal", "radius"),
+    public static final ShapeType<Disc> TYPE = new ShapeType<>("disc", Disc.class, List.of("center", "normal", "radius"),
             fields -> new Disc(fields.vector("center"), fields.direction("normal"), fields.length("radius")),
             DiscType::compile);
 

@@ -5,7 +5,7 @@ import glint.shading.BsdfSample;
 import glint.shading.Materials;
 import glint.shading.Rgb;
 import glint.shading.Surface;
-import glint.shading.PathVertex;
+import glint.shading.SingleRays;
 
 /**
  * The BSDF of a material type added by the recipe of docs/architecture.md, in test sources only: a
@@ -27,9 +27,9 @@ final class Glow implements Bsdf {
 
     /** It sends no single rays on. */
     @Override
-    public void specular(Materials m, Surface s, PathVertex v) {
-        v.setReflect(0, 0, 0);
-        v.setTransmit(0, 0, 0);
+    public void specular(Materials m, Surface s, SingleRays out) {
+        out.setReflect(0, 0, 0);
+        out.setTransmit(0, 0, 0);
     }
 
     /** It reflects nothing: no lobe to evaluate or sample. */

@@ -52,23 +52,42 @@ class KindRecipeTest {
         assertTrue(inside > 20 && outside > 20, inside + " pixels inside, " + outside + " outside");
     }
 
+    /**
+     * A disc tilted to face a directional light that shines down at 45 degrees towards +z, above a
+     * white floor, seen from beside the light's path, so that its shadow on the floor lies in view.
+     * A shadow ray from floor point (x, -1, z) travels along (0, 1, -1) / sqrt 2 and meets the disc's
+     * plane (y + 0.25) - (z - 6) = 0 after (z - 5.25) / 2 along (0, 1, -1), at distance
+     * sqrt(x^2 + (z - 6.75)^2 / 2) from the disc's centre: the shadow is the ellipse where that is at
+     * most the radius 0.5. A camera ray to such a point passes the disc's plane more than 0.75 from
+     * its centre, so nothing hides the shadow.
+     */
     @Test
-    void aDiscCastsAShadowAndMeetsTheOtherKindsInOneSearch() {
-        // the disc between the light and a floor: the floor below it is dark, beside it lit
+    void aDiscCastsAShadowInViewAndMeetsTheOtherKindsInOneSearch() {
         String yaml = """
-                camera: {position: [0, 6, 0], look_at: [0, 0, 0.001], fov: 60}
+                camera: {position: [0, 0, 0], look_at: [0, 0, 1], fov: 40}
+                ambient: [0.1, 0.2, 0.3]
                 lights:
-                  - {type: directional, direction: [0, -1, 0], intensity: 1}
+                  - {type: directional, direction: [0, -1, 1], intensity: 1}
                 objects:
-                  - {type: disc, center: [0, 2, 0], normal: [0, 1, 0], radius: 1}
-                  - {type: plane, point: [0, 0, 0], normal: [0, 1, 0], material: {type: matte, color: [1, 1, 1]}}
-                  - {type: sphere, center: [3, 1, 0], radius: 0.5}
+                  - {type: disc, center: [0, -0.25, 6], normal: [0, 1, -1], radius: 0.5}
+                  - {type: plane, point: [0, -1, 0], normal: [0, 1, 0], material: {type: matte, color: [1, 1, 1]}}
+                  - {type: sphere, center: [-1.5, -0.5, 6.7], radius: 0.5}
                 """;
-        FrameBuffer frame = Recipes.render(REGISTRY, yaml, 41, 41, 1);
-        // straight down the middle the disc itself is seen, lit from above: 0.8 / pi (matte preset)
-        assertEquals(0.8 / Math.PI, frame.get(20, 20, 0), 1e-6);
-        // the floor near the image's corner lies outside the disc's shadow and is lit: 1 / pi
-        assertEquals(1 / Math.PI, frame.get(3, 3, 0), 1e-6);
+        int w = 80, h = 60;
+        FrameBuffer frame = Recipes.render(REGISTRY, yaml, w, h, 1);
+        // the disc faces the light: the matte preset's 0.8 / pi x irradiance 1 x cos 1, and ambient x 0.8
+        assertColour(frame, pixel(0, -0.25 * 5 / 6, w, h), 0.8 / Math.PI + 0.08, 0.8 / Math.PI + 0.16,
+                0.8 / Math.PI + 0.24);
+        // the floor at (0, -1, 6.7), 0.04 from the shadow's centre along z: ambient x 1 alone
+        assertColour(frame, floorPixel(0, 6.7, w, h), 0.1, 0.2, 0.3);
+        // the floor at (1.5, -1, 6.7), beside the shadow: ambient + 1 / pi x irradiance 1 x cos 45 degrees
+        double lit = 1 / Math.PI / Math.sqrt(2);
+        assertColour(frame, floorPixel(1.5, 6.7, w, h), 0.1 + lit, 0.2 + lit, 0.3 + lit);
+    }
+
+    /** The pixel whose camera ray (the camera's as above) meets the floor y = -1 at (x, z). */
+    private static int[] floorPixel(double x, double z, int w, int h) {
+        return pixel(x * 5 / z, -5 / z, w, h);
     }
 
     @Test

@@ -6,7 +6,7 @@ import static org.junit.jupiter.api.Assertions.assertTrue;
 import glint.config.Shading;
 import org.junit.jupiter.api.Test;
 
-/** Rendered radiance against values computed by hand from the definitions of SPEC sections 3-4. */
+/** Rendered radiance against values computed by hand from the definitions of docs/conventions.md. */
 class AnalyticRadianceTest {
 
     /** A red Lambert sphere at (0, 0, 5), radius 1, lit by a point light of intensity 50 at (3, 4, 0). */

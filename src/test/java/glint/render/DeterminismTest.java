@@ -12,7 +12,10 @@ import java.nio.file.Path;
 import javax.imageio.ImageIO;
 import org.junit.jupiter.api.Test;
 
-/** The same settings give the same bytes for any thread or tile count (SPEC section 3). */
+/**
+ * The same settings give the same bytes for any thread or tile count (docs/conventions.md, "Pixels and
+ * samples").
+ */
 class DeterminismTest {
 
     @Test

@@ -13,9 +13,9 @@ import org.junit.jupiter.api.Test;
 import org.junit.jupiter.api.io.TempDir;
 
 /**
- * Every error of SPEC section 2, with the exact message the user sees. Lines and columns are
- * counted by hand from the text blocks (the text starts on line 1, column 1 at the left margin
- * of the closing quotes).
+ * Every error of docs/scene-format.md ("Errors"), with the exact message the user sees. Lines and
+ * columns are counted by hand from the text blocks (the text starts on line 1, column 1 at the left
+ * margin of the closing quotes).
  */
 class SceneLoaderErrorTest {
 

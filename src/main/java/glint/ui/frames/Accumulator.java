@@ -3,10 +3,10 @@ package glint.ui.frames;
 import glint.render.FrameBuffer;
 
 /**
- * Progressive refinement while the camera is still: adds the sample passes of one view and keeps
- * their plain average, which after all passes is the still image (SPEC section 3). Adding a pass and
- * encoding the average to 8-bit sRGB are one loop over a range of pixels, so that the window can split
- * a pass among threads ({@link FrameRenderer}).
+ * Progressive refinement while the camera is still: adds the sample passes of one view and keeps their
+ * plain average, which after all passes is the still image (docs/conventions.md, "Pixels and
+ * samples"). Adding a pass and encoding the average to 8-bit sRGB are one loop over a range of pixels,
+ * so that the window can split a pass among threads ({@link FrameRenderer}).
  */
 final class Accumulator {
 
