@@ -1,6 +1,6 @@
 package glint.bench;
 
-import glint.render.FrameBuffer;
+import glint.image.FrameBuffer;
 import glint.render.RenderScene;
 import glint.render.RenderSettings;
 import glint.render.Tracer;

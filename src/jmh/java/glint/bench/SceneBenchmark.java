@@ -2,7 +2,7 @@ package glint.bench;
 
 import glint.config.LightTransport;
 import glint.input.InputException;
-import glint.render.FrameBuffer;
+import glint.image.FrameBuffer;
 import glint.scenefile.SceneLoader;
 import java.nio.file.Path;
 import java.util.concurrent.TimeUnit;

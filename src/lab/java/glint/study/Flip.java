@@ -1,7 +1,7 @@
 package glint.study;
 
 import glint.image.Srgb;
-import glint.render.FrameBuffer;
+import glint.image.FrameBuffer;
 
 /**
  * LDR-FLIP, the perceptual difference of Andersson, Nilsson, Akenine-Möller, Oskarsson, Åström and

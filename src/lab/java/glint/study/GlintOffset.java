@@ -1,7 +1,7 @@
 package glint.study;
 
 import glint.config.Shading;
-import glint.render.FrameBuffer;
+import glint.image.FrameBuffer;
 import glint.render.RenderScene;
 import glint.render.RenderSettings;
 import glint.render.Tracer;

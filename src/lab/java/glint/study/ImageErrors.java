@@ -1,7 +1,7 @@
 package glint.study;
 
 import glint.image.Srgb;
-import glint.render.FrameBuffer;
+import glint.image.FrameBuffer;
 
 /**
  * How far an image is from a reference, four ways: relative MSE on linear values, SSIM on sRGB luma,

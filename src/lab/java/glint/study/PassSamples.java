@@ -3,7 +3,7 @@ package glint.study;
 import glint.config.LightTransport;
 import glint.config.Shading;
 import glint.input.InputException;
-import glint.render.FrameBuffer;
+import glint.image.FrameBuffer;
 import glint.render.RenderScene;
 import glint.render.RenderSettings;
 import glint.render.Tracer;

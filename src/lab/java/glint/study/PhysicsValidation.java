@@ -2,7 +2,7 @@ package glint.study;
 
 import glint.image.PfmReader;
 import glint.input.InputException;
-import glint.render.FrameBuffer;
+import glint.image.FrameBuffer;
 import java.io.IOException;
 import java.nio.file.Path;
 import java.util.ArrayList;

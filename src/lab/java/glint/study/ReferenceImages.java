@@ -2,7 +2,7 @@ package glint.study;
 
 import glint.image.ImageWriter;
 import glint.image.PfmReader;
-import glint.render.FrameBuffer;
+import glint.image.FrameBuffer;
 import glint.render.RenderScene;
 import glint.render.Tracer;
 import java.io.IOException;

@@ -1,6 +1,6 @@
 package glint.study;
 
-import glint.render.FrameBuffer;
+import glint.image.FrameBuffer;
 
 /**
  * Relative mean squared error as the reference images' README defines it: the mean over all pixels

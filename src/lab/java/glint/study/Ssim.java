@@ -1,7 +1,7 @@
 package glint.study;
 
 import glint.image.Srgb;
-import glint.render.FrameBuffer;
+import glint.image.FrameBuffer;
 
 /**
  * The structural similarity index of Wang, Bovik, Sheikh and Simoncelli (IEEE TIP 2004), as in their

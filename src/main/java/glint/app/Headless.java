@@ -3,7 +3,7 @@ package glint.app;
 import glint.config.Config;
 import glint.config.Flags;
 import glint.input.InputException;
-import glint.render.FrameBuffer;
+import glint.image.FrameBuffer;
 import glint.render.RenderScene;
 import glint.render.RenderSettings;
 import glint.render.Tracer;

@@ -1,6 +1,5 @@
 package glint.image;
 
-import glint.render.FrameBuffer;
 import java.awt.image.BufferedImage;
 import java.awt.image.DataBufferInt;
 import java.io.BufferedOutputStream;

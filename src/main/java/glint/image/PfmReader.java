@@ -1,6 +1,5 @@
 package glint.image;
 
-import glint.render.FrameBuffer;
 import java.io.IOException;
 import java.nio.ByteBuffer;
 import java.nio.ByteOrder;

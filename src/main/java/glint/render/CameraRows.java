@@ -3,6 +3,7 @@ package glint.render;
 import glint.accel.Candidates;
 import glint.accel.Frustum;
 import glint.geometry.Primitives;
+import glint.image.FrameBuffer;
 import glint.shading.Rgb;
 
 /**

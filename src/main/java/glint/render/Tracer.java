@@ -1,5 +1,6 @@
 package glint.render;
 
+import glint.image.FrameBuffer;
 import java.lang.management.ManagementFactory;
 import java.lang.management.ThreadMXBean;
 import java.util.concurrent.CancellationException;

@@ -4,6 +4,7 @@ import glint.accel.AggregatePolicy;
 import glint.accel.Candidates;
 import glint.accel.Frustum;
 import glint.config.LightTransport;
+import glint.image.FrameBuffer;
 
 /**
  * One render thread's share of a frame: traces the pixels of the tiles it is handed, a tile row

@@ -5,7 +5,7 @@ import glint.config.LightTransport;
 import glint.image.ImageWriter;
 import glint.image.PartFile;
 import glint.image.PartGuard;
-import glint.render.FrameBuffer;
+import glint.image.FrameBuffer;
 import glint.render.RenderScene;
 import glint.render.Tracer;
 import java.io.IOException;

@@ -3,7 +3,7 @@ package glint.bench;
 import static org.junit.jupiter.api.Assertions.assertEquals;
 
 import glint.image.ImageWriter;
-import glint.render.FrameBuffer;
+import glint.image.FrameBuffer;
 import java.nio.file.Path;
 import org.junit.jupiter.api.Test;
 import org.junit.jupiter.api.io.TempDir;

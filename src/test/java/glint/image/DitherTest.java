@@ -4,7 +4,6 @@ import static org.junit.jupiter.api.Assertions.assertArrayEquals;
 import static org.junit.jupiter.api.Assertions.assertEquals;
 import static org.junit.jupiter.api.Assertions.assertTrue;
 
-import glint.render.FrameBuffer;
 import java.awt.image.BufferedImage;
 import java.io.IOException;
 import java.nio.file.Files;

@@ -4,7 +4,7 @@ import static org.junit.jupiter.api.Assertions.assertEquals;
 import static org.junit.jupiter.api.Assertions.assertTrue;
 
 import glint.registry.Registry;
-import glint.render.FrameBuffer;
+import glint.image.FrameBuffer;
 import glint.render.Renders;
 import org.junit.jupiter.api.Test;
 

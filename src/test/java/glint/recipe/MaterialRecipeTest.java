@@ -6,7 +6,7 @@ import static org.junit.jupiter.api.Assertions.assertThrows;
 import glint.math.Vector3d;
 import glint.registry.MaterialType;
 import glint.registry.Registry;
-import glint.render.FrameBuffer;
+import glint.image.FrameBuffer;
 import glint.shading.Dielectric;
 import java.util.List;
 import org.junit.jupiter.api.Test;

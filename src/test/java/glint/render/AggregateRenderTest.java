@@ -10,6 +10,7 @@ import glint.accel.Bvh;
 import glint.accel.FlatList;
 import glint.accel.LightCells;
 import glint.geometry.Primitives;
+import glint.image.FrameBuffer;
 import glint.scene.Scene;
 import java.util.Random;
 import java.util.function.Function;

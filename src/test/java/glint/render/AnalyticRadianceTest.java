@@ -4,6 +4,7 @@ import static org.junit.jupiter.api.Assertions.assertEquals;
 import static org.junit.jupiter.api.Assertions.assertTrue;
 
 import glint.config.Shading;
+import glint.image.FrameBuffer;
 import org.junit.jupiter.api.Test;
 
 /** Rendered radiance against values computed by hand from the definitions of docs/conventions.md. */

@@ -3,6 +3,7 @@ package glint.render;
 import static org.junit.jupiter.api.Assertions.assertArrayEquals;
 
 import glint.config.Shading;
+import glint.image.FrameBuffer;
 import glint.image.ImageWriter;
 import glint.scene.Scene;
 import glint.scenefile.SceneLoader;

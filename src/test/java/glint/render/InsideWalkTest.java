@@ -5,6 +5,7 @@ import static org.junit.jupiter.api.Assertions.assertTrue;
 
 import glint.config.Shading;
 import glint.accel.FlatList;
+import glint.image.FrameBuffer;
 import glint.scene.Scene;
 import java.util.Locale;
 import java.util.Random;

@@ -4,6 +4,7 @@ import static org.junit.jupiter.api.Assertions.assertArrayEquals;
 
 import glint.config.Shading;
 import glint.accel.FlatList;
+import glint.image.FrameBuffer;
 import glint.scene.Scene;
 import org.junit.jupiter.api.Test;
 

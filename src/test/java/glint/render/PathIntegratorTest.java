@@ -6,6 +6,7 @@ import static org.junit.jupiter.api.Assertions.assertTrue;
 
 import glint.config.LightTransport;
 import glint.config.Shading;
+import glint.image.FrameBuffer;
 import glint.math.Vector3d;
 import glint.scene.Scene;
 import glint.shading.Conductor;

@@ -6,6 +6,7 @@ import static org.junit.jupiter.api.Assertions.assertTrue;
 import glint.config.Config;
 import glint.config.LightTransport;
 import glint.config.Shading;
+import glint.image.FrameBuffer;
 import glint.image.PfmReader;
 import glint.scenefile.SceneLoader;
 import glint.study.ImageErrors;

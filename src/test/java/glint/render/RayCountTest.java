@@ -3,6 +3,7 @@ package glint.render;
 import static org.junit.jupiter.api.Assertions.assertEquals;
 
 import glint.config.Shading;
+import glint.image.FrameBuffer;
 import org.junit.jupiter.api.Test;
 
 /** The ray count behind rays_per_s counts every camera, secondary and shadow ray once. */

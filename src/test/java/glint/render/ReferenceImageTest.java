@@ -5,6 +5,7 @@ import static org.junit.jupiter.api.Assertions.assertTrue;
 
 import glint.config.Config;
 import glint.config.Shading;
+import glint.image.FrameBuffer;
 import glint.image.PfmReader;
 import glint.scene.Scene;
 import glint.scenefile.SceneLoader;

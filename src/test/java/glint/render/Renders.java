@@ -1,6 +1,7 @@
 package glint.render;
 
 import glint.config.Shading;
+import glint.image.FrameBuffer;
 import glint.input.InputException;
 import glint.scene.Scene;
 import glint.scenefile.SceneLoader;

@@ -5,6 +5,7 @@ import static org.junit.jupiter.api.Assertions.assertEquals;
 import static org.junit.jupiter.api.Assertions.assertTrue;
 
 import glint.config.Shading;
+import glint.image.FrameBuffer;
 import org.junit.jupiter.api.Test;
 
 /** Where textbook methods fail: far spheres, huge spheres, grazing planes, a camera inside glass. */

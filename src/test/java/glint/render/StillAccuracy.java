@@ -1,6 +1,7 @@
 package glint.render;
 
 import glint.config.Config;
+import glint.image.FrameBuffer;
 import glint.image.Srgb;
 import glint.scene.Scene;
 import glint.scenefile.SceneLoader;

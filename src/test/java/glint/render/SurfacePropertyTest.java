@@ -1,5 +1,6 @@
 package glint.render;
 
+import glint.image.FrameBuffer;
 import glint.shading.Optics;
 import glint.geometry.Intersect;
 import static org.junit.jupiter.api.Assertions.assertEquals;

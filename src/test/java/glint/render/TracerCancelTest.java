@@ -6,6 +6,7 @@ import static org.junit.jupiter.api.Assertions.assertTimeoutPreemptively;
 import static org.junit.jupiter.api.Assertions.assertTrue;
 
 import glint.config.Shading;
+import glint.image.FrameBuffer;
 import glint.scenefile.SceneLoader;
 import java.nio.file.Path;
 import java.time.Duration;

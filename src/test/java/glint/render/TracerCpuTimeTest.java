@@ -5,6 +5,7 @@ import static org.junit.jupiter.api.Assertions.assertTrue;
 import static org.junit.jupiter.api.Assumptions.assumeTrue;
 
 import glint.config.Shading;
+import glint.image.FrameBuffer;
 import glint.scenefile.SceneLoader;
 import java.nio.file.Path;
 import org.junit.jupiter.api.Test;

@@ -10,7 +10,7 @@ import glint.config.Config;
 import glint.config.LightTransport;
 import glint.config.Shading;
 import glint.image.PfmReader;
-import glint.render.FrameBuffer;
+import glint.image.FrameBuffer;
 import glint.render.RenderScene;
 import glint.render.RenderSettings;
 import glint.scenefile.SceneLoader;

@@ -5,7 +5,7 @@ import static org.junit.jupiter.api.Assertions.assertTrue;
 
 import glint.config.Shading;
 import glint.input.InputException;
-import glint.render.FrameBuffer;
+import glint.image.FrameBuffer;
 import glint.render.RenderScene;
 import glint.render.RenderSettings;
 import glint.render.Tracer;

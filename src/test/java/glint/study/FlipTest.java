@@ -3,7 +3,7 @@ package glint.study;
 import static org.junit.jupiter.api.Assertions.assertEquals;
 import static org.junit.jupiter.api.Assertions.assertThrows;
 
-import glint.render.FrameBuffer;
+import glint.image.FrameBuffer;
 import org.junit.jupiter.api.Test;
 
 /**

@@ -1,6 +1,6 @@
 package glint.ui;
 
-import glint.render.FrameBuffer;
+import glint.image.FrameBuffer;
 import glint.render.RenderScene;
 import glint.render.Tracer;
 import glint.ui.frames.FrameRenderer;

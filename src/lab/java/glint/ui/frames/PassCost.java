@@ -2,7 +2,7 @@ package glint.ui.frames;
 
 import glint.config.Config;
 import glint.input.InputException;
-import glint.render.FrameBuffer;
+import glint.image.FrameBuffer;
 import glint.render.RenderScene;
 import glint.render.RenderSettings;
 import glint.render.Tracer;

@@ -1,6 +1,6 @@
 package glint.ui.frames;
 
-import glint.render.FrameBuffer;
+import glint.image.FrameBuffer;
 
 /**
  * Progressive refinement while the camera is still: adds the sample passes of one view and keeps their

@@ -2,7 +2,7 @@ package glint.ui.frames;
 
 import glint.image.Dither;
 import glint.image.Srgb;
-import glint.render.FrameBuffer;
+import glint.image.FrameBuffer;
 import java.awt.image.BufferedImage;
 import java.awt.image.DataBufferInt;
 

@@ -11,7 +11,7 @@ import glint.config.Shading;
 import glint.image.ImageWriter;
 import glint.input.InputException;
 import glint.math.Vector3d;
-import glint.render.FrameBuffer;
+import glint.image.FrameBuffer;
 import glint.render.RenderScene;
 import glint.render.RenderSettings;
 import glint.render.Tracer;

@@ -3,7 +3,7 @@ package glint.ui.frames;
 import static org.junit.jupiter.api.Assertions.assertEquals;
 
 import glint.config.Config;
-import glint.render.FrameBuffer;
+import glint.image.FrameBuffer;
 import glint.render.RenderScene;
 import glint.render.RenderSettings;
 import glint.render.Tracer;

@@ -5,7 +5,7 @@ import static org.junit.jupiter.api.Assertions.assertEquals;
 
 import glint.image.ImageWriter;
 import glint.image.Srgb;
-import glint.render.FrameBuffer;
+import glint.image.FrameBuffer;
 import java.awt.image.BufferedImage;
 import java.util.SplittableRandom;
 import org.junit.jupiter.api.Test;

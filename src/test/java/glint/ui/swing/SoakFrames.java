@@ -2,7 +2,7 @@ package glint.ui.swing;
 
 import glint.image.Srgb;
 import glint.math.Vector3d;
-import glint.render.FrameBuffer;
+import glint.image.FrameBuffer;
 import glint.render.RenderScene;
 import glint.render.Tracer;
 import glint.scene.Scene;

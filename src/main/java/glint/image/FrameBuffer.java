@@ -1,4 +1,4 @@
-package glint.render;
+package glint.image;
 
 /**
  * A width x height image of linear RGB radiance, rows top to bottom, 3 floats a pixel. Every value
