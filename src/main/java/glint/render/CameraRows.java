@@ -9,10 +9,10 @@ import glint.shading.Rgb;
  * The camera rays of one tile row, per worker: their unit directions (world space), made by the
  * scene's {@link PinholeCamera} for the whole row before any is traced so that the square roots and
  * divisions of many rays overlap, and the radiance each ray brings back, averaged into the row's
- * pixels once it is traced. Ray i of a row is sample {@code i % sampleCount} of pixel {@code x0 + i / sampleCount}. The arrays grow,
- * never shrink, so a frame allocates nothing once the widest tile has been seen. The row's search
- * (its {@link #frustum}, {@link #narrow} and the hits of {@link #trace}) relies on what the camera
- * promises: every ray leaves its eye.
+ * pixels once it is traced. Ray i of a row is sample {@code i % sampleCount} of pixel
+ * {@code x0 + i / sampleCount}. The arrays grow, never shrink, so a frame allocates nothing once the
+ * widest tile has been seen. The row's search (its {@link #frustum}, {@link #narrow} and the hits of
+ * {@link #trace}) relies on what the camera promises: every ray leaves its eye.
  */
 final class CameraRows {
 
@@ -101,6 +101,9 @@ final class CameraRows {
      */
     void narrow(Candidates candidates, Primitives primitives) {
         PinholeCamera c = camera;
+        double eyeX = c.eyeX(), eyeY = c.eyeY(), eyeZ = c.eyeZ();
+        double forwardX = c.forwardX(), forwardY = c.forwardY(), forwardZ = c.forwardZ();
+        double rightX = c.rightX(), rightY = c.rightY(), rightZ = c.rightZ();
         for (int i = 0; i < candidates.count(); i++) {
             int p = candidates.primitive(i);
             if (!primitives.bounded(p)) {
@@ -110,10 +113,12 @@ final class CameraRows {
             double lo = Double.POSITIVE_INFINITY, hi = Double.NEGATIVE_INFINITY;
             boolean inFront = true;
             for (int corner = 0; corner < 8 && inFront; corner++) {
-                double x = box[(corner & 1) * 3], y = box[1 + (corner >> 1 & 1) * 3], z = box[2 + (corner >> 2) * 3];
-                double depth = c.depth(x, y, z);
+                double vx = box[(corner & 1) * 3] - eyeX;
+                double vy = box[1 + (corner >> 1 & 1) * 3] - eyeY;
+                double vz = box[2 + (corner >> 2) * 3] - eyeZ;
+                double depth = vx * forwardX + vy * forwardY + vz * forwardZ;
                 inFront = depth > 0;
-                double sx = c.screenXOf(x, y, z, depth);
+                double sx = (vx * rightX + vy * rightY + vz * rightZ) / depth;
                 lo = Math.min(lo, sx);
                 hi = Math.max(hi, sx);
             }

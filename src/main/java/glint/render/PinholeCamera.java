@@ -67,7 +67,7 @@ public final class PinholeCamera {
 
     // ---------------------------------------------------------------- the image on the screen
 
-    /** Screen coordinate of image coordinate p, given the screen per pixel and the screen at the image's edge (p = 0). */
+    /** Screen coordinate of image coordinate p: the screen per pixel times p, plus the screen at p = 0. */
     static double screen(double p, double perPixel, double edge) {
         return p * perPixel + edge;
     }
@@ -149,16 +149,27 @@ public final class PinholeCamera {
         return eyeZ;
     }
 
-    /**
-     * Screen x of the point (x, y, z) as seen from the eye, that is (p - eye).right / (p - eye).forward,
-     * given its depth (p - eye).forward ({@link #depth}), which must be positive.
-     */
-    double screenXOf(double x, double y, double z, double depth) {
-        return ((x - eyeX) * rightX + (y - eyeY) * rightY + (z - eyeZ) * rightZ) / depth;
+    double forwardX() {
+        return forwardX;
     }
 
-    /** How far ahead of the eye the point (x, y, z) is, along the view direction. */
-    double depth(double x, double y, double z) {
-        return (x - eyeX) * forwardX + (y - eyeY) * forwardY + (z - eyeZ) * forwardZ;
+    double forwardY() {
+        return forwardY;
+    }
+
+    double forwardZ() {
+        return forwardZ;
+    }
+
+    double rightX() {
+        return rightX;
+    }
+
+    double rightY() {
+        return rightY;
+    }
+
+    double rightZ() {
+        return rightZ;
     }
 }
