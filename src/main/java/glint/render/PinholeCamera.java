@@ -135,7 +135,8 @@ public final class PinholeCamera {
         out[at + 2] = forwardZ + sx * rightZ + sy * upZ;
     }
 
-    // ---------------------------------------------------------------- what the row search reads
+    // ---------------------------------------------------------------- what the row search reads:
+    // the eye every ray leaves, and the axes it projects a box onto the screen with (CameraRows.narrow)
 
     double eyeX() {
         return eyeX;
