@@ -1,6 +1,7 @@
 package glint.study;
 
 import glint.math.Vector3d;
+import glint.render.PinholeCamera;
 import glint.render.Tracer;
 import glint.scene.Camera;
 import glint.scene.Scene;
@@ -78,8 +79,8 @@ final class Fireflies {
             for (int x = 0; x < WIDTH; x++) {
                 for (int i = 0; i < k; i++) {
                     for (int j = 0; j < k; j++) {
-                        Vector3d d = CameraRays.direction(camera.orientation(), camera.fovDegrees(), WIDTH, HEIGHT,
-                                x + (i + 0.5) / k, y + (j + 0.5) / k);
+                        Vector3d d = new PinholeCamera(camera).direction(x + (i + 0.5) / k, y + (j + 0.5) / k,
+                                WIDTH, HEIGHT);
                         double t = -camera.position().y() / d.y();
                         double px = camera.position().x() + t * d.x(), pz = camera.position().z() + t * d.z();
                         sum += mirror ? mirrorRadiance(px, pz) : directRadiance(px, pz);

@@ -1,6 +1,7 @@
 package glint.study;
 
 import glint.math.Vector3d;
+import glint.render.PinholeCamera;
 import glint.render.Tracer;
 import glint.scene.Camera;
 import glint.scene.Scene;
@@ -62,7 +63,7 @@ final class GlassSky {
 
     /** The impact parameter of the camera ray through image point (px, py), in radii. */
     static double impact(Camera camera, double px, double py) {
-        Vector3d d = CameraRays.direction(camera.orientation(), camera.fovDegrees(), WIDTH, HEIGHT, px, py);
+        Vector3d d = new PinholeCamera(camera).direction(px, py, WIDTH, HEIGHT);
         Vector3d toCentre = camera.position().scale(-1);
         double along = toCentre.dot(d);
         return Math.sqrt(Math.max(0, toCentre.dot(toCentre) - along * along));

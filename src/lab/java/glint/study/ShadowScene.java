@@ -1,6 +1,7 @@
 package glint.study;
 
 import glint.math.Vector3d;
+import glint.render.PinholeCamera;
 import glint.scene.Camera;
 import glint.scene.Light;
 import glint.scene.Material;
@@ -15,7 +16,7 @@ import java.util.List;
 /**
  * A matte scene lit by one point light, for the self-intersection study: spheres (centre x, y, z,
  * radius), optionally the floor plane y = floorY, a camera. It can be moved by (s, s, s) and turned
- * into a Glint scene; its pixel rays are Glint's (pixel centres, {@link CameraRays#direction}).
+ * into a Glint scene; its pixel rays are Glint's (pixel centres, {@link PinholeCamera#direction}).
  */
 public record ShadowScene(List<double[]> spheres, boolean hasFloor, double floorY, Vector3d light,
                           Vector3d eye, Vector3d lookAt, double fovDegrees, int width, int height) {
@@ -60,8 +61,7 @@ public record ShadowScene(List<double[]> spheres, boolean hasFloor, double floor
 
     /** Unit direction of the ray through the centre of pixel (x, y); the same for a moved scene. */
     public double[] direction(int x, int y) {
-        Camera c = camera();
-        Vector3d d = CameraRays.direction(c.orientation(), fovDegrees, width, height, x + 0.5, y + 0.5);
+        Vector3d d = new PinholeCamera(camera()).direction(x + 0.5, y + 0.5, width, height);
         return new double[] {d.x(), d.y(), d.z()};
     }
 

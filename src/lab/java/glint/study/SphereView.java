@@ -2,13 +2,15 @@ package glint.study;
 
 import glint.math.Quaternion;
 import glint.math.Vector3d;
+import glint.render.PinholeCamera;
+import glint.scene.Camera;
 
 /**
- * A pinhole view of one sphere: n x n pixel-centre rays from {@code eye} with horizontal half-angle
- * tangent {@code tanHalf}, oriented by forward and up as Glint's camera is.
+ * A pinhole view of one sphere: the n x n pixel-centre rays of Glint's camera at {@code eye}, oriented
+ * by forward and up, with a horizontal field of view of {@code fovDegrees}.
  */
 public record SphereView(Vector3d center, double radius, Vector3d eye, Vector3d forward, Vector3d up,
-                         double tanHalf, int n) {
+                         double fovDegrees, int n) {
 
     /** Tolerance on the hit distance: 0.1 % of the smaller of the radius and the true distance. */
     public static final double DISTANCE_TOLERANCE = 1e-3;
@@ -22,7 +24,7 @@ public record SphereView(Vector3d center, double radius, Vector3d eye, Vector3d 
         double sinAngular = 1 / distance;
         double tanAngular = sinAngular / Math.sqrt(1 - sinAngular * sinAngular);
         return new SphereView(axis.scale(distance), 1, Vector3d.ZERO, axis, Vector3d.UNIT_Y,
-                1.25 * tanAngular, n);
+                Math.toDegrees(2 * Math.atan(1.25 * tanAngular)), n);
     }
 
     /**
@@ -32,16 +34,13 @@ public record SphereView(Vector3d center, double radius, Vector3d eye, Vector3d 
     public static SphereView hugeSphere(double radius, int n) {
         Vector3d forward = new Vector3d(0, -Math.sin(Math.toRadians(15)), Math.cos(Math.toRadians(15)));
         return new SphereView(new Vector3d(0, -radius, 0), radius, Vector3d.UNIT_Y, forward, Vector3d.UNIT_Y,
-                Math.tan(Math.toRadians(30)), n);
+                60, n);
     }
 
     /** Unit direction (double) of the ray through the centre of pixel (x, y), rows top to bottom. */
     public double[] direction(int x, int y) {
-        Quaternion q = Quaternion.lookRotation(forward, up);
-        Vector3d f = q.forward(), r = q.right(), u = q.up();
-        double sx = ((x + 0.5) / n * 2 - 1) * tanHalf;
-        double sy = (1 - (y + 0.5) / n * 2) * tanHalf;
-        Vector3d d = f.add(r.scale(sx)).add(u.scale(sy)).normalize();
+        Vector3d d = new PinholeCamera(new Camera(eye, Quaternion.lookRotation(forward, up), fovDegrees))
+                .direction(x + 0.5, y + 0.5, n, n);
         return new double[] {d.x(), d.y(), d.z()};
     }
 }

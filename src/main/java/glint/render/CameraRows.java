@@ -7,20 +7,22 @@ import glint.image.FrameBuffer;
 import glint.shading.Rgb;
 
 /**
- * The camera rays of one tile row, per worker: their unit directions (world space), aimed for the
- * whole row before any is traced so that the square roots and divisions of many rays overlap, and
- * the radiance each ray brings back, averaged into the row's pixels once it is traced. Ray i of a
- * row is sample {@code i % sampleCount} of pixel {@code x0 + i / sampleCount}. The arrays grow,
- * never shrink, so a frame allocates nothing once the widest tile has been seen.
+ * The camera rays of one tile row, per worker: their unit directions (world space), made by the
+ * scene's {@link PinholeCamera} for the whole row before any is traced so that the square roots and
+ * divisions of many rays overlap, and the radiance each ray brings back, averaged into the row's
+ * pixels once it is traced. Ray i of a row is sample {@code i % sampleCount} of pixel
+ * {@code x0 + i / sampleCount}. The arrays grow, never shrink, so a frame allocates nothing once the
+ * widest tile has been seen. The row's search (its {@link #frustum}, {@link #narrow} and the hits of
+ * {@link #trace}) relies on what the camera promises: every ray leaves its eye.
  */
 final class CameraRows {
 
-    // per frame: screen x = px * scaleX + offsetX, likewise y (image plane at distance 1, y up)
+    // per frame: the camera's screen per pixel and screen at the image's left and top edges
     private double scaleX, offsetX, scaleY, offsetY;
 
     // the tile being traced: its camera, image width, pixel columns [x0, x1), and the samples
     // [firstSample, firstSample + sampleCount) of each pixel's side x side pattern for frame frameIndex
-    private CameraBasis camera;
+    private PinholeCamera camera;
     private int width, x0, x1, side, firstSample, sampleCount, frameIndex;
 
     /** The row's ray directions, one coordinate an array; written only here, read by tests. */
@@ -37,14 +39,12 @@ final class CameraRows {
      * [x0, x1), each pixel's samples [firstSample, firstSample + sampleCount) of its
      * {@code samples}-sample stratified pattern for frame {@code frameIndex}.
      */
-    void prepare(CameraBasis camera, int width, int height, int x0, int x1, int samples, int firstSample,
+    void prepare(PinholeCamera camera, int width, int height, int x0, int x1, int samples, int firstSample,
                  int sampleCount, int frameIndex) {
-        double halfWidth = camera.tanHalfFov;
-        double halfHeight = halfWidth * height / width;
-        scaleX = 2 * halfWidth / width;
-        offsetX = -halfWidth;
-        scaleY = -2 * halfHeight / height;
-        offsetY = halfHeight;
+        scaleX = camera.screenPerPixelX(width);
+        offsetX = camera.screenLeft();
+        scaleY = camera.screenPerPixelY(width, height);
+        offsetY = camera.screenTop(width, height);
         this.camera = camera;
         this.width = width;
         this.x0 = x0;
@@ -82,19 +82,12 @@ final class CameraRows {
     void frustum(int y, Frustum out) {
         double left = screenX(x0 - FRUSTUM_MARGIN), right = screenX(x1 + FRUSTUM_MARGIN);
         double top = screenY(y - FRUSTUM_MARGIN), bottom = screenY(y + 1 + FRUSTUM_MARGIN);
-        edge(0, left, top);
-        edge(1, right, top);
-        edge(2, right, bottom);
-        edge(3, left, bottom);
-        out.set(camera.eyeX, camera.eyeY, camera.eyeZ, edges);
-    }
-
-    /** Edge e of a row's frustum: the direction through screen point (sx, sy). */
-    private void edge(int e, double sx, double sy) {
-        CameraBasis c = camera;
-        edges[3 * e] = c.forwardX + sx * c.rightX + sy * c.upX;
-        edges[3 * e + 1] = c.forwardY + sx * c.rightY + sy * c.upY;
-        edges[3 * e + 2] = c.forwardZ + sx * c.rightZ + sy * c.upZ;
+        PinholeCamera c = camera;
+        c.through(left, top, edges, 0);
+        c.through(right, top, edges, 3);
+        c.through(right, bottom, edges, 6);
+        c.through(left, bottom, edges, 9);
+        out.set(c.eyeX(), c.eyeY(), c.eyeZ(), edges);
     }
 
     private final double[] box = new double[6];
@@ -108,7 +101,10 @@ final class CameraRows {
      * every row of the tile, as screen x does not depend on the row.
      */
     void narrow(Candidates candidates, Primitives primitives) {
-        CameraBasis c = camera;
+        PinholeCamera c = camera;
+        double eyeX = c.eyeX(), eyeY = c.eyeY(), eyeZ = c.eyeZ();
+        double forwardX = c.forwardX(), forwardY = c.forwardY(), forwardZ = c.forwardZ();
+        double rightX = c.rightX(), rightY = c.rightY(), rightZ = c.rightZ();
         for (int i = 0; i < candidates.count(); i++) {
             int p = candidates.primitive(i);
             if (!primitives.bounded(p)) {
@@ -118,12 +114,12 @@ final class CameraRows {
             double lo = Double.POSITIVE_INFINITY, hi = Double.NEGATIVE_INFINITY;
             boolean inFront = true;
             for (int corner = 0; corner < 8 && inFront; corner++) {
-                double vx = box[(corner & 1) * 3] - c.eyeX;
-                double vy = box[1 + (corner >> 1 & 1) * 3] - c.eyeY;
-                double vz = box[2 + (corner >> 2) * 3] - c.eyeZ;
-                double depth = vx * c.forwardX + vy * c.forwardY + vz * c.forwardZ;
+                double vx = box[(corner & 1) * 3] - eyeX;
+                double vy = box[1 + (corner >> 1 & 1) * 3] - eyeY;
+                double vz = box[2 + (corner >> 2) * 3] - eyeZ;
+                double depth = vx * forwardX + vy * forwardY + vz * forwardZ;
                 inFront = depth > 0;
-                double sx = (vx * c.rightX + vy * c.rightY + vz * c.rightZ) / depth;
+                double sx = (vx * rightX + vy * rightY + vz * rightZ) / depth;
                 lo = Math.min(lo, sx);
                 hi = Math.max(hi, sx);
             }
@@ -138,37 +134,22 @@ final class CameraRows {
 
     /** Screen x of image x (pixels from the left). */
     double screenX(double px) {
-        return px * scaleX + offsetX;
+        return PinholeCamera.screen(px, scaleX, offsetX);
     }
 
     /** Screen y of image y (pixels from the top; screen y grows upwards). */
     double screenY(double py) {
-        return py * scaleY + offsetY;
+        return PinholeCamera.screen(py, scaleY, offsetY);
     }
 
     /**
      * Aims the camera rays of the tile's row y: each pixel's samples of its stratified pattern, or,
-     * when the pattern has one sample, its centre. The centres are aimed with the arithmetic of
-     * {@link #aimThrough}, from the tile's screen x of each pixel centre worked out once.
+     * when the pattern has one sample, its centre. The centres are aimed along the row as single
+     * points are ({@link PinholeCamera#aimRow}), from the tile's screen x of each pixel centre worked out once.
      */
     void aim(int y) {
         if (side == 1) {
-            CameraBasis c = camera;
-            double sy = screenY(y + 0.5);
-            double upX = sy * c.upX, upY = sy * c.upY, upZ = sy * c.upZ;
-            double forwardX = c.forwardX, forwardY = c.forwardY, forwardZ = c.forwardZ;
-            double rightX = c.rightX, rightY = c.rightY, rightZ = c.rightZ;
-            double[] outX = dirX, outY = dirY, outZ = dirZ, screenX = centreX;
-            for (int ray = 0, n = x1 - x0; ray < n; ray++) {
-                double sx = screenX[ray];
-                double dx = forwardX + sx * rightX + upX;
-                double dy = forwardY + sx * rightY + upY;
-                double dz = forwardZ + sx * rightZ + upZ;
-                double inv = 1 / Math.sqrt(dx * dx + dy * dy + dz * dz);
-                outX[ray] = dx * inv;
-                outY[ray] = dy * inv;
-                outZ[ray] = dz * inv;
-            }
+            camera.aimRow(centreX, x1 - x0, screenY(y + 0.5), dirX, dirY, dirZ);
             return;
         }
         int ray = 0;
@@ -185,15 +166,7 @@ final class CameraRows {
 
     /** Stores the unit direction of camera ray i through image point (px, py), in pixels from the top-left. */
     void aimThrough(int ray, double px, double py) {
-        CameraBasis camera = this.camera;
-        double sx = screenX(px), sy = screenY(py);
-        double dx = camera.forwardX + sx * camera.rightX + sy * camera.upX;
-        double dy = camera.forwardY + sx * camera.rightY + sy * camera.upY;
-        double dz = camera.forwardZ + sx * camera.rightZ + sy * camera.upZ;
-        double inv = 1 / Math.sqrt(dx * dx + dy * dy + dz * dz);
-        dirX[ray] = dx * inv;
-        dirY[ray] = dy * inv;
-        dirZ[ray] = dz * inv;
+        camera.aim(screenX(px), screenY(py), dirX, dirY, dirZ, ray);
     }
 
     /**
@@ -203,14 +176,14 @@ final class CameraRows {
      * {@code x0 + i / sampleCount}, and its (pixel, frame, sample) seeds its path's random decisions.
      */
     void trace(Integrator integrator, Candidates candidates, int y, int hitsLeft) {
-        CameraBasis eye = camera;
+        double eyeX = camera.eyeX(), eyeY = camera.eyeY(), eyeZ = camera.eyeZ(); // every ray's origin
         int rays = (x1 - x0) * sampleCount;
-        integrator.findCameraHits(candidates, eye.eyeX, eye.eyeY, eye.eyeZ, dirX, dirY, dirZ, rays, hitT,
+        integrator.findCameraHits(candidates, eyeX, eyeY, eyeZ, dirX, dirY, dirZ, rays, hitT,
                 hitPrimitive);
         int pixel = y * width + x0, sample = firstSample, end = firstSample + sampleCount;
         for (int ray = 0; ray < rays; ray++) {
             integrator.beginPath(pixel, frameIndex, sample, side * side);
-            Rgb radiance = integrator.shadeCamera(hitPrimitive[ray], hitT[ray], eye.eyeX, eye.eyeY, eye.eyeZ,
+            Rgb radiance = integrator.shadeCamera(hitPrimitive[ray], hitT[ray], eyeX, eyeY, eyeZ,
                     dirX[ray], dirY[ray], dirZ[ray], hitsLeft);
             radianceR[ray] = radiance.r;
             radianceG[ray] = radiance.g;

@@ -46,8 +46,8 @@ public final class RenderScene {
     final double[] shadowPass;
     final double backgroundR, backgroundG, backgroundB;
     final double ambientR, ambientG, ambientB;
-    /** The camera, world space. */
-    final CameraBasis camera;
+    /** The camera that makes the camera rays, world space. */
+    final PinholeCamera camera;
 
     private RenderScene(Scene scene, RenderSettings settings, Registry registry,
                         Function<Primitives, Aggregate> aggregateOf, boolean lightCells) {
@@ -79,7 +79,7 @@ public final class RenderScene {
         ambientR = scene.ambient().x();
         ambientG = scene.ambient().y();
         ambientB = scene.ambient().z();
-        camera = new CameraBasis(scene.camera());
+        camera = new PinholeCamera(scene.camera());
     }
 
     /** The same compiled scene seen from another camera: shares everything else. */
@@ -98,7 +98,7 @@ public final class RenderScene {
         ambientR = base.ambientR;
         ambientG = base.ambientG;
         ambientB = base.ambientB;
-        this.camera = new CameraBasis(camera);
+        this.camera = new PinholeCamera(camera);
     }
 
     /** Compiles an immutable scene with the given settings. */

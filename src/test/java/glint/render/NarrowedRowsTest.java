@@ -70,14 +70,14 @@ class NarrowedRowsTest {
     }
 
     private static double eyeX(RenderScene scene) {
-        return scene.camera.eyeX;
+        return scene.camera.eyeX();
     }
 
     private static double eyeY(RenderScene scene) {
-        return scene.camera.eyeY;
+        return scene.camera.eyeY();
     }
 
     private static double eyeZ(RenderScene scene) {
-        return scene.camera.eyeZ;
+        return scene.camera.eyeZ();
     }
 }

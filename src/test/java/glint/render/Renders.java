@@ -3,6 +3,8 @@ package glint.render;
 import glint.config.Shading;
 import glint.image.FrameBuffer;
 import glint.input.InputException;
+import glint.math.Vector3d;
+import glint.scene.Camera;
 import glint.scene.Scene;
 import glint.scenefile.SceneLoader;
 
@@ -46,14 +48,11 @@ public final class Renders {
 
     /**
      * The unit direction of the camera ray through the centre of pixel (x, y) for a camera at the
-     * origin looking along +z with up +y, computed from the definition: the image plane at z = 1
-     * spans x in [-tan(fov/2), tan(fov/2)], +x to the right, +y up.
+     * origin looking along +z with up +y: the renderer's own ray ({@link PinholeCamera}).
      */
     public static double[] axisCameraRay(double fovDegrees, int width, int height, int x, int y) {
-        double half = Math.tan(Math.toRadians(fovDegrees) / 2);
-        double sx = ((x + 0.5) / width * 2 - 1) * half;
-        double sy = (1 - (y + 0.5) / height * 2) * half * height / width;
-        double len = Math.sqrt(sx * sx + sy * sy + 1);
-        return new double[] {sx / len, sy / len, 1 / len};
+        Vector3d d = new PinholeCamera(Camera.lookAt(Vector3d.ZERO, Vector3d.UNIT_Z, Vector3d.UNIT_Y, fovDegrees))
+                .direction(x + 0.5, y + 0.5, width, height);
+        return new double[] {d.x(), d.y(), d.z()};
     }
 }

@@ -140,8 +140,7 @@ class StabilityTest {
         int surfacePixels = 0, wrong = 0;
         for (int y = 0; y < h; y++) {
             for (int x = 0; x < w; x++) {
-                glint.math.Vector3d d = glint.study.CameraRays.direction(camera.orientation(), fov, w, h, x + 0.5,
-                        y + 0.5);
+                glint.math.Vector3d d = new PinholeCamera(camera).direction(x + 0.5, y + 0.5, w, h);
                 double t = hit.t(eye[0], eye[1], eye[2], d.x(), d.y(), d.z());
                 double v = frame.get(x, y, 0);
                 if (t == Intersect.MISS) {

@@ -3,6 +3,7 @@ package glint.ui.input;
 import glint.accel.Aggregate;
 import glint.geometry.Hit;
 import glint.math.Vector3d;
+import glint.render.PinholeCamera;
 import glint.render.RenderScene;
 import glint.scene.Camera;
 
@@ -18,19 +19,15 @@ public final class OrbitPivot {
     }
 
     /**
-     * The nearest point of the scene on the ray through pixel (x, y) of a width x height view (the mapping
-     * of the tracer's pixel centres); when the ray meets nothing, the point
+     * The nearest point of the scene on the camera's ray through pixel (x, y) of a width x height view (its
+     * centre, as the tracer's); when the ray meets nothing, the point
      * {@link CameraController#ORBIT_MISS_DISTANCE} ahead of the camera, in the view's centre.
      */
     public static Vector3d pick(RenderScene scene, Camera camera, double x, double y, int width, int height) {
-        Vector3d eye = camera.position();
+        PinholeCamera pinhole = new PinholeCamera(camera);
+        Vector3d eye = pinhole.eye();
         Vector3d forward = camera.orientation().forward();
-        double halfWidth = Math.tan(Math.toRadians(camera.fovDegrees()) / 2);
-        double halfHeight = halfWidth * height / width;
-        double sx = (x + 0.5) * 2 * halfWidth / width - halfWidth;
-        double sy = halfHeight - (y + 0.5) * 2 * halfHeight / height;
-        Vector3d d = forward.add(camera.orientation().right().scale(sx)).add(camera.orientation().up().scale(sy))
-                .normalize();
+        Vector3d d = pinhole.direction(x + 0.5, y + 0.5, width, height);
         Aggregate aggregate = scene.aggregate();
         Hit hit = new Hit();
         if (aggregate.nearest(eye.x(), eye.y(), eye.z(), d.x(), d.y(), d.z(), Double.POSITIVE_INFINITY, Hit.NONE,

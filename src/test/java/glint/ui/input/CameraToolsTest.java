@@ -7,6 +7,7 @@ import static org.junit.jupiter.api.Assertions.assertTrue;
 import glint.config.Config;
 import glint.input.InputException;
 import glint.math.Vector3d;
+import glint.render.PinholeCamera;
 import glint.render.RenderScene;
 import glint.render.RenderSettings;
 import glint.scene.Camera;
@@ -96,5 +97,23 @@ class CameraToolsTest {
         assertVector(new Vector3d(0, 1, -1), centre, 1e-9);
         Vector3d miss = OrbitPivot.pick(compiled, scene.camera(), 0, 0, 100, 80);
         assertVector(new Vector3d(0, 1, -4 + CameraController.ORBIT_MISS_DISTANCE), miss, 1e-9);
+    }
+
+    @Test
+    void thePivotLiesOnTheCamerasRayThroughThePixelsCentre() throws InputException {
+        Scene scene = SceneLoader.parse("s.yaml", """
+                camera: {position: [0.3, 1, -4], look_at: [1, 1.5, 0], fov: 70}
+                objects:
+                  - {type: plane, point: [0, 0, 10], normal: [0, 0, -1]}
+                """);
+        RenderScene compiled = RenderScene.compile(scene, RenderSettings.of(Config.defaults()));
+        PinholeCamera camera = new PinholeCamera(scene.camera());
+        java.util.SplittableRandom random = new java.util.SplittableRandom(46);
+        for (int trial = 0; trial < 50; trial++) {
+            double x = random.nextDouble(0, 160), y = random.nextDouble(0, 90);
+            Vector3d pivot = OrbitPivot.pick(compiled, scene.camera(), x, y, 160, 90);
+            assertEquals(10, pivot.z(), 1e-9, "on the wall");
+            assertVector(camera.direction(x + 0.5, y + 0.5, 160, 90), pivot.sub(camera.eye()).normalize(), 1e-12);
+        }
     }
 }

@@ -1,0 +1,176 @@
+package glint.render;
+
+import glint.math.Quaternion;
+import glint.math.Vector3d;
+import glint.scene.Camera;
+
+/**
+ * The camera that makes every camera ray: a pinhole at the eye, compiled from the scene's
+ * {@link Camera} (world space). A ray goes from the eye through a point of the screen, the image
+ * plane one unit ahead: screen (sx, sy) is the direction forward + sx right + sy up, made unit.
+ * A width x height image covers the screen from sx = -tan(fov / 2) on its left to +tan(fov / 2) on
+ * its right (fov is the horizontal field of view; +x on the image's right when looking along +z
+ * with up +y), and the height in proportion, sy growing upwards. Image point (px, py) is in pixels
+ * from the image's top-left corner; the centre of pixel (i, j) is (i + 0.5, j + 0.5).
+ *
+ * <p>Every ray leaves the same point, the {@link #eye()}. The row search relies on it
+ * ({@link CameraRows}): a tile row's rays lie in one frustum from the eye, the primitives it may
+ * hold are searched from that one origin ({@code PrimitiveKind.nearestFromOrigin}), and a box is
+ * narrowed to the rays between the screen x of its corners as seen from the eye. A camera whose
+ * rays leave different points (a lens with an aperture) would have to say so, and its rows be
+ * searched ray by ray.
+ */
+public final class PinholeCamera {
+
+    private final double eyeX, eyeY, eyeZ;
+    private final double rightX, rightY, rightZ;
+    private final double upX, upY, upZ;
+    private final double forwardX, forwardY, forwardZ;
+    /** tan(fov / 2): half the screen's width. */
+    private final double tanHalfFov;
+
+    public PinholeCamera(Camera camera) {
+        Quaternion q = camera.orientation();
+        Vector3d right = q.right(), up = q.up(), forward = q.forward();
+        eyeX = camera.position().x();
+        eyeY = camera.position().y();
+        eyeZ = camera.position().z();
+        rightX = right.x();
+        rightY = right.y();
+        rightZ = right.z();
+        upX = up.x();
+        upY = up.y();
+        upZ = up.z();
+        forwardX = forward.x();
+        forwardY = forward.y();
+        forwardZ = forward.z();
+        tanHalfFov = Math.tan(Math.toRadians(camera.fovDegrees()) / 2);
+    }
+
+    /** The point every ray of this camera leaves. */
+    public Vector3d eye() {
+        return new Vector3d(eyeX, eyeY, eyeZ);
+    }
+
+    /**
+     * The unit direction of the ray through image point (px, py) of a width x height image: the
+     * arithmetic of the renderer's rays, bit for bit. Allocates; the renderer aims through
+     * {@link #aim} instead.
+     */
+    public Vector3d direction(double px, double py, int width, int height) {
+        double sx = screen(px, screenPerPixelX(width), screenLeft());
+        double sy = screen(py, screenPerPixelY(width, height), screenTop(width, height));
+        double[] x = new double[1], y = new double[1], z = new double[1];
+        aim(sx, sy, x, y, z, 0);
+        return new Vector3d(x[0], y[0], z[0]);
+    }
+
+    // ---------------------------------------------------------------- the image on the screen
+
+    /** Screen coordinate of image coordinate p: the screen per pixel times p, plus the screen at p = 0. */
+    static double screen(double p, double perPixel, double edge) {
+        return p * perPixel + edge;
+    }
+
+    /** Screen x per pixel of an image {@code width} pixels wide. */
+    double screenPerPixelX(int width) {
+        return 2 * tanHalfFov / width;
+    }
+
+    /** Screen x of the image's left edge. */
+    double screenLeft() {
+        return -tanHalfFov;
+    }
+
+    /** Screen y per pixel (downwards: negative) of a width x height image. */
+    double screenPerPixelY(int width, int height) {
+        return -2 * screenTop(width, height) / height;
+    }
+
+    /** Screen y of the top edge of a width x height image. */
+    double screenTop(int width, int height) {
+        return tanHalfFov * height / width;
+    }
+
+    // ---------------------------------------------------------------- rays
+
+    /**
+     * Stores the unit direction of the ray through screen point (sx, sy) into (outX[i], outY[i], outZ[i]).
+     */
+    void aim(double sx, double sy, double[] outX, double[] outY, double[] outZ, int i) {
+        double dx = forwardX + sx * rightX + sy * upX;
+        double dy = forwardY + sx * rightY + sy * upY;
+        double dz = forwardZ + sx * rightZ + sy * upZ;
+        double inv = 1 / Math.sqrt(dx * dx + dy * dy + dz * dz);
+        outX[i] = dx * inv;
+        outY[i] = dy * inv;
+        outZ[i] = dz * inv;
+    }
+
+    /**
+     * Stores the unit directions of the rays through screen points (screenX[i], sy), i in [0, n),
+     * one row of the screen, into out[i]: the arithmetic of {@link #aim}, with what the row shares
+     * worked out once.
+     */
+    void aimRow(double[] screenX, int n, double sy, double[] outX, double[] outY, double[] outZ) {
+        double rowUpX = sy * upX, rowUpY = sy * upY, rowUpZ = sy * upZ;
+        double fX = forwardX, fY = forwardY, fZ = forwardZ;
+        double rX = rightX, rY = rightY, rZ = rightZ;
+        for (int i = 0; i < n; i++) {
+            double sx = screenX[i];
+            double dx = fX + sx * rX + rowUpX;
+            double dy = fY + sx * rY + rowUpY;
+            double dz = fZ + sx * rZ + rowUpZ;
+            double inv = 1 / Math.sqrt(dx * dx + dy * dy + dz * dz);
+            outX[i] = dx * inv;
+            outY[i] = dy * inv;
+            outZ[i] = dz * inv;
+        }
+    }
+
+    /** Stores the direction (not unit) through screen point (sx, sy) into out[at], out[at + 1], out[at + 2]. */
+    void through(double sx, double sy, double[] out, int at) {
+        out[at] = forwardX + sx * rightX + sy * upX;
+        out[at + 1] = forwardY + sx * rightY + sy * upY;
+        out[at + 2] = forwardZ + sx * rightZ + sy * upZ;
+    }
+
+    // ---------------------------------------------------------------- what the row search reads:
+    // the eye every ray leaves, and the axes it projects a box onto the screen with (CameraRows.narrow)
+
+    double eyeX() {
+        return eyeX;
+    }
+
+    double eyeY() {
+        return eyeY;
+    }
+
+    double eyeZ() {
+        return eyeZ;
+    }
+
+    double forwardX() {
+        return forwardX;
+    }
+
+    double forwardY() {
+        return forwardY;
+    }
+
+    double forwardZ() {
+        return forwardZ;
+    }
+
+    double rightX() {
+        return rightX;
+    }
+
+    double rightY() {
+        return rightY;
+    }
+
+    double rightZ() {
+        return rightZ;
+    }
+}
