@@ -1,7 +1,7 @@
 package glint.bench;
 
-import glint.input.InputException;
 import glint.image.FrameBuffer;
+import glint.input.InputException;
 import glint.scenefile.SceneLoader;
 import java.util.concurrent.TimeUnit;
 import org.openjdk.jmh.annotations.Benchmark;

@@ -1,8 +1,8 @@
 package glint.bench;
 
 import glint.config.LightTransport;
-import glint.input.InputException;
 import glint.image.FrameBuffer;
+import glint.input.InputException;
 import glint.scenefile.SceneLoader;
 import java.nio.file.Path;
 import java.util.concurrent.TimeUnit;

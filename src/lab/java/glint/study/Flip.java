@@ -1,7 +1,7 @@
 package glint.study;
 
-import glint.image.Srgb;
 import glint.image.FrameBuffer;
+import glint.image.Srgb;
 
 /**
  * LDR-FLIP, the perceptual difference of Andersson, Nilsson, Akenine-Möller, Oskarsson, Åström and

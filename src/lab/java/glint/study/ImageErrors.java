@@ -1,7 +1,7 @@
 package glint.study;
 
-import glint.image.Srgb;
 import glint.image.FrameBuffer;
+import glint.image.Srgb;
 
 /**
  * How far an image is from a reference, four ways: relative MSE on linear values, SSIM on sRGB luma,

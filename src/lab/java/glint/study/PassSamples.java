@@ -2,8 +2,8 @@ package glint.study;
 
 import glint.config.LightTransport;
 import glint.config.Shading;
-import glint.input.InputException;
 import glint.image.FrameBuffer;
+import glint.input.InputException;
 import glint.render.RenderScene;
 import glint.render.RenderSettings;
 import glint.render.Tracer;

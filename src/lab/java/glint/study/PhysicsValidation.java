@@ -1,8 +1,8 @@
 package glint.study;
 
+import glint.image.FrameBuffer;
 import glint.image.PfmReader;
 import glint.input.InputException;
-import glint.image.FrameBuffer;
 import java.io.IOException;
 import java.nio.file.Path;
 import java.util.ArrayList;

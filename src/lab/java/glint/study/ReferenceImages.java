@@ -1,8 +1,8 @@
 package glint.study;
 
+import glint.image.FrameBuffer;
 import glint.image.ImageWriter;
 import glint.image.PfmReader;
-import glint.image.FrameBuffer;
 import glint.render.RenderScene;
 import glint.render.Tracer;
 import java.io.IOException;

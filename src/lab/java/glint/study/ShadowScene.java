@@ -1,11 +1,11 @@
 package glint.study;
 
 import glint.math.Vector3d;
+import glint.registry.MatteType;
 import glint.render.PinholeCamera;
 import glint.scene.Camera;
 import glint.scene.Light;
 import glint.scene.Material;
-import glint.registry.MatteType;
 import glint.scene.Plane;
 import glint.scene.Scene;
 import glint.scene.SceneObject;

@@ -1,7 +1,7 @@
 package glint.study;
 
-import glint.input.InputException;
 import glint.image.FrameBuffer;
+import glint.input.InputException;
 import glint.render.RenderScene;
 import glint.render.Tracer;
 import java.io.IOException;

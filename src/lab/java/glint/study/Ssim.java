@@ -1,7 +1,7 @@
 package glint.study;
 
-import glint.image.Srgb;
 import glint.image.FrameBuffer;
+import glint.image.Srgb;
 
 /**
  * The structural similarity index of Wang, Bovik, Sheikh and Simoncelli (IEEE TIP 2004), as in their

@@ -2,8 +2,8 @@ package glint.app;
 
 import glint.config.Config;
 import glint.config.Flags;
-import glint.input.InputException;
 import glint.image.FrameBuffer;
+import glint.input.InputException;
 import glint.render.RenderScene;
 import glint.render.RenderSettings;
 import glint.render.Tracer;

@@ -1,10 +1,10 @@
 package glint.render;
 
-import glint.config.Shading;
 import glint.accel.Aggregate;
 import glint.accel.AggregatePolicy;
-import glint.geometry.Primitives;
+import glint.config.Shading;
 import glint.geometry.PrimitiveKind;
+import glint.geometry.Primitives;
 import glint.registry.LightType;
 import glint.registry.Registry;
 import glint.registry.ShapeType;

@@ -2,10 +2,10 @@ package glint.still;
 
 import glint.config.Config;
 import glint.config.LightTransport;
+import glint.image.FrameBuffer;
 import glint.image.ImageWriter;
 import glint.image.PartFile;
 import glint.image.PartGuard;
-import glint.image.FrameBuffer;
 import glint.render.RenderScene;
 import glint.render.Tracer;
 import java.io.IOException;

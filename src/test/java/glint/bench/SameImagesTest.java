@@ -2,8 +2,8 @@ package glint.bench;
 
 import static org.junit.jupiter.api.Assertions.assertEquals;
 
-import glint.image.ImageWriter;
 import glint.image.FrameBuffer;
+import glint.image.ImageWriter;
 import java.nio.file.Path;
 import org.junit.jupiter.api.Test;
 import org.junit.jupiter.api.io.TempDir;

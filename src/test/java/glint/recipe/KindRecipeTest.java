@@ -3,8 +3,8 @@ package glint.recipe;
 import static org.junit.jupiter.api.Assertions.assertEquals;
 import static org.junit.jupiter.api.Assertions.assertTrue;
 
-import glint.registry.Registry;
 import glint.image.FrameBuffer;
+import glint.registry.Registry;
 import glint.render.Renders;
 import org.junit.jupiter.api.Test;
 

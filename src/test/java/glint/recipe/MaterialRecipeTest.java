@@ -3,10 +3,10 @@ package glint.recipe;
 import static org.junit.jupiter.api.Assertions.assertEquals;
 import static org.junit.jupiter.api.Assertions.assertThrows;
 
+import glint.image.FrameBuffer;
 import glint.math.Vector3d;
 import glint.registry.MaterialType;
 import glint.registry.Registry;
-import glint.image.FrameBuffer;
 import glint.shading.Dielectric;
 import java.util.List;
 import org.junit.jupiter.api.Test;

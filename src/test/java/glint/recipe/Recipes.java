@@ -1,9 +1,9 @@
 package glint.recipe;
 
 import glint.config.Shading;
+import glint.image.FrameBuffer;
 import glint.input.InputException;
 import glint.registry.Registry;
-import glint.image.FrameBuffer;
 import glint.render.RenderScene;
 import glint.render.RenderSettings;
 import glint.render.Tracer;

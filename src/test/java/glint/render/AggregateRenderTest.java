@@ -4,11 +4,11 @@ import static org.junit.jupiter.api.Assertions.assertArrayEquals;
 import static org.junit.jupiter.api.Assertions.assertEquals;
 import static org.junit.jupiter.api.Assertions.assertTrue;
 
-import glint.config.Shading;
 import glint.accel.AggregatePolicy;
 import glint.accel.Bvh;
 import glint.accel.FlatList;
 import glint.accel.LightCells;
+import glint.config.Shading;
 import glint.geometry.Primitives;
 import glint.image.FrameBuffer;
 import glint.scene.Scene;

@@ -3,8 +3,8 @@ package glint.render;
 import static org.junit.jupiter.api.Assertions.assertEquals;
 import static org.junit.jupiter.api.Assertions.assertTrue;
 
-import glint.config.Shading;
 import glint.accel.FlatList;
+import glint.config.Shading;
 import glint.image.FrameBuffer;
 import glint.scene.Scene;
 import java.util.Locale;

@@ -2,8 +2,8 @@ package glint.render;
 
 import static org.junit.jupiter.api.Assertions.assertArrayEquals;
 
-import glint.config.Shading;
 import glint.accel.FlatList;
+import glint.config.Shading;
 import glint.image.FrameBuffer;
 import glint.scene.Scene;
 import org.junit.jupiter.api.Test;

@@ -1,8 +1,8 @@
 package glint.render;
 
+import glint.geometry.Intersect;
 import glint.image.FrameBuffer;
 import glint.shading.Optics;
-import glint.geometry.Intersect;
 import static org.junit.jupiter.api.Assertions.assertEquals;
 import static org.junit.jupiter.api.Assertions.assertTrue;
 

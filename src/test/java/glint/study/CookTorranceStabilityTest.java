@@ -4,8 +4,8 @@ import static org.junit.jupiter.api.Assertions.assertEquals;
 import static org.junit.jupiter.api.Assertions.assertTrue;
 
 import glint.config.Shading;
-import glint.input.InputException;
 import glint.image.FrameBuffer;
+import glint.input.InputException;
 import glint.render.RenderScene;
 import glint.render.RenderSettings;
 import glint.render.Tracer;

@@ -5,8 +5,8 @@ import static org.junit.jupiter.api.Assertions.assertNull;
 import static org.junit.jupiter.api.Assertions.assertSame;
 import static org.junit.jupiter.api.Assertions.assertTrue;
 
-import glint.image.Srgb;
 import glint.image.FrameBuffer;
+import glint.image.Srgb;
 import glint.render.RenderScene;
 import glint.render.Tracer;
 import java.awt.image.BufferedImage;

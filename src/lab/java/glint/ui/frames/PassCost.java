@@ -1,8 +1,8 @@
 package glint.ui.frames;
 
 import glint.config.Config;
-import glint.input.InputException;
 import glint.image.FrameBuffer;
+import glint.input.InputException;
 import glint.render.RenderScene;
 import glint.render.RenderSettings;
 import glint.render.Tracer;

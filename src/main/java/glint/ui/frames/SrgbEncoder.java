@@ -1,8 +1,8 @@
 package glint.ui.frames;
 
 import glint.image.Dither;
-import glint.image.Srgb;
 import glint.image.FrameBuffer;
+import glint.image.Srgb;
 import java.awt.image.BufferedImage;
 import java.awt.image.DataBufferInt;
 

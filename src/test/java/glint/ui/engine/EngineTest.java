@@ -8,10 +8,10 @@ import static org.junit.jupiter.api.Assertions.assertTrue;
 
 import glint.config.Config;
 import glint.config.Shading;
+import glint.image.FrameBuffer;
 import glint.image.ImageWriter;
 import glint.input.InputException;
 import glint.math.Vector3d;
-import glint.image.FrameBuffer;
 import glint.render.RenderScene;
 import glint.render.RenderSettings;
 import glint.render.Tracer;

@@ -3,9 +3,9 @@ package glint.ui.frames;
 import static org.junit.jupiter.api.Assertions.assertArrayEquals;
 import static org.junit.jupiter.api.Assertions.assertEquals;
 
+import glint.image.FrameBuffer;
 import glint.image.ImageWriter;
 import glint.image.Srgb;
-import glint.image.FrameBuffer;
 import java.awt.image.BufferedImage;
 import java.util.SplittableRandom;
 import org.junit.jupiter.api.Test;

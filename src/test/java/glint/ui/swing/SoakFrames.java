@@ -1,8 +1,8 @@
 package glint.ui.swing;
 
+import glint.image.FrameBuffer;
 import glint.image.Srgb;
 import glint.math.Vector3d;
-import glint.image.FrameBuffer;
 import glint.render.RenderScene;
 import glint.render.Tracer;
 import glint.scene.Scene;
