@@ -37,7 +37,7 @@ import java.util.concurrent.TimeUnit;
  * samples, then waits without using the CPU until something changes.
  *
  * <p>{@link #step} is one turn of the loop and is what tests drive with their own clock; {@link #run}
- * repeats it and waits on {@link InputState#awaitActivity} as long as it asks.
+ * repeats it and waits on {@link InputState#awaitActivity} as long as it asks, timed by the same clock.
  *
  * <p>Faults do not end it: a frame that fails to render (a render worker threw, memory ran out) keeps the
  * last good frame on screen, shows why in the overlay, says so once on standard error, and is tried again

@@ -236,17 +236,15 @@ public final class InputState {
     }
 
     /**
-     * Waits until there is input or a signal, or {@code timeoutNanos} passed; returns at once if
-     * something happened since the last wait.
+     * Waits until there is input or a signal, or {@code timeoutNanos} of the clock passed; returns at once
+     * if something happened since the last wait. Returns whether input or a signal ended it.
      */
-    public void awaitActivity(long timeoutNanos) throws InterruptedException {
+    public boolean awaitActivity(long timeoutNanos) throws InterruptedException {
         lock.lock();
         try {
-            long left = timeoutNanos;
-            while (!signalled && left > 0) {
-                left = activity.awaitNanos(left);
-            }
+            boolean woken = clock.await(lock, activity, timeoutNanos, () -> signalled);
             signalled = false;
+            return woken;
         } finally {
             lock.unlock();
         }

@@ -17,7 +17,6 @@ import glint.ui.RecordingPresenter;
 import glint.ui.TestScenes;
 import glint.ui.capture.Screenshots;
 import glint.ui.input.Action;
-import glint.ui.input.Clock;
 import glint.ui.input.InputState;
 import glint.ui.scenes.SceneSource;
 import glint.ui.screen.FrameStats;
@@ -29,7 +28,6 @@ import java.io.StringWriter;
 import java.nio.file.Files;
 import java.nio.file.Path;
 import java.util.List;
-import java.util.concurrent.TimeUnit;
 import javax.imageio.ImageIO;
 import org.junit.jupiter.api.AfterEach;
 import org.junit.jupiter.api.Test;
@@ -80,6 +78,11 @@ class EngineFaultTest {
 
     private FrameStats lastStats() {
         return presenter.last().stats();
+    }
+
+    /** Whether the engine's loop waits on the clock, and for exactly {@code nanos} of it. */
+    private boolean waitsFor(long nanos) {
+        return clock.waitsLeft().equals(List.of(nanos));
     }
 
     private long linesWith(String text) {
@@ -192,29 +195,36 @@ class EngineFaultTest {
 
     @Test
     void theEngineThreadRecoversOnItsOwn() throws Exception {
-        Path sceneFile = Files.writeString(dir.resolve("scene.yaml"), TestScenes.sphere(0.1, 0.2, 0.3));
-        SceneSource source = new SceneSource(sceneFile, () -> config);
-        Engine e = new Engine(config, source.loadScene(), source, new InputState(Clock.SYSTEM, W, H), presenter,
-                new Screenshots(dir), Clock.SYSTEM, new PrintWriter(errText, true), trace);
+        open(config);
         trace.faults.set(3);
-        Thread loop = new Thread(e, "test-engine");
+        Thread loop = new Thread(engine, "test-engine");
         loop.start();
         try {
-            long start = System.nanoTime();
-            Poll.until(() -> presenter.last() != null && presenter.last().image() != null
-                    && presenter.last().stats().refined(), 20_000, "a refined frame after three failed tries");
-            long millis = TimeUnit.NANOSECONDS.toMillis(System.nanoTime() - start);
-            assertTrue(millis >= 3 * Engine.RETRY_NANOS / 1_000_000 - 50, "paused between tries: " + millis + " ms");
+            for (int tryNumber = 1; tryNumber <= 3; tryNumber++) {
+                int tries = tryNumber;
+                Poll.until(() -> trace.calls.get() == tries && waitsFor(Engine.RETRY_NANOS), 20_000,
+                        () -> "try " + tries + " fails, and the loop pauses: waits " + clock.waitsLeft() + "; err: "
+                                + errText);
+                assertTrue(lastStats().renderError().endsWith("; trying again"), lastStats().renderError());
+                clock.advanceNanos(Engine.RETRY_NANOS - 1);
+                assertEquals(List.of(1L), clock.waitsLeft(), "a nanosecond before the pause ends, the loop waits on");
+                assertEquals(tries, trace.calls.get(), "not tried again before the pause is over");
+                clock.advanceNanos(1);
+            }
+            Poll.until(() -> presenter.last().stats().refined() && clock.waitsLeft().size() == 1, 20_000,
+                    () -> "a refined frame after three failed tries, and the loop idle; err: " + errText);
+            assertEquals(3 + 4, trace.calls.get(), "three failed tries, then the four passes of the still, one by one");
             assertTrue(loop.isAlive());
-            assertFalse(e.hasFailed());
+            assertFalse(engine.hasFailed());
             assertEquals(1, linesWith("render failed"), errText.toString());
             assertEquals(1, linesWith("rendering works again after 3 failed tries"), errText.toString());
-            assertEquals("", presenter.last().stats().renderError());
+            assertEquals("", lastStats().renderError());
+            assertArrayEquals(cleanStillImage(), pixels(presenter.last().image()));
         } finally {
-            e.stop();
+            engine.stop();
             loop.join(30_000);
-            e.close();
         }
+        assertFalse(loop.isAlive(), "the loop ended on request");
     }
 
     @Test

@@ -5,6 +5,7 @@ import static org.junit.jupiter.api.Assertions.assertFalse;
 import static org.junit.jupiter.api.Assertions.assertTrue;
 
 import glint.ui.FakeClock;
+import glint.ui.Poll;
 import java.util.List;
 import java.util.concurrent.TimeUnit;
 import org.junit.jupiter.api.Test;
@@ -102,29 +103,73 @@ class InputStateTest {
     }
 
     @Test
-    void activityBeforeTheWaitIsNotLost() throws InterruptedException {
+    void activityBeforeTheWaitIsNotLost() throws Exception {
         input.command(Action.RELOAD);
-        long start = System.nanoTime();
-        input.awaitActivity(TimeUnit.SECONDS.toNanos(30)); // returns at once: the command came first
-        assertTrue(System.nanoTime() - start < TimeUnit.SECONDS.toNanos(5));
+        Waiting wait = waitFor(TimeUnit.SECONDS.toNanos(30));
+        assertTrue(wait.result(), "the command came first: the wait ends without the clock moving");
+        assertEquals(List.of(), clock.waitsLeft());
+        assertFalse(input.awaitActivity(0), "the command ended one wait, not two");
     }
 
     @Test
-    void anotherThreadWakesTheWait() throws InterruptedException {
+    void anotherThreadWakesTheWait() throws Exception {
         input.awaitActivity(0); // clear
+        Waiting wait = waitFor(TimeUnit.SECONDS.toNanos(30));
+        Poll.until(() -> clock.waitsLeft().equals(List.of(TimeUnit.SECONDS.toNanos(30))), 10_000, "the wait began");
         Thread waker = new Thread(() -> input.press(Action.FORWARD));
-        long start = System.nanoTime();
         waker.start();
-        input.awaitActivity(TimeUnit.SECONDS.toNanos(30));
-        assertTrue(System.nanoTime() - start < TimeUnit.SECONDS.toNanos(5));
+        assertTrue(wait.result(), "ended by the key, the clock still where it was");
         waker.join();
+        assertEquals(List.of(), clock.waitsLeft());
     }
 
     @Test
-    void withoutActivityTheWaitTimesOut() throws InterruptedException {
-        input.awaitActivity(0); // clear
-        long start = System.nanoTime();
-        input.awaitActivity(TimeUnit.MILLISECONDS.toNanos(20));
-        assertTrue(System.nanoTime() - start >= TimeUnit.MILLISECONDS.toNanos(20));
+    void withoutActivityTheWaitEndsWhenTheClockHasMovedByTheTimeout() throws Exception {
+        assertFalse(input.awaitActivity(0), "nothing happened: a wait of no time ends at once");
+        long timeout = TimeUnit.MILLISECONDS.toNanos(20);
+        Waiting wait = waitFor(timeout);
+        Poll.until(() -> clock.waitsLeft().equals(List.of(timeout)), 10_000, "the wait began");
+        clock.advanceNanos(timeout - 1);
+        assertEquals(List.of(1L), clock.waitsLeft(), "one nanosecond short of the timeout, it goes on");
+        assertTrue(wait.thread.isAlive());
+        clock.advanceNanos(1);
+        assertFalse(wait.result(), "it timed out: no input came");
+        assertEquals(List.of(), clock.waitsLeft());
+    }
+
+    @Test
+    void onTheSystemClockTheWaitEndsOnActivityOrTimesOut() throws InterruptedException {
+        InputState real = new InputState(Clock.SYSTEM, 800, 600);
+        assertFalse(real.awaitActivity(TimeUnit.MILLISECONDS.toNanos(1)), "nothing happened");
+        real.wheel(1);
+        assertTrue(real.awaitActivity(Long.MAX_VALUE), "the wheel came first");
+    }
+
+    /** {@link InputState#awaitActivity} on a thread of its own; {@link #result} joins it. */
+    private final class Waiting {
+        final Thread thread;
+        volatile Boolean woken;
+
+        Waiting(long timeoutNanos) {
+            thread = new Thread(() -> {
+                try {
+                    woken = input.awaitActivity(timeoutNanos);
+                } catch (InterruptedException e) {
+                    Thread.currentThread().interrupt();
+                }
+            }, "test-wait");
+            thread.start();
+        }
+
+        /** Whether input ended the wait; fails if the wait has not ended within a generous safety net. */
+        boolean result() throws InterruptedException {
+            thread.join(20_000);
+            assertFalse(thread.isAlive(), "the wait did not end");
+            return woken;
+        }
+    }
+
+    private Waiting waitFor(long timeoutNanos) {
+        return new Waiting(timeoutNanos);
     }
 }

@@ -6,10 +6,12 @@ import static org.junit.jupiter.api.Assertions.assertTrue;
 
 import glint.config.Config;
 import glint.config.Limits;
+import glint.ui.FakeClock;
 import glint.ui.FaultyTrace;
 import glint.ui.Poll;
 import glint.ui.TestScenes;
 import glint.ui.capture.Screenshots;
+import glint.ui.engine.Engine;
 import glint.ui.frames.FrameRenderer;
 import glint.ui.scenes.SceneSource;
 import glint.ui.screen.FrameStats;
@@ -20,6 +22,7 @@ import java.io.PrintWriter;
 import java.io.StringWriter;
 import java.nio.file.Files;
 import java.nio.file.Path;
+import java.util.List;
 import javax.swing.SwingUtilities;
 import org.junit.jupiter.api.AfterEach;
 import org.junit.jupiter.api.Test;
@@ -46,10 +49,10 @@ class WindowFaultTest {
         return !GraphicsEnvironment.isHeadless();
     }
 
-    private GlintWindow open(Config config, FrameRenderer.TraceCall trace) throws Exception {
+    private GlintWindow open(Config config, WindowHooks hooks) throws Exception {
         Path scene = Files.writeString(dir.resolve("scene.yaml"), TestScenes.sphere(0.1, 0.2, 0.3));
         window = GlintWindow.open(config, new SceneSource(scene, () -> config), new Screenshots(dir),
-                new PrintWriter(err, true), new WindowHooks(trace, p -> p));
+                new PrintWriter(err, true), hooks);
         return window;
     }
 
@@ -67,15 +70,24 @@ class WindowFaultTest {
         return window.display().shown();
     }
 
+    /** On a clock the test moves: after each failed try the engine pauses for the retry pause of that clock. */
     @Test
     void tilesThatThrowAreShownAndTheWindowRecoversByItself() throws Exception {
         FaultyTrace trace = new FaultyTrace();
         trace.faults.set(4);
         Config config = Config.defaults().withSize(W, H).withSamples(4).withThreads(2);
-        open(config, trace);
-        Poll.until(() -> shown() != null && shown().stats().renderError().startsWith("render failed: a render worker"),
-                10_000, () -> "the error in the overlay; err: " + err);
-        assertTrue(window.engineAlive());
+        FakeClock clock = new FakeClock();
+        open(config, new WindowHooks(trace, p -> p, clock));
+        for (int tryNumber = 1; tryNumber <= 4; tryNumber++) {
+            int tries = tryNumber;
+            Poll.until(() -> trace.calls.get() == tries && clock.waitsLeft().equals(List.of(Engine.RETRY_NANOS)),
+                    10_000, () -> "try " + tries + " fails and the engine pauses: waits " + clock.waitsLeft()
+                            + "; err: " + err);
+            Poll.until(() -> shown() != null && shown().stats().renderError().startsWith("render failed: a render worker"),
+                    10_000, () -> "the error in the overlay; err: " + err);
+            assertTrue(window.engineAlive());
+            clock.advanceNanos(Engine.RETRY_NANOS);
+        }
         Poll.until(() -> shown().stats().refined() && shown().image() != null, 20_000,
                 "a refined frame, with no key pressed");
         assertEquals("", shown().stats().renderError());
@@ -89,7 +101,7 @@ class WindowFaultTest {
         Limits limits = new Limits(100_000, Limits.DEFAULT.maxSceneBytes(), Limits.DEFAULT.maxObjects(),
                 Limits.DEFAULT.maxLights(), Limits.DEFAULT.maxRecursion());
         Config config = Config.defaults().withSize(W, H).withSamples(1).withThreads(2).withLimits(limits);
-        open(config, FrameRenderer.TraceCall.TRACER);
+        open(config, new WindowHooks(FrameRenderer.TraceCall.TRACER, p -> p));
         Poll.until(() -> shown() != null && shown().image() != null && shown().stats().refined(),
                 20_000, () -> "first frame; err: " + err);
         assertEquals(W * H, shown().image().getWidth() * shown().image().getHeight(), "76,800 pixels: allowed");
