@@ -7,22 +7,23 @@ import glint.shading.Optics;
  * cosines a renderer has at hand, plus its directional albedo (the fraction of light from one
  * direction that the lobe reflects, with Fresnel = 1): at most 1 for an energy-conserving lobe.
  *
- * <p>Glint: GGX with alpha = roughness^2 clamped to at least 1e-4 (RenderScene.MIN_ALPHA), no lobe at
- * roughness 0 (a pure mirror), height-correlated Smith visibility. Textbook (Cook and Torrance 1982,
+ * <p>Glint: GGX with alpha = roughness^2 clamped to at least 1e-4 (Materials.MIN_ALPHA), no lobe at
+ * roughness 0 (a pure mirror), height-correlated Smith visibility. (The renderer's Conductor takes
+ * alpha below Microfacet.MIRROR_ALPHA, 1e-3, for a mirror and has no lobe there.) Textbook (Cook and Torrance 1982,
  * as in the 2020 report): Beckmann distribution with m = roughness, the V-groove masking
  * min(1, 2 n.h n.v / v.h, 2 n.h n.l / v.h), divided by 4 n.l n.v, used as it is at any roughness.
  */
 public final class Microfacet {
 
-    /** Glint's smallest GGX alpha (RenderScene.MIN_ALPHA is package-private; this mirrors it). */
+    /** Glint's smallest GGX alpha (Materials.MIN_ALPHA is package-private; this mirrors it). */
     public static final double GLINT_MIN_ALPHA = 1e-4;
 
     private Microfacet() {
     }
 
     /**
-     * Glint's lobe times n.l as TracerWorker evaluates it: D(h) V(l, v) n.l; 0 when the light or the
-     * viewer is below the surface or the roughness is 0.
+     * Glint's lobe times n.l through the functions Conductor evaluates it with: D(h) V(l, v) n.l; 0
+     * when the light or the viewer is below the surface or the roughness is 0.
      */
     public static double glint(double cosHalf, double cosLight, double cosView, double roughness) {
         if (roughness <= 0 || cosLight <= 0 || cosView <= 0) {

@@ -66,7 +66,7 @@ final class CellMaps {
 
     /**
      * Appends the map of the ball (c, reach), listing every bounded primitive but {@code exclude}
-     * ({@link Hit#NONE}: none); returns its first cell, or -1 (appending nothing) when every one of
+     * ({@link glint.geometry.Hit#NONE}: none); returns its first cell, or -1 (appending nothing) when every one of
      * its cells falls back.
      */
     int add(double cx, double cy, double cz, double reach, int exclude) {

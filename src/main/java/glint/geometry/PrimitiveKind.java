@@ -4,8 +4,8 @@ package glint.geometry;
  * One kind of primitive: all of a scene's primitives of that kind, in flat arrays (world space).
  * A kind is its bounds, its intersection and its surface at a hit, and for a closed kind a bounding
  * ball and which balls it reaches into (so that empty insides are found). The aggregates
- * ({@link Aggregate}) and the shading see primitives only through this interface, so adding a kind
- * means a class like {@link SphereKind} and its registration (docs/architecture.md).
+ * ({@code glint.accel.Aggregate}) and the shading see primitives only through this interface, so
+ * adding a kind means a class like {@link SphereKind} and its registration (docs/architecture.md).
  */
 public interface PrimitiveKind {
 

@@ -22,7 +22,7 @@ import java.util.function.Function;
 
 /**
  * A scene compiled for tracing: its primitives by kind in flat arrays and the aggregate that
- * searches them, materials and lights in flat arrays, the camera as a basis, and the settings.
+ * searches them, materials and lights in flat arrays, the camera that makes its rays, and the settings.
  * Immutable; shared by all render threads.
  */
 public final class RenderScene {
