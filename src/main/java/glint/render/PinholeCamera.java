@@ -3,6 +3,7 @@ package glint.render;
 import glint.math.Quaternion;
 import glint.math.Vector3d;
 import glint.scene.Camera;
+import java.util.Optional;
 
 /**
  * The camera that makes every camera ray: a pinhole at the eye, compiled from the scene's
@@ -11,7 +12,8 @@ import glint.scene.Camera;
  * A width x height image covers the screen from sx = -tan(fov / 2) on its left to +tan(fov / 2) on
  * its right (fov is the horizontal field of view; +x on the image's right when looking along +z
  * with up +y), and the height in proportion, sy growing upwards. Image point (px, py) is in pixels
- * from the image's top-left corner; the centre of pixel (i, j) is (i + 0.5, j + 0.5).
+ * from the image's top-left corner; the centre of pixel (i, j) is (i + 0.5, j + 0.5). The ray through
+ * an image point is {@link #direction}; the image point a world point is seen at, {@link #imagePoint}.
  *
  * <p>Every ray leaves the same point, the {@link #eye()}. The row search relies on it
  * ({@link CameraRows}): a tile row's rays lie in one frustum from the eye, the primitives it may
@@ -63,6 +65,41 @@ public final class PinholeCamera {
         double[] x = new double[1], y = new double[1], z = new double[1];
         aim(sx, sy, x, y, z, 0);
         return new Vector3d(x[0], y[0], z[0]);
+    }
+
+    /**
+     * The image point (px, py) of a width x height image at which world point {@code p} is seen: the inverse
+     * of {@link #direction}, whose ray through it meets {@code p}. Empty for a point on or behind the plane of
+     * the eye (facing the way the camera looks), which no camera ray meets; a point outside the field of view
+     * has a point outside [0, width] x [0, height]. Allocates: for tests and tools, not the per-pixel path.
+     */
+    public Optional<ImagePoint> imagePoint(Vector3d p, int width, int height) {
+        double dx = p.x() - eyeX, dy = p.y() - eyeY, dz = p.z() - eyeZ;
+        double ahead = dx * forwardX + dy * forwardY + dz * forwardZ;
+        if (!(ahead > 0)) {
+            return Optional.empty();
+        }
+        double sx = (dx * rightX + dy * rightY + dz * rightZ) / ahead; // on the screen one unit ahead
+        double sy = (dx * upX + dy * upY + dz * upZ) / ahead;
+        return Optional.of(new ImagePoint((sx - screenLeft()) / screenPerPixelX(width),
+                (sy - screenTop(width, height)) / screenPerPixelY(width, height)));
+    }
+
+    /**
+     * A point of an image in pixels from its top-left corner, {@code px} to the right and {@code py} down;
+     * it lies in pixel ({@link #column()}, {@link #row()}).
+     */
+    public record ImagePoint(double px, double py) {
+
+        /** The column of the pixel the point lies in. */
+        public int column() {
+            return (int) Math.floor(px);
+        }
+
+        /** The row of the pixel the point lies in. */
+        public int row() {
+            return (int) Math.floor(py);
+        }
     }
 
     // ---------------------------------------------------------------- the image on the screen

@@ -4,7 +4,9 @@ import static org.junit.jupiter.api.Assertions.assertEquals;
 import static org.junit.jupiter.api.Assertions.assertTrue;
 
 import glint.image.FrameBuffer;
+import glint.math.Vector3d;
 import glint.registry.Registry;
+import glint.render.PinholeCamera;
 import glint.render.Renders;
 import org.junit.jupiter.api.Test;
 
@@ -54,12 +56,14 @@ class KindRecipeTest {
 
     /**
      * A disc tilted to face a directional light that shines down at 45 degrees towards +z, above a
-     * white floor, seen from beside the light's path, so that its shadow on the floor lies in view.
+     * white floor, seen from beside the light's path, so that its shadow on the floor lies in view,
+     * and a sphere beside them, all found by one search.
      * A shadow ray from floor point (x, -1, z) travels along (0, 1, -1) / sqrt 2 and meets the disc's
      * plane (y + 0.25) - (z - 6) = 0 after (z - 5.25) / 2 along (0, 1, -1), at distance
      * sqrt(x^2 + (z - 6.75)^2 / 2) from the disc's centre: the shadow is the ellipse where that is at
      * most the radius 0.5. A camera ray to such a point passes the disc's plane more than 0.75 from
-     * its centre, so nothing hides the shadow.
+     * its centre, so nothing hides the shadow. The sphere, at x = -1.5, is out of the disc's way and
+     * the disc out of its light's way (shadow rays keep their x).
      */
     @Test
     void aDiscCastsAShadowInViewAndMeetsTheOtherKindsInOneSearch() {
@@ -75,19 +79,32 @@ class KindRecipeTest {
                 """;
         int w = 80, h = 60;
         FrameBuffer frame = Recipes.render(REGISTRY, yaml, w, h, 1);
+        PinholeCamera camera = new PinholeCamera(Recipes.scene(REGISTRY, yaml).camera());
         // the disc faces the light: the matte preset's 0.8 / pi x irradiance 1 x cos 1, and ambient x 0.8
-        assertColour(frame, pixel(0, -0.25 * 5 / 6, w, h), 0.8 / Math.PI + 0.08, 0.8 / Math.PI + 0.16,
-                0.8 / Math.PI + 0.24);
+        assertColour(frame, pixel(camera, new Vector3d(0, -0.25, 6), w, h), 0.8 / Math.PI + 0.08,
+                0.8 / Math.PI + 0.16, 0.8 / Math.PI + 0.24);
         // the floor at (0, -1, 6.7), 0.04 from the shadow's centre along z: ambient x 1 alone
-        assertColour(frame, floorPixel(0, 6.7, w, h), 0.1, 0.2, 0.3);
+        assertColour(frame, pixel(camera, new Vector3d(0, -1, 6.7), w, h), 0.1, 0.2, 0.3);
         // the floor at (1.5, -1, 6.7), beside the shadow: ambient + 1 / pi x irradiance 1 x cos 45 degrees
         double lit = 1 / Math.PI / Math.sqrt(2);
-        assertColour(frame, floorPixel(1.5, 6.7, w, h), 0.1 + lit, 0.2 + lit, 0.3 + lit);
+        assertColour(frame, pixel(camera, new Vector3d(1.5, -1, 6.7), w, h), 0.1 + lit, 0.2 + lit, 0.3 + lit);
+        // the sphere's point that faces the light, centre + 0.5 (0, 1, -1) / sqrt 2: the pixel it lies in
+        // shows the matte preset's 0.8 / pi x irradiance 1 x cos, at the point where that pixel's centre ray
+        // meets the sphere, and ambient x 0.8
+        Vector3d centre = new Vector3d(-1.5, -0.5, 6.7), towardsLight = new Vector3d(0, 1, -1).normalize();
+        int[] spherePixel = pixel(camera, centre.add(towardsLight.scale(0.5)), w, h);
+        Vector3d ray = camera.direction(spherePixel[0] + 0.5, spherePixel[1] + 0.5, w, h); // from the eye at 0
+        double b = ray.dot(centre), t = b - Math.sqrt(b * b - centre.dot(centre) + 0.25); // the nearer root
+        double cos = ray.scale(t).sub(centre).scale(1 / 0.5).dot(towardsLight);
+        assertTrue(cos > 0.99, "the pixel sees the sphere near the point facing the light: cos " + cos);
+        double sphere = 0.8 / Math.PI * cos;
+        assertColour(frame, spherePixel, sphere + 0.08, sphere + 0.16, sphere + 0.24);
     }
 
-    /** The pixel whose camera ray (the camera's as above) meets the floor y = -1 at (x, z). */
-    private static int[] floorPixel(double x, double z, int w, int h) {
-        return pixel(x * 5 / z, -5 / z, w, h);
+    /** The pixel of a w x h image that {@code camera} sees world point {@code p} in. */
+    private static int[] pixel(PinholeCamera camera, Vector3d p, int w, int h) {
+        PinholeCamera.ImagePoint seen = camera.imagePoint(p, w, h).orElseThrow();
+        return new int[] {seen.column(), seen.row()};
     }
 
     @Test
@@ -106,23 +123,18 @@ class KindRecipeTest {
                 """;
         int w = 80, h = 60;
         FrameBuffer frame = Recipes.render(registry, yaml, w, h, 1);
+        PinholeCamera camera = new PinholeCamera(Recipes.scene(registry, yaml).camera());
         double lit = 2 / Math.PI;
         for (double x : new double[] {-1.5, 0, 1.5}) {
-            assertColour(frame, pixel(x, 0.8, w, h), lit, 0, 0);
+            assertColour(frame, pixel(camera, new Vector3d(x, 0.8, 5), w, h), lit, 0, 0);
         }
         for (double x : new double[] {-0.75, 0.75}) {
-            assertColour(frame, pixel(x, -0.8, w, h), 0, lit, 0);
+            assertColour(frame, pixel(camera, new Vector3d(x, -0.8, 5), w, h), 0, lit, 0);
         }
-        assertColour(frame, pixel(0, -0.8, w, h), 0, 0, lit); // between the second row's discs: the wall
+        // between the second row's discs: the wall
+        assertColour(frame, pixel(camera, new Vector3d(0, -0.8, 5), w, h), 0, 0, lit);
         assertEquals("recipe.yaml:2:64: count must be a whole number from 1 to 100, got 2.5",
                 Recipes.error(registry, "objects:\n  - {type: disc_row, first: [0, 0, 5], step: [1, 0, 0], count: 2.5, radius: 1}\n"));
-    }
-
-    /** The pixel (x, y) of a w x h image whose camera ray meets the point (x, y, 5), the camera's as above. */
-    private static int[] pixel(double x, double y, int w, int h) {
-        double half = Math.tan(Math.toRadians(20));
-        return new int[] {(int) Math.floor((x / 5 / half + 1) / 2 * w),
-            (int) Math.floor((1 - y / 5 / (half * h / w)) / 2 * h)};
     }
 
     private static void assertColour(FrameBuffer frame, int[] pixel, double r, double g, double b) {

@@ -45,8 +45,8 @@ import java.util.concurrent.TimeUnit;
  * {@code max_image_pixels} (or than half the heap can hold) is rendered smaller and scaled up.
  *
  * <p>The loop is this class; the rest is in its parts, each on the engine thread unless it says otherwise:
- * {@link SceneView} (the scene, camera, settings and refinement), {@link FrameSize} (the window's size and
- * the frame budget), {@link StatusLine} (the overlay's messages), {@link FrameMaker} (rendering frames, and
+ * {@link SceneView} (the scene, camera, settings, window size and refinement), {@link FrameSize} (the
+ * window's size and the frame budget, which the view changes), {@link StatusLine} (the overlay's messages), {@link FrameMaker} (rendering frames, and
  * their faults), {@link FrameOutput} (frames to the presenter), {@link Commands} (the command keys),
  * {@link Captures} (screenshots and stills), {@link SceneBrowser} (Page Down and Page Up) and {@link Reloads}
  * (F5 and the scene watcher's changes).
@@ -101,7 +101,7 @@ public final class Engine implements Runnable, SceneWatcher.Listener {
         RenderFaults faults = new RenderFaults();
         this.status = new StatusLine(err);
         this.size = new FrameSize(input.viewWidth(), input.viewHeight(), status, err);
-        this.view = new SceneView(new ViewSettings(config, source.flags()), controller, status);
+        this.view = new SceneView(new ViewSettings(config, source.flags()), controller, size, status);
         this.frames = new FrameOutput(presenter, view, size, status, source, renderer, faults, err);
         this.maker = new FrameMaker(renderer, new ResolutionGovernor(config.targetFps(), config.displayScale()),
                 faults, view, size, frames, status, clock, err);
@@ -112,7 +112,6 @@ public final class Engine implements Runnable, SceneWatcher.Listener {
                 () -> running = false);
         this.lastMotion = clock.nanoTime() - MOTION_HOLD_NANOS - 1;
         source.limits(config.limits().scene());
-        size.check(view.settings().config().limits());
         view.show(scene, true);
     }
 
@@ -250,10 +249,7 @@ public final class Engine implements Runnable, SceneWatcher.Listener {
             return 0;
         }
         reloads.takePending();
-        if (size.resize(input.viewWidth(), input.viewHeight())) {
-            size.check(view.settings().config().limits());
-            view.invalidate();
-        }
+        view.resized(input.viewWidth(), input.viewHeight());
         if (in.wheelNotches() != 0) {
             status.changed();
         }
@@ -297,10 +293,9 @@ public final class Engine implements Runnable, SceneWatcher.Listener {
 
     /** F5 read the config again: every part takes its settings. */
     private void configure(Config c) {
-        view.configFile(c); // the view's settings and speeds, drawn anew
+        view.configFile(c); // the view's settings, speeds and frame budget, drawn anew
         maker.configure(c);
         source.limits(c.limits().scene());
-        size.check(view.settings().config().limits());
         presenter.title(c.name());
     }
 }

@@ -7,7 +7,9 @@ import java.util.Locale;
 
 /**
  * The window's drawing area and the frame size budget for it ({@link FrameBudget}): the size frames are
- * rendered at, and why they are smaller than the window when the budget binds. Engine thread only.
+ * rendered at, and why they are smaller than the window when the budget binds. Others read it; only its
+ * {@link SceneView} changes it ({@link SceneView#resized}), and starts the frame over when it does. Engine
+ * thread only.
  */
 public final class FrameSize {
 
@@ -18,7 +20,7 @@ public final class FrameSize {
     private FrameBudget budget;
     private String sizeLimit = ""; // why frames are smaller than the window, or empty
 
-    /** A window of this size; {@link #check} sets the budget before the first frame. */
+    /** A window of this size; its {@link SceneView} sets the budget ({@link #check}) before the first frame. */
     public FrameSize(int width, int height, StatusLine status, PrintWriter err) {
         this.width = width;
         this.height = height;
@@ -27,7 +29,7 @@ public final class FrameSize {
     }
 
     /** The window is now {@code w} x {@code h}; true if that is a new size (then {@link #check} it). */
-    public boolean resize(int w, int h) {
+    boolean resize(int w, int h) {
         if (w == width && h == height) {
             return false;
         }
@@ -37,7 +39,7 @@ public final class FrameSize {
     }
 
     /** The frame size budget under these limits for the window's size now; says once when it starts to bind. */
-    public void check(Limits limits) {
+    void check(Limits limits) {
         budget = FrameBudget.of(limits, Runtime.getRuntime().maxMemory());
         boolean over = budget.binds(width, height);
         if (over && sizeLimit.isEmpty()) {

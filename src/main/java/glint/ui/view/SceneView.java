@@ -8,16 +8,18 @@ import glint.ui.input.CameraController;
 import glint.ui.input.InputFrame;
 
 /**
- * What the window shows: the scene, the camera flying through it, the settings it is seen with, the scene
- * compiled for them, and how far the still refinement of the view has come. The camera and the settings
- * change only through this class, which starts the frame over ({@link #invalidate}) whenever they do; others
- * read them ({@link #controller()}, {@link #settings()}). Engine thread only, except {@link #camera()} and
- * {@link #sceneNow()}, which any thread may read.
+ * What the window shows: the scene, the camera flying through it, the settings it is seen with, the size
+ * of the window's drawing area, the scene compiled for them, and how far the still refinement of the view
+ * has come. The camera, the settings and the size change only through this class, which starts the frame
+ * over ({@link #invalidate}) whenever they do; others read them ({@link #controller()}, {@link #settings()},
+ * the {@link FrameSize}). Engine thread only, except {@link #camera()} and {@link #sceneNow()}, which any
+ * thread may read.
  */
 public final class SceneView {
 
     private final ViewSettings seen; // the scene's settings, the user's shading and depth
     private final CameraController controller;
+    private final FrameSize size; // the window's drawing area and its frame budget under the settings' limits
     private final StatusLine status;
     private final CompiledScenes compiledScenes = new CompiledScenes();
     private Scene scene;
@@ -29,11 +31,16 @@ public final class SceneView {
     private volatile Camera cameraNow;
     private volatile Scene sceneNow;
 
-    /** A view with no scene yet: {@link #show} one before the first frame. */
-    public SceneView(ViewSettings seen, CameraController controller, StatusLine status) {
+    /**
+     * A view with no scene yet, whose window is {@code size} (its frame budget set under the settings'
+     * limits): {@link #show} a scene before the first frame.
+     */
+    public SceneView(ViewSettings seen, CameraController controller, FrameSize size, StatusLine status) {
         this.seen = seen;
         this.controller = controller;
+        this.size = size;
         this.status = status;
+        size.check(seen.config().limits());
     }
 
     /**
@@ -109,7 +116,19 @@ public final class SceneView {
         seen.configFile(config, scene);
         controller.setSpeeds(config.moveSpeed(), config.turnSpeed());
         controller.setFreeFlight(config.freeFlight());
+        size.check(seen.config().limits());
         invalidate();
+    }
+
+    /**
+     * The window's drawing area is now {@code width} x {@code height}: a new size gets its frame budget under
+     * the settings' limits and the view is drawn anew; the same size changes nothing.
+     */
+    public void resized(int width, int height) {
+        if (size.resize(width, height)) {
+            size.check(seen.config().limits());
+            invalidate();
+        }
     }
 
     /** The camera moved or jumped (a motion, Home, a view, L): the view is drawn anew. */
@@ -119,7 +138,7 @@ public final class SceneView {
     }
 
     /** Something the frame depends on changed: compile again, draw a frame and refine it from the start. */
-    public void invalidate() {
+    private void invalidate() {
         compiled = null;
         needFrame = true;
         passesDone = 0;

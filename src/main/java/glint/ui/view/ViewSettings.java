@@ -50,7 +50,7 @@ public final class ViewSettings {
     }
 
     /** F5 read the config again: its settings, and the scene's block over them, replace the user's. */
-    public void configFile(Config newBase, Scene scene) {
+    void configFile(Config newBase, Scene scene) {
         base = newBase;
         config = seenWith(scene);
         shading = config.shading();
@@ -97,7 +97,7 @@ public final class ViewSettings {
      * Switches the shading model; the path integrator goes with cook-torrance only, so phong brings
      * Whitted's. Returns what the overlay says.
      */
-    public String toggleShading() {
+    String toggleShading() {
         shading = shading.other();
         if (shading == Shading.PHONG && transport == LightTransport.PATH) {
             transport = LightTransport.WHITTED;
@@ -107,7 +107,7 @@ public final class ViewSettings {
     }
 
     /** Switches the integrator; the path integrator brings cook-torrance. Returns what the overlay says. */
-    public String toggleTransport() {
+    String toggleTransport() {
         transport = transport.other();
         if (transport == LightTransport.PATH && shading == Shading.PHONG) {
             shading = Shading.COOK_TORRANCE;

@@ -73,11 +73,10 @@ class CommandsTest {
         Files.writeString(file, TestScenes.sphere(0.1, 0.2, 0.3) + VIEWS);
         source = new SceneSource(file, () -> config);
         Scene scene = source.loadScene();
-        view = new SceneView(new ViewSettings(config, Flags.NONE), new CameraController(scene.camera(), 2, 60),
-                status);
-        view.show(scene, true);
         FrameSize size = new FrameSize(32, 24, status, err);
-        size.check(config.limits());
+        view = new SceneView(new ViewSettings(config, Flags.NONE), new CameraController(scene.camera(), 2, 60),
+                size, status);
+        view.show(scene, true);
         reloads = new Reloads(source, view, status, c -> { }, () -> { });
         captures = new Captures(new Screenshots(dir), new StillRender(() -> { }), view, size, source, () -> null, err);
         commands = new Commands(view, status, captures, new SceneBrowser(source, reloads, view, status), reloads,

@@ -60,11 +60,10 @@ class FrameMakerTest {
         Files.writeString(file, TestScenes.sphere(0.1, 0.2, 0.3));
         SceneSource source = new SceneSource(file, () -> config);
         Scene scene = source.loadScene();
-        view = new SceneView(new ViewSettings(config, Flags.NONE), new CameraController(scene.camera(), 2, 60),
-                status);
-        view.show(scene, true);
         FrameSize size = new FrameSize(W, H, status, err);
-        size.check(config.limits());
+        view = new SceneView(new ViewSettings(config, Flags.NONE), new CameraController(scene.camera(), 2, 60),
+                size, status);
+        view.show(scene, true);
         FrameRenderer renderer = new FrameRenderer(2, 4, trace);
         RenderFaults faults = new RenderFaults();
         FrameOutput frames = new FrameOutput(presenter, view, size, status, source, renderer, faults, err);

@@ -76,11 +76,10 @@ class PathRefinementTest {
         Files.writeString(file, TestScenes.sphere(0.4, 0.5, 0.8)); // a sky: every matte point sees it
         SceneSource source = new SceneSource(file, () -> config);
         scene = source.loadScene();
-        view = new SceneView(new ViewSettings(config, Flags.NONE), new CameraController(scene.camera(), 2, 60),
-                status);
-        view.show(scene, true);
         FrameSize size = new FrameSize(W, H, status, err);
-        size.check(config.limits());
+        view = new SceneView(new ViewSettings(config, Flags.NONE), new CameraController(scene.camera(), 2, 60),
+                size, status);
+        view.show(scene, true);
         FrameRenderer renderer = new FrameRenderer(2, 4);
         RenderFaults faults = new RenderFaults();
         FrameOutput frames = new FrameOutput(presenter, view, size, status, source, renderer, faults, err);

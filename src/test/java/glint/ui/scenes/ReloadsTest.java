@@ -15,6 +15,7 @@ import glint.scene.Camera;
 import glint.scene.Scene;
 import glint.ui.TestScenes;
 import glint.ui.input.CameraController;
+import glint.ui.view.FrameSize;
 import glint.ui.view.SceneView;
 import glint.ui.view.StatusLine;
 import glint.ui.view.ViewSettings;
@@ -63,7 +64,7 @@ class ReloadsTest {
         });
         Scene scene = source.loadScene();
         view = new SceneView(new ViewSettings(config, Flags.NONE), new CameraController(scene.camera(), 2, 60),
-                status);
+                new FrameSize(32, 24, status, new PrintWriter(new StringWriter(), true)), status);
         view.show(scene, true);
         reloads = new Reloads(source, view, status, configured::add, wakes::incrementAndGet);
     }

@@ -17,6 +17,7 @@ import glint.scene.Camera;
 import glint.scene.Scene;
 import glint.scenefile.SceneLoader;
 import glint.ui.TestScenes;
+import glint.ui.frames.ResolutionGovernor;
 import glint.ui.input.Action;
 import glint.ui.input.CameraController;
 import glint.ui.input.InputFrame;
@@ -27,9 +28,9 @@ import org.junit.jupiter.api.BeforeEach;
 import org.junit.jupiter.api.Test;
 
 /**
- * The view owns its camera and settings: every change made through it starts the frame over (compiled
- * again, drawn, refined from the first pass), and a change that changes nothing leaves the refinement
- * where it was. No caller has to know that it must invalidate after writing.
+ * The view owns its camera, settings and window size: every change made through it starts the frame over
+ * (compiled again, drawn, refined from the first pass), and a change that changes nothing leaves the
+ * refinement where it was. No caller has to know that it must invalidate after writing.
  */
 class SceneViewTest {
 
@@ -37,13 +38,14 @@ class SceneViewTest {
     private final Config config = Config.defaults().withSamples(8).withRecursionMax(2)
             .withLimits(new Limits(Limits.DEFAULT.maxImagePixels(), Limits.DEFAULT.maxSceneBytes(),
                     Limits.DEFAULT.maxObjects(), Limits.DEFAULT.maxLights(), 3));
+    private final FrameSize size = new FrameSize(32, 24, status, new PrintWriter(new StringWriter(), true));
     private SceneView view;
 
     @BeforeEach
     void open() throws InputException {
         Scene scene = SceneLoader.parse("a.yaml", TestScenes.sphere(0.1, 0.2, 0.3));
         view = new SceneView(new ViewSettings(config, Flags.NONE), new CameraController(scene.camera(), 2, 60),
-                status);
+                size, status);
         view.show(scene, true);
     }
 
@@ -84,6 +86,23 @@ class SceneViewTest {
         assertStartsOver("F5", v -> v.configFile(config.withRecursionMax(1)));
         assertEquals(1, view.settings().depth(), "the config's depth replaces the user's");
         assertEquals(LightTransport.WHITTED, view.settings().transport(), "and its integrator");
+    }
+
+    @Test
+    void aNewWindowSizeStartsTheFrameOverWithinTheSettingsBudget() {
+        assertLeavesAsItWas("the same size", v -> v.resized(32, 24));
+        assertStartsOver("a resize", v -> v.resized(40, 30));
+        assertEquals(40, size.width());
+        assertEquals(30, size.height());
+        assertEquals(new ResolutionGovernor.Size(40, 30), size.fit(1), "1200 pixels: within budget");
+        assertEquals("", size.sizeLimit());
+        Limits small = new Limits(300, Limits.DEFAULT.maxSceneBytes(), Limits.DEFAULT.maxObjects(),
+                Limits.DEFAULT.maxLights(), 3);
+        assertStartsOver("F5 with max_image_pixels 300", v -> v.configFile(config.withLimits(small)));
+        assertEquals(new ResolutionGovernor.Size(20, 15), size.fit(1), "40x30 halved: 300 pixels");
+        assertTrue(size.sizeLimit().contains("max_image_pixels"), size.sizeLimit());
+        assertStartsOver("a resize within the new budget", v -> v.resized(20, 15));
+        assertEquals("", size.sizeLimit());
     }
 
     @Test
