@@ -5,6 +5,7 @@ import static org.junit.jupiter.api.Assertions.assertEquals;
 import static org.junit.jupiter.api.Assertions.assertThrows;
 
 import glint.input.InputException;
+import glint.registry.MaterialType;
 import glint.scene.Scene;
 import java.io.IOException;
 import java.nio.file.Files;
@@ -556,6 +557,11 @@ class SceneLoaderErrorTest {
                 materials:
                   m: {type: metal, color: [0, 1e300, 0]}
                 """);
+    }
+
+    @Test
+    void aMaterialsColourIsBoundedAsEveryColourAndLightOfAScene() {
+        assertEquals(SceneLoader.MAX_RADIANCE, MaterialType.MAX_SHARE);
     }
 
     @Test
