@@ -4,9 +4,9 @@ import glint.input.InputException;
 import glint.math.Vector3d;
 
 /**
- * One object's or light's mapping in a scene file, its keys already checked: what a type's reader
- * ({@link ShapeType}, {@link LightType}) reads its values from. Each value is checked as it is read,
- * and a bad one is reported at its line and column.
+ * One object's, light's or material's mapping in a scene file, its keys already checked: what a
+ * type's reader ({@link ShapeType}, {@link LightType}, {@link MaterialType}) reads its values from.
+ * Each value is checked as it is read, and a bad one is reported at its line and column.
  */
 public interface Fields {
 
@@ -24,6 +24,18 @@ public interface Fields {
 
     /** A number the mapping must have. */
     double number(String key) throws InputException;
+
+    /** A colour the mapping must have: three finite numbers, none negative. */
+    Vector3d color(String key) throws InputException;
+
+    /** Whether the mapping has {@code key}: a key it may leave out keeps a value the type gives. */
+    boolean has(String key);
+
+    /**
+     * The value of {@code key} (which the mapping has) as written, for messages: "0" rather than
+     * "0.0", cut after 60 characters as every value a message echoes.
+     */
+    String written(String key);
 
     /** An error about the value of {@code key} (which the mapping has), at its line and column. */
     InputException error(String key, String problem);

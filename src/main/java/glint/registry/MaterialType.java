@@ -1,5 +1,6 @@
 package glint.registry;
 
+import glint.input.InputException;
 import glint.math.Vector3d;
 import glint.scene.Material;
 import glint.shading.Bsdf;
@@ -8,12 +9,12 @@ import java.util.List;
 
 /**
  * A kind of material, registered once in {@link Registry}: its name in scene files (also the name
- * of its preset material), the keys a material of the type reads, the preset's values, and its
- * {@link Bsdf}, how the physically based model scatters light at it. Every type reads the colour
- * and the phong coefficients ({@link #COMMON_KEYS}), because the phong model reads kd, ks, kt and
- * shininess of every material whatever its type and refracts any material with kt above 0 (at its
- * ior, the preset's 1.5 unless the type reads {@code ior}); a type reads besides the physical
- * parameters its BSDF uses.
+ * of its preset material), the keys a material of the type reads and its reader, the preset's
+ * values, and its {@link Bsdf}, how the physically based model scatters light at it. Every type
+ * reads the colour and the phong coefficients ({@link #COMMON_KEYS}) over its preset, because the
+ * phong model reads kd, ks, kt and shininess of every material whatever its type and refracts any
+ * material with kt above 0 (at its ior, the preset's 1.5 unless the type reads {@code ior}); a
+ * type's reader reads besides the physical parameters its BSDF uses, each checked against its range.
  */
 public final class MaterialType {
 
@@ -21,18 +22,40 @@ public final class MaterialType {
     public static final List<String> COMMON_KEYS = List.of("color", "kd", "ks", "kt", "shininess");
     /** The physical parameters a material has, which a type reads only when its BSDF uses them. */
     public static final List<String> PHYSICAL_KEYS = List.of("ior", "roughness");
+    /**
+     * The largest colour component and kd, ks and kt: shares of the light a surface sends back (1 is
+     * all of it), allowed above 1 up to 1e30, the bound of every colour and light of a scene.
+     */
+    public static final double MAX_SHARE = 1e30;
+    /**
+     * The largest phong highlight exponent: (r.v)^shininess stays within rounding of 1 where r.v is
+     * a rounding above 1 (at 1e20, 1 + 1e-16 would give infinity).
+     */
+    public static final double MAX_SHININESS = 1e6;
 
     private final String name;
     private final List<String> keys;
+    private final Reader reader;
     private final Bsdf bsdf;
     private final Material preset;
 
+    /** Reads the physical parameters a type reads from a material's mapping. */
+    @FunctionalInterface
+    public interface Reader {
+        /**
+         * The material of the mapping: {@code common} is the type's preset with the mapping's common
+         * keys read over it; a key the mapping leaves out keeps its value.
+         */
+        Material read(Fields fields, Material common) throws InputException;
+    }
+
     /**
-     * A type that reads the common keys and {@code physicalKeys} (some of {@link #PHYSICAL_KEYS}),
-     * whose preset has the given colour and phong coefficients, ior 1.5 and roughness 0.
+     * A type that reads the common keys and {@code physicalKeys} (some of {@link #PHYSICAL_KEYS})
+     * with {@code reader}, whose preset has the given colour and phong coefficients, ior 1.5 and
+     * roughness 0.
      */
-    public MaterialType(String name, List<String> physicalKeys, Bsdf bsdf, Vector3d color, double kd, double ks,
-                        double kt, double shininess) {
+    public MaterialType(String name, List<String> physicalKeys, Reader reader, Bsdf bsdf, Vector3d color,
+                        double kd, double ks, double kt, double shininess) {
         if (!PHYSICAL_KEYS.containsAll(physicalKeys)) {
             throw new IllegalArgumentException("material type " + name + " reads " + physicalKeys
                     + ", but a material's physical parameters are " + PHYSICAL_KEYS);
@@ -41,8 +64,14 @@ public final class MaterialType {
         all.addAll(physicalKeys);
         this.name = name;
         this.keys = List.copyOf(all);
+        this.reader = reader;
         this.bsdf = bsdf;
         this.preset = new Material(name, color, kd, ks, kt, shininess, 1.5, 0);
+    }
+
+    /** A type that reads the common keys only. */
+    public MaterialType(String name, Bsdf bsdf, Vector3d color, double kd, double ks, double kt, double shininess) {
+        this(name, List.of(), (fields, common) -> common, bsdf, color, kd, ks, kt, shininess);
     }
 
     /** The name used in scene files. */
@@ -62,6 +91,59 @@ public final class MaterialType {
     /** The material its name alone means; a material of this type written in a scene starts from it. */
     public Material preset() {
         return preset;
+    }
+
+    /**
+     * The material of a mapping of this type, whose keys are among {@link #keys}: the preset, the
+     * common keys read over it (colour, then kd, ks, kt and shininess), then the type's own.
+     */
+    public Material read(Fields fields) throws InputException {
+        Vector3d color = fields.has("color") ? color(fields) : preset.color();
+        double kd = share(fields, "kd", preset.kd());
+        double ks = share(fields, "ks", preset.ks());
+        double kt = share(fields, "kt", preset.kt());
+        double shininess = shininess(fields, preset.shininess());
+        return reader.read(fields, new Material(name, color, kd, ks, kt, shininess, preset.ior(), preset.roughness()));
+    }
+
+    private static Vector3d color(Fields fields) throws InputException {
+        Vector3d c = fields.color("color");
+        if (c.maxComponent() > MAX_SHARE) {
+            throw fields.error("color", "color must be at most 1e30 in each component, got "
+                    + InputException.beyond(c.maxComponent(), MAX_SHARE, 3) + " (a material's color is the share of "
+                    + "the light it sends back, 1 for all of it)");
+        }
+        return c;
+    }
+
+    /** kd, ks or kt: from 0 to {@link #MAX_SHARE}. */
+    private static double share(Fields fields, String key, double fallback) throws InputException {
+        double value = atLeastZero(fields, key, fallback);
+        if (value > MAX_SHARE) {
+            throw fields.error(key, key + " must be at most 1e30, got " + fields.written(key)
+                    + " (the share of the light it sends back, 1 for all of it)");
+        }
+        return value;
+    }
+
+    private static double shininess(Fields fields, double fallback) throws InputException {
+        double value = atLeastZero(fields, "shininess", fallback);
+        if (value > MAX_SHININESS) {
+            throw fields.error("shininess", "shininess must be at most 1e6, got " + fields.written("shininess")
+                    + " (the highlight's exponent: 10 is broad, 1000 a point)");
+        }
+        return value;
+    }
+
+    private static double atLeastZero(Fields fields, String key, double fallback) throws InputException {
+        if (!fields.has(key)) {
+            return fallback;
+        }
+        double value = fields.number(key);
+        if (value < 0) {
+            throw fields.error(key, key + " must be >= 0, got " + fields.written(key));
+        }
+        return value;
     }
 
     @Override

@@ -5,6 +5,7 @@ import glint.math.Vector3d;
 import glint.registry.Fields;
 import java.util.Map;
 import org.snakeyaml.engine.v2.nodes.Node;
+import org.snakeyaml.engine.v2.nodes.ScalarNode;
 
 /** The {@link Fields} of one mapping of a scene file: each value read from its YAML node. */
 final class YamlFields implements Fields {
@@ -53,6 +54,25 @@ final class YamlFields implements Fields {
     @Override
     public double number(String key) throws InputException {
         return yaml.number(required(key), key);
+    }
+
+    @Override
+    public Vector3d color(String key) throws InputException {
+        return yaml.color(required(key), key);
+    }
+
+    @Override
+    public boolean has(String key) {
+        return entries.containsKey(key);
+    }
+
+    @Override
+    public String written(String key) {
+        Node value = entries.get(key);
+        if (value == null) {
+            throw new IllegalArgumentException(what + " has no " + key);
+        }
+        return value instanceof ScalarNode s ? InputException.cut(s.getValue().trim()) : YamlTree.describe(value);
     }
 
     @Override

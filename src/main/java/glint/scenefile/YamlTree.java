@@ -7,6 +7,7 @@ import java.util.LinkedHashMap;
 import java.util.List;
 import java.util.Map;
 import java.util.Set;
+import java.util.function.Function;
 import java.util.regex.Pattern;
 import org.snakeyaml.engine.v2.exceptions.Mark;
 import org.snakeyaml.engine.v2.nodes.MappingNode;
@@ -45,6 +46,16 @@ final class YamlTree {
      * {@code allowed} and none repeats. {@code what} names the mapping in messages ("sphere").
      */
     Map<String, Node> mapping(Node node, String what, Set<String> allowed) throws InputException {
+        return mapping(node, what, allowed, key -> null);
+    }
+
+    /**
+     * The entries of a mapping as {@link #mapping(Node, String, Set)} reads them, where a key not
+     * {@code allowed} is refused with the problem {@code refusal} gives for it, or when that is null
+     * is unknown, with a hint among {@code allowed}.
+     */
+    Map<String, Node> mapping(Node node, String what, Set<String> allowed, Function<String, String> refusal)
+            throws InputException {
         if (!(node instanceof MappingNode map)) {
             throw error(node, "expected a mapping for " + what + ", got " + describe(node));
         }
@@ -59,8 +70,9 @@ final class YamlTree {
                 throw mergeKeyError(keyNode, what);
             }
             if (!allowed.contains(key)) {
-                throw error(keyNode, "unknown key " + InputException.quote(key) + " in " + what
-                        + Suggestions.hint(key, allowed));
+                String refused = refusal.apply(key);
+                throw error(keyNode, refused != null ? refused : "unknown key " + InputException.quote(key) + " in "
+                        + what + Suggestions.hint(key, allowed));
             }
             if (entries.putIfAbsent(key, tuple.getValueNode()) != null) {
                 throw error(keyNode, "duplicate key " + InputException.quote(key) + " in " + what);

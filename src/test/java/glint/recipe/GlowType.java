@@ -2,7 +2,6 @@ package glint.recipe;
 
 import glint.math.Vector3d;
 import glint.registry.MaterialType;
-import java.util.List;
 
 /**
  * The registration of the glowing material: {@code {type: glow, color: [r, g, b]}}, scattered by
@@ -10,7 +9,7 @@ import java.util.List;
  */
 final class GlowType {
 
-    static final MaterialType TYPE = new MaterialType("glow", List.of(), new Glow(), Vector3d.ONE, 0, 0, 0, 1);
+    static final MaterialType TYPE = new MaterialType("glow", new Glow(), Vector3d.ONE, 0, 0, 0, 1);
 
     private GlowType() {
     }

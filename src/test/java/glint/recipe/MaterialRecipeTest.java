@@ -5,8 +5,10 @@ import static org.junit.jupiter.api.Assertions.assertThrows;
 
 import glint.image.FrameBuffer;
 import glint.math.Vector3d;
+import glint.registry.GlassType;
 import glint.registry.MaterialType;
 import glint.registry.Registry;
+import glint.scene.Material;
 import glint.shading.Dielectric;
 import java.util.List;
 import org.junit.jupiter.api.Test;
@@ -63,16 +65,38 @@ class MaterialRecipeTest {
     }
 
     @Test
-    void theNewTypeReadsItsOwnKeysAndAKeyOfAnotherTypeIsRefusedNamingIt() {
-        assertEquals("recipe.yaml:2:19: a glow material has no roughness (roughness is a key of metal)",
+    void theNewTypeReadsItsOwnKeysAndAKeyOfAnotherTypeIsRefusedNamingItAndTheFix() {
+        assertEquals("recipe.yaml:2:19: a glow material has no roughness (roughness is a key of metal; write type: "
+                        + "metal, or remove roughness)",
                 Recipes.error(REGISTRY, "materials:\n  m: {type: glow, roughness: 0.5}\n"));
         // a second type reading ior: both are named
-        MaterialType lens = new MaterialType("lens", List.of("ior"), new Dielectric(), Vector3d.ONE, 0, 0, 1, 1);
-        assertEquals("recipe.yaml:2:19: a glow material has no ior (ior is a key of glass and lens)",
+        MaterialType lens = new MaterialType("lens", List.of("ior"), GlassType::read, new Dielectric(), Vector3d.ONE,
+                0, 0, 1, 1);
+        assertEquals("recipe.yaml:2:19: a glow material has no ior (ior is a key of glass and lens; write type: glass "
+                        + "or type: lens, or remove ior)",
                 Recipes.error(REGISTRY.with(lens), "materials:\n  m: {type: glow, ior: 1.2}\n"));
+        assertEquals("recipe.yaml:2:19: unknown key 'iro' in material 'm' (expected one of: type, color, kd, ks, kt, "
+                        + "shininess)",
+                Recipes.error(REGISTRY.with(lens), "materials:\n  m: {type: glow, iro: 1.2}\n"));
         assertEquals("material type lamp reads [power], but a material's physical parameters are [ior, roughness]",
                 assertThrows(IllegalArgumentException.class, () -> new MaterialType("lamp", List.of("power"),
-                        new Glow(), Vector3d.ONE, 0, 0, 0, 1)).getMessage());
+                        (fields, common) -> common, new Glow(), Vector3d.ONE, 0, 0, 0, 1)).getMessage());
+    }
+
+    @Test
+    void aTypeReadsItsKeysWithTheReaderItIsGiven() {
+        MaterialType lens = new MaterialType("lens", List.of("ior"), GlassType::read, new Dielectric(), Vector3d.ONE,
+                0, 0, 1, 1);
+        Registry registry = REGISTRY.with(lens);
+        String yaml = """
+                objects:
+                  - {type: sphere, center: [0, 0, 5], radius: 1, material: {type: lens, ior: 1.25, ks: 0.5}}
+                """;
+        assertEquals(new Material("lens", Vector3d.ONE, 0, 0.5, 1, 1, 1.25, 0),
+                Recipes.scene(registry, yaml).objects().get(0).material());
+        assertEquals("recipe.yaml:2:24: ior must lie between 0.1 and 100 (water is 1.33, glass 1.5, diamond 2.4), "
+                        + "got 200",
+                Recipes.error(registry, "materials:\n  m: {type: lens, ior: 200}\n"));
     }
 
     @Test

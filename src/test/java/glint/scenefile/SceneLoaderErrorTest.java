@@ -5,6 +5,7 @@ import static org.junit.jupiter.api.Assertions.assertEquals;
 import static org.junit.jupiter.api.Assertions.assertThrows;
 
 import glint.input.InputException;
+import glint.registry.MaterialType;
 import glint.scene.Scene;
 import java.io.IOException;
 import java.nio.file.Files;
@@ -133,44 +134,108 @@ class SceneLoaderErrorTest {
     }
 
     @Test
-    void aKeyOfAnotherMaterialTypeNamesTheTypeThatReadsIt() {
+    void aKeyOfAnotherMaterialTypeNamesTheTypeThatReadsItAndTheFix() {
         // "  - {type: sphere, center: [0, 0, 0], radius: 1, material: {type: matte, " is 73 characters:
         // "ior" at 74, the first of the keys a matte material does not read, in the order written
-        assertError("scenes/x.yaml:2:74: a matte material has no ior (ior is a key of glass)", """
+        assertError("scenes/x.yaml:2:74: a matte material has no ior (ior is a key of glass; write type: glass, "
+                + "or remove ior)", """
                 objects:
                   - {type: sphere, center: [0, 0, 0], radius: 1, material: {type: matte, ior: 7, roughness: 0.9, kt: 3}}
                 """);
         // "  gold: {" 1-9, "type: metal, " 10-22, "ior" at 23
-        assertError("scenes/x.yaml:2:23: a metal material has no ior (ior is a key of glass)", """
+        assertError("scenes/x.yaml:2:23: a metal material has no ior (ior is a key of glass; write type: glass, "
+                + "or remove ior)", """
                 materials:
                   gold: {type: metal, ior: 1.5}
                 """);
         // "  pane: {" 1-9, "kt: 0.5, " 10-18, "roughness" at 19: before the type, still the glass's key check
-        assertError("scenes/x.yaml:2:19: a glass material has no roughness (roughness is a key of metal)", """
+        assertError("scenes/x.yaml:2:19: a glass material has no roughness (roughness is a key of metal; write "
+                + "type: metal, or remove roughness)", """
                 materials:
                   pane: {kt: 0.5, roughness: 0.2, type: glass}
                 """);
     }
 
     @Test
+    void followingTheFixOfAKeyOfAnotherTypeLoads() throws InputException {
+        Scene scene = SceneLoader.parse(FILE, """
+                materials:
+                  m: {type: metal, roughness: 0.5}
+                  n: {type: matte}
+                objects:
+                  - {type: sphere, center: [0, 0, 0], radius: 1, material: m}
+                  - {type: sphere, center: [0, 0, 3], radius: 1, material: n}
+                """);
+        assertEquals(0.5, scene.objects().get(0).material().roughness());
+        assertEquals(0.0, scene.objects().get(1).material().roughness());
+    }
+
+    @Test
     void aKeyOfAnotherMaterialTypeIsCheckedBeforeItsValue() {
         // a matte material's roughness is refused as a key, not as a value out of [0, 1]
-        assertError("scenes/x.yaml:2:20: a matte material has no roughness (roughness is a key of metal)", """
+        assertError("scenes/x.yaml:2:20: a matte material has no roughness (roughness is a key of metal; write "
+                + "type: metal, or remove roughness)", """
                 materials:
                   m: {type: matte, roughness: 7}
                 """);
     }
 
     @Test
-    void aKeyNoMaterialTypeReadsIsUnknownWithAHintOrTheKeysOfEveryType() {
+    void aMisspeltKeyOfTheTypeGetsTheTypesOwnKeyAsHint() {
+        // "  m: {type: metal, " is 19 characters
+        assertError("scenes/x.yaml:2:20: unknown key 'rougness' in material 'm' (did you mean 'roughness'?)", """
+                materials:
+                  m: {type: metal, rougness: 0.5}
+                """);
         assertError("scenes/x.yaml:2:20: unknown key 'ior2' in material 'm' (did you mean 'ior'?)", """
                 materials:
-                  m: {type: matte, ior2: 1}
+                  m: {type: glass, ior2: 1}
                 """);
+        assertError("scenes/x.yaml:2:20: unknown key 'shinyness' in material 'm' (did you mean 'shininess'?)", """
+                materials:
+                  m: {type: matte, shinyness: 1}
+                """);
+    }
+
+    @Test
+    void aMisspeltKeyOfAnotherTypeGetsNoHintTowardsAKeyTheTypeRefuses() {
+        // roughness is metal's: a matte material lists its own keys, which do not have it
+        assertError("scenes/x.yaml:2:20: unknown key 'rougness' in material 'm' (expected one of: type, color, kd, ks,"
+                + " kt, shininess)", """
+                materials:
+                  m: {type: matte, rougness: 0.5}
+                """);
+        assertError("scenes/x.yaml:2:20: unknown key 'ior2' in material 'm' (expected one of: type, color, kd, ks, kt,"
+                + " shininess, roughness)", """
+                materials:
+                  m: {type: metal, ior2: 1}
+                """);
+    }
+
+    @Test
+    void aKeyNoMaterialTypeReadsListsTheKeysOfItsType() {
         assertError("scenes/x.yaml:2:20: unknown key 'albedo' in material 'm' (expected one of: type, color, kd, ks, kt,"
-                + " shininess, ior, roughness)", """
+                + " shininess)", """
                 materials:
                   m: {type: matte, albedo: [1, 1, 1]}
+                """);
+        assertError("scenes/x.yaml:2:20: unknown key 'albedo' in material 'm' (expected one of: type, color, kd, ks, kt,"
+                + " shininess, ior)", """
+                materials:
+                  m: {type: glass, albedo: [1, 1, 1]}
+                """);
+    }
+
+    @Test
+    void aMaterialsTypeIsCheckedBeforeItsKeys() {
+        // "  m: {rougness: 0.5, type: " is 27 characters: the unknown type, not the key before it
+        assertError("scenes/x.yaml:2:28: unknown material type 'metl' (did you mean 'metal'?)", """
+                materials:
+                  m: {rougness: 0.5, type: metl}
+                """);
+        assertError("scenes/x.yaml:2:6: missing required key 'type' in material 'm' (one of: matte, metal, glass)", """
+                materials:
+                  m: {colr: [1, 0, 0]}
                 """);
     }
 
@@ -492,6 +557,11 @@ class SceneLoaderErrorTest {
                 materials:
                   m: {type: metal, color: [0, 1e300, 0]}
                 """);
+    }
+
+    @Test
+    void aMaterialsColourIsBoundedAsEveryColourAndLightOfAScene() {
+        assertEquals(SceneLoader.MAX_RADIANCE, MaterialType.MAX_SHARE);
     }
 
     @Test
