@@ -89,7 +89,7 @@ public final class StillRun implements ImageWriter.Watcher, AutoCloseable {
     }
 
     /** What the guard process says if it has to delete the hidden files of {@code files} images. */
-    public static String ended(String what, int files) {
+    private static String ended(String what, int files) {
         return "glint: the program ended before the " + what + " was written; nothing written, its hidden temporary "
                 + (files == 1 ? "file" : "files") + " removed";
     }
