@@ -129,7 +129,8 @@ class StillRunTest {
     @Test
     void theStepsAreTheRenderThenTheWriteEachWithItsFraction() throws Exception {
         StringBuilder steps = new StringBuilder();
-        try (StillRun still = StillRun.open(List.of(dir.resolve("ball.png"), dir.resolve("ball.pfm")), List.of(), "still")) {
+        List<Path> images = List.of(dir.resolve("ball.png"), dir.resolve("ball.pfm"));
+        try (StillRun still = StillRun.open(images, List.of(), "still")) {
             java.util.function.DoubleSupplier[] last = new java.util.function.DoubleSupplier[1];
             StillRun.Steps record = (name, done) -> {
                 steps.append(name).append(';');

@@ -192,21 +192,21 @@ public final class StillRender implements AutoCloseable {
         }
 
         String progressLine() {
-            StillRun run = this.run;
-            if (run == null) {
+            StillRun opened = run;
+            if (opened == null) {
                 return RENDERING + "0 % (Enter or Esc cancels)";
             }
-            String step = run.writing() ? WRITING + run.percentWritten() : RENDERING + run.percentRendered();
+            String step = opened.writing() ? WRITING + opened.percentWritten() : RENDERING + opened.percentRendered();
             return step + " % (Enter or Esc cancels)";
         }
 
         private void run() {
             long start = System.nanoTime();
-            StillRun run = null;
+            StillRun opened = null;
             try {
                 awaitPrevious();
-                run = open();
-                run.write(run.render(job.scene(), job.config(), StillRun.Steps.NONE), StillRun.Steps.NONE);
+                opened = open();
+                opened.write(opened.render(job.scene(), job.config(), StillRun.Steps.NONE), StillRun.Steps.NONE);
                 report(start);
             } catch (CancellationException | InterruptedIOException e) {
                 // said when it was cancelled
@@ -216,8 +216,8 @@ public final class StillRender implements AutoCloseable {
                 failed(e instanceof OutOfMemoryError ? "out of memory" : e.getMessage() != null ? e.getMessage()
                         : e.toString());
             } finally {
-                if (run != null) {
-                    run.close(); // renamed into place, or deleted wherever its folder is now
+                if (opened != null) {
+                    opened.close(); // renamed into place, or deleted wherever its folder is now
                 }
                 ended.countDown();
                 changed.run();
