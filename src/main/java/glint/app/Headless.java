@@ -33,9 +33,6 @@ final class Headless {
     static final int MAX_BENCH_FRAMES = 100_000;
     /** What a still stopped by a signal before its image was written says. */
     static final String INTERRUPTED_STILL = "glint: interrupted; no image written";
-    /** What a guard says if the program ends too abruptly (SIGKILL) to delete the hidden file itself. */
-    static final String ENDED = "glint: the program ended before the image was written; nothing written, "
-            + "its hidden temporary file removed";
 
     private Headless() {
     }
@@ -43,8 +40,8 @@ final class Headless {
     /**
      * Renders one still to {@code output}, at the settings the flags, the scene's render block and
      * the config give, in that order, through the one still pipeline ({@link StillRun}). The output is
-     * checked first (its size once the scene is read), before any work, against everything that would
-     * otherwise fail only at the end or lose a file ({@link glint.still.OutputFile}).
+     * checked first, before the scene is read, against everything that would otherwise fail only at the
+     * end or lose a file ({@link glint.still.OutputFile}); its size, with the heap, before the render.
      *
      * @param inputs the scene file, then the config file if one was read: the output may be neither
      */
@@ -52,10 +49,10 @@ final class Headless {
                            Path output, PrintWriter out, PrintWriter err) throws InputException, IOException {
         try (Interrupts interrupts = Interrupts.install(err, INTERRUPTED_STILL);
              Progress progress = Progress.start(err);
-             StillRun still = new StillRun(List.of(output), ENDED)) {
+             StillRun still = StillRun.open(List.of(output), inputs, "image")) {
             interrupts.watch(still::cancel);
             try {
-                return render(still, scenePath, view, inputs, settings, flags, progress, out);
+                return render(still, scenePath, view, settings, flags, progress, out);
             } catch (CancellationException | InterruptedIOException e) {
                 interrupts.report(INTERRUPTED_STILL);
                 return INTERRUPTED;
@@ -65,14 +62,11 @@ final class Headless {
         }
     }
 
-    private static int render(StillRun still, Path scenePath, ViewChoice view, List<Path> inputs, Config settings,
-                              Flags flags, Progress progress, PrintWriter out)
-            throws InputException, IOException, StillRefused {
-        still.open(inputs);
+    private static int render(StillRun still, Path scenePath, ViewChoice view, Config settings, Flags flags,
+                              Progress progress, PrintWriter out) throws InputException, IOException, StillRefused {
         progress.step("reading the scene", null);
         Scene scene = view.apply(SceneLoader.load(scenePath, settings.limits().scene()), scenePath.toString());
         Config config = flags.effective(settings, scene.render());
-        still.checkSize(config);
         progress.step("preparing the scene", null);
         RenderScene compiled = RenderScene.compile(scene, RenderSettings.of(config));
         long start = System.nanoTime();

@@ -47,22 +47,14 @@ public final class ImageWriter {
         return name.endsWith(".png") || name.endsWith(".pfm");
     }
 
+    /** Writes the frame to {@code path} in the format its name asks for, through a temporary file beside it. */
     public static void write(FrameBuffer frame, Path path) throws IOException {
-        write(frame, path, temporaryBeside(path));
+        writeAtomically(path, temporaryBeside(path), content(frame, path, new Watcher() { }));
     }
 
     /**
-     * Writes the frame to {@code temp} (made by {@link #temporaryBeside}) and renames it to
-     * {@code path}; {@code temp} is gone afterwards, whether the write succeeded or not.
-     */
-    public static void write(FrameBuffer frame, Path path, Path temp) throws IOException {
-        write(frame, path, temp, new Watcher() { });
-    }
-
-    /**
-     * What the caller of a long write sees and decides: how far it is, whether to give up (the
-     * program is being stopped), and the rename that puts the image in place, which a watcher runs
-     * under its own lock so that "written" and "not written" can never both be said.
+     * What the caller of a long write sees and decides: how far it is, and whether to give up (the still
+     * was cancelled, the program is being stopped).
      */
     public interface Watcher {
         /** The fraction of the write done, from 0 to 1. */
@@ -73,30 +65,6 @@ public final class ImageWriter {
         default boolean cancelled() {
             return false;
         }
-
-        /** Runs the rename, or throws {@link InterruptedIOException} without running it when cancelled. */
-        default void replace(Rename rename) throws IOException {
-            rename.run();
-        }
-    }
-
-    /** The rename of the complete temporary file to the image's name. */
-    @FunctionalInterface
-    public interface Rename {
-        void run() throws IOException;
-    }
-
-    /**
-     * As {@link #write(FrameBuffer, Path, Path)}, reporting progress to the watcher and stopping
-     * (temporary file deleted, the image as it was) when it says so.
-     */
-    public static void write(FrameBuffer frame, Path path, Path temp, Watcher watcher) throws IOException {
-        try {
-            writeTemporary(frame, path, temp, watcher);
-            watcher.replace(() -> rename(temp, path));
-        } finally {
-            Files.deleteIfExists(temp);
-        }
     }
 
     /**
@@ -104,9 +72,7 @@ public final class ImageWriter {
      * the watcher and stopping when it says so; renames nothing (see {@link #rename}).
      */
     public static void writeTemporary(FrameBuffer frame, Path path, Path temp, Watcher watcher) throws IOException {
-        String name = path.getFileName().toString().toLowerCase(Locale.ROOT);
-        Content content = name.endsWith(".pfm") ? out -> writePfm(frame, out, watcher)
-                : out -> writePng(toImage(frame, watcher), out, watcher);
+        Content content = content(frame, path, watcher);
         try { // the file was made beforehand: deleted since (a cancel), it is not made again
             try (OutputStream out = new BufferedOutputStream(Files.newOutputStream(temp, StandardOpenOption.WRITE,
                     StandardOpenOption.TRUNCATE_EXISTING), 1 << 16)) {
@@ -123,6 +89,13 @@ public final class ImageWriter {
             }
             throw e;
         }
+    }
+
+    /** The frame in the format {@code path}'s name asks for: a linear PFM, else an sRGB PNG. */
+    private static Content content(FrameBuffer frame, Path path, Watcher watcher) {
+        String name = path.getFileName().toString().toLowerCase(Locale.ROOT);
+        return name.endsWith(".pfm") ? out -> writePfm(frame, out, watcher)
+                : out -> writePng(toImage(frame, watcher), out, watcher);
     }
 
     /** Stops a write at its next bytes once the watcher says so. */
@@ -182,16 +155,11 @@ public final class ImageWriter {
 
     /** Writes {@code content} to {@code temp}, then renames it to {@code path}; deletes temp on failure. */
     public static void writeAtomically(Path path, Path temp, Content content) throws IOException {
-        writeAtomically(path, temp, content, new Watcher() { });
-    }
-
-    /** As {@link #writeAtomically(Path, Path, Content)}, the rename run by the watcher. */
-    public static void writeAtomically(Path path, Path temp, Content content, Watcher watcher) throws IOException {
         try {
             try (OutputStream out = new BufferedOutputStream(Files.newOutputStream(temp), 1 << 16)) {
                 content.writeTo(out);
             }
-            watcher.replace(() -> rename(temp, path));
+            rename(temp, path);
         } finally {
             Files.deleteIfExists(temp);
         }
@@ -292,10 +260,6 @@ public final class ImageWriter {
             writer.dispose();
         }
         check(watcher); // an aborted encoding returns early, its file incomplete
-    }
-
-    public static void writePng(FrameBuffer frame, Path path) throws IOException {
-        writeAtomically(path, temporaryBeside(path), out -> writePng(toImage(frame), out));
     }
 
     public static void writePfm(FrameBuffer frame, Path path) throws IOException {

@@ -19,15 +19,15 @@ import java.util.function.DoubleSupplier;
 
 /**
  * One still image, from its files checked to its files in place: the one pipeline of {@code --output} and
- * the window's render key. In order, on one thread: {@link #open} checks each image file and makes its
+ * the window's render key. A still comes to be opened: {@link #open} checks each image file and makes its
  * hidden file beside it ({@code .a.png.1a2b.part}) before any work, with a guard process that deletes them
- * if the program ends too abruptly to do it itself ({@link PartGuard}); {@link #render} checks the size
- * against {@code ulimit -f} and the heap, then renders on a tracer of its own; {@link #write} writes each
- * image to its hidden file and renames them all into place; {@link #close} deletes what was not renamed.
- * {@link #cancel}, from any thread at any time, stops the render or the write at once and deletes the hidden
- * files; it and the rename exclude each other, so "cancelled, nothing written" and "written" are never both
- * true. A refusal before the work is a {@link StillRefused}, a failed write a {@link WriteFailure}, and a
- * cancelled still throws {@link CancellationException} (open, render) or {@link InterruptedIOException}
+ * if the program ends too abruptly to do it itself ({@link PartGuard}). Then, on one thread: {@link #render}
+ * checks the size against {@code ulimit -f} and the heap, then renders on a tracer of its own; {@link #write}
+ * writes each image to its hidden file and renames them all into place; {@link #close} deletes what was not
+ * renamed. {@link #cancel}, from any thread at any time, stops the render or the write at once and deletes
+ * the hidden files; it and the rename exclude each other, so "cancelled, nothing written" and "written" are
+ * never both true. A refusal before the work is a {@link StillRefused}, a failed write a {@link WriteFailure},
+ * and a cancelled still throws {@link CancellationException} (render) or {@link InterruptedIOException}
  * (write).
  */
 public final class StillRun implements ImageWriter.Watcher, AutoCloseable {
@@ -47,23 +47,51 @@ public final class StillRun implements ImageWriter.Watcher, AutoCloseable {
     }
 
     private final List<Path> images;
-    private final String ended;
     // under this object's lock, as cancelled is set: the hidden files, and whether they are in place
-    private final List<PartFile> parts = new ArrayList<>();
+    private final List<PartFile> parts;
     private boolean renamed;
     private volatile boolean cancelled;
     private volatile Tracer tracer;
-    private PartGuard guard;
-    private volatile int filesWritten;
-    private volatile double writeFraction = -1; // of the file being written; below 0: not writing yet
+    private final PartGuard guard;
+    // files written, with the fraction of the one being written (one value: never ahead); below 0: not yet
+    private volatile double filesWritten = -1;
+    private int fileWriting; // the writing thread's: the index of the file being written
+
+    private StillRun(List<Path> images, List<PartFile> parts, PartGuard guard) {
+        this.images = images;
+        this.parts = parts;
+        this.guard = guard;
+    }
 
     /**
-     * @param images the files to write: a PNG, a PFM, or both (one frame, each in its format)
-     * @param ended  what the guard process says if it has to delete the hidden files
+     * A still of {@code images} (a PNG, a PFM, or both: one frame, each in its format), opened: each image
+     * file checked against what it must never be ({@code inputs}: the scene, then the config) and what would
+     * fail only at the end ({@link OutputFile}), and its hidden file made. If the program ends too abruptly to
+     * delete them itself, the guard process deletes them and says {@code glint: the program ended before the
+     * image was written; nothing written, its hidden temporary file removed}, {@code what} naming the image.
+     *
+     * @param what what the user calls the image: {@code image} (the command line) or {@code still} (the window)
      */
-    public StillRun(List<Path> images, String ended) {
-        this.images = List.copyOf(images);
-        this.ended = ended;
+    public static StillRun open(List<Path> images, List<Path> inputs, String what) throws StillRefused {
+        List<PartFile> parts = new ArrayList<>();
+        try {
+            for (Path image : images) {
+                parts.add(OutputFile.prepare(image, inputs));
+            }
+        } catch (StillRefused | RuntimeException e) {
+            parts.forEach(PartFile::close);
+            throw e;
+        }
+        List<Path> made = parts.stream().map(PartFile::path).toList();
+        // SIGKILL, a crash, the X server gone: no Java code runs
+        PartGuard guard = PartGuard.of(made, ended(what, images.size()));
+        return new StillRun(List.copyOf(images), parts, guard);
+    }
+
+    /** What the guard process says if it has to delete the hidden files of {@code files} images. */
+    private static String ended(String what, int files) {
+        return "glint: the program ended before the " + what + " was written; nothing written, its hidden temporary "
+                + (files == 1 ? "file" : "files") + " removed";
     }
 
     /** The files this still writes. */
@@ -71,24 +99,8 @@ public final class StillRun implements ImageWriter.Watcher, AutoCloseable {
         return images;
     }
 
-    /**
-     * Checks each image file against what it must never be ({@code inputs}: the scene, then the config)
-     * and what would fail only at the end ({@link OutputFile}), and makes its hidden file.
-     */
-    public void open(List<Path> inputs) throws StillRefused {
-        List<Path> made;
-        synchronized (this) {
-            checkCancelled();
-            for (Path image : images) {
-                parts.add(OutputFile.prepare(image, inputs));
-            }
-            made = parts.stream().map(PartFile::path).toList();
-        }
-        guard = PartGuard.of(made, ended); // SIGKILL, a crash, the X server gone: no Java code runs
-    }
-
     /** Refuses a PFM of the config's size that would be larger than this process may write (ulimit -f). */
-    public void checkSize(Config config) throws StillRefused {
+    private void checkSize(Config config) throws StillRefused {
         for (Path image : images) {
             OutputFile.checkSize(image, config.displayWidth(), config.displayHeight());
         }
@@ -119,11 +131,11 @@ public final class StillRun implements ImageWriter.Watcher, AutoCloseable {
 
     /** Writes each image to its hidden file, then renames them all into place, unless cancelled before. */
     public void write(FrameBuffer frame, Steps steps) throws IOException {
-        writeFraction = 0;
+        filesWritten = 0;
         steps.step("writing the image", this::writtenFraction);
         for (int i = 0; i < images.size(); i++) {
+            fileWriting = i;
             filesWritten = i;
-            writeFraction = 0;
             Path image = images.get(i), part = parts.get(i).path();
             OutputFile.keepPermissions(image, part);
             try {
@@ -182,12 +194,12 @@ public final class StillRun implements ImageWriter.Watcher, AutoCloseable {
 
     @Override
     public void progress(double fraction) {
-        writeFraction = fraction;
+        filesWritten = fileWriting + Math.min(1, Math.max(0, fraction));
     }
 
     /** Whether the images are being written (the render is done). */
     public boolean writing() {
-        return writeFraction >= 0;
+        return filesWritten >= 0;
     }
 
     /** Percent of the render's tiles done (0 before it starts). */
@@ -198,11 +210,11 @@ public final class StillRun implements ImageWriter.Watcher, AutoCloseable {
 
     /** Percent of the images written (0 before the write starts). */
     public int percentWritten() {
-        return (int) (100 * (filesWritten + Math.min(1, Math.max(0, writeFraction))) / images.size());
+        return (int) (100 * writtenFraction());
     }
 
     private double writtenFraction() {
-        return (filesWritten + Math.min(1, writeFraction)) / images.size();
+        return Math.max(0, filesWritten) / images.size();
     }
 
     private void checkCancelled() {
@@ -217,9 +229,7 @@ public final class StillRun implements ImageWriter.Watcher, AutoCloseable {
         synchronized (this) {
             parts.forEach(PartFile::close);
         }
-        if (guard != null) {
-            guard.close();
-        }
+        guard.close();
         Tracer t = tracer;
         if (t != null) {
             t.close();

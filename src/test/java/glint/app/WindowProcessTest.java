@@ -200,7 +200,7 @@ class WindowProcessTest {
         xvfb.destroy();
         assertEquals(1, finish(), err::toString);
         assertEquals(List.of("glint: the program ended before the still was written; nothing written, its hidden "
-                + "temporary files removed"), said());
+                + "temporary file removed"), said());
         assertEquals(List.of(), files(), "no image, no hidden file");
         assertEquals("", Files.readString(dir.resolve("stdout.txt")));
     }

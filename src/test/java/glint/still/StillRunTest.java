@@ -41,8 +41,6 @@ class StillRunTest {
             lights:
               - {type: point, position: [2, 4, -3]}
             """;
-    private static final String ENDED = "the program ended";
-
     @TempDir
     Path dir;
 
@@ -65,8 +63,7 @@ class StillRunTest {
     @Test
     void theHiddenFilesAreMadeBeforeTheWorkAndRenamedWhenBothImagesAreComplete() throws Exception {
         Path png = dir.resolve("ball.png"), pfm = dir.resolve("ball.pfm");
-        try (StillRun still = new StillRun(List.of(png, pfm), ENDED)) {
-            still.open(List.of());
+        try (StillRun still = StillRun.open(List.of(png, pfm), List.of(), "still")) {
             assertEquals(2, hiddenFiles(), files()::toString);
             assertEquals(2, files().size(), "nothing else yet");
             FrameBuffer frame = still.render(scene(), config, StillRun.Steps.NONE);
@@ -86,8 +83,7 @@ class StillRunTest {
 
     @Test
     void aCancelBeforeTheRenderDeletesTheHiddenFilesAtOnceAndTheRenderDoesNotStart() throws Exception {
-        try (StillRun still = new StillRun(List.of(dir.resolve("ball.png")), ENDED)) {
-            still.open(List.of());
+        try (StillRun still = StillRun.open(List.of(dir.resolve("ball.png")), List.of(), "still")) {
             assertEquals(1, hiddenFiles());
             assertTrue(still.cancel());
             assertEquals(List.of(), files(), "deleted by the cancel, not by the close");
@@ -101,8 +97,7 @@ class StillRunTest {
         Path png = dir.resolve("ball.png");
         byte[] old = {1, 2, 3};
         Files.write(png, old);
-        try (StillRun still = new StillRun(List.of(png), ENDED)) {
-            still.open(List.of());
+        try (StillRun still = StillRun.open(List.of(png), List.of(), "still")) {
             FrameBuffer frame = still.render(scene(), config, StillRun.Steps.NONE);
             assertTrue(still.cancel());
             assertThrows(InterruptedIOException.class, () -> still.write(frame, StillRun.Steps.NONE));
@@ -112,21 +107,10 @@ class StillRunTest {
     }
 
     @Test
-    void aCancelBeforeTheFilesAreMadeMakesNone() throws Exception {
-        try (StillRun still = new StillRun(List.of(dir.resolve("ball.png")), ENDED)) {
-            assertTrue(still.cancel());
-            assertThrows(CancellationException.class, () -> still.open(List.of()));
-        }
-        assertEquals(List.of(), files());
-    }
-
-    @Test
     void whenTheSecondImageIsRefusedTheFirstsHiddenFileIsDeleted() throws Exception {
         Path missing = dir.resolve("missing");
-        StillRefused e;
-        try (StillRun still = new StillRun(List.of(dir.resolve("ball.png"), missing.resolve("ball.pfm")), ENDED)) {
-            e = assertThrows(StillRefused.class, () -> still.open(List.of()));
-        }
+        StillRefused e = assertThrows(StillRefused.class,
+                () -> StillRun.open(List.of(dir.resolve("ball.png"), missing.resolve("ball.pfm")), List.of(), "still"));
         assertEquals("no such folder '" + missing + "'", e.problem());
         assertTrue(e.aboutOutput());
         assertEquals(List.of(), files());
@@ -136,19 +120,17 @@ class StillRunTest {
     void anOutputThatIsTheSceneIsRefusedWithTheSceneNamed() throws Exception {
         Path scene = Files.writeString(dir.resolve("scene.png"), SCENE);
         Path link = Files.createLink(dir.resolve("hard.png"), scene);
-        try (StillRun still = new StillRun(List.of(link), ENDED)) {
-            StillRefused e = assertThrows(StillRefused.class, () -> still.open(List.of(scene)));
-            assertEquals("'" + link + "' is the scene file '" + scene + "'; writing the image there would destroy it "
-                    + "(choose another output name)", e.problem());
-        }
+        StillRefused e = assertThrows(StillRefused.class, () -> StillRun.open(List.of(link), List.of(scene), "image"));
+        assertEquals("'" + link + "' is the scene file '" + scene + "'; writing the image there would destroy it "
+                + "(choose another output name)", e.problem());
         assertEquals(List.of("hard.png", "scene.png"), files());
     }
 
     @Test
     void theStepsAreTheRenderThenTheWriteEachWithItsFraction() throws Exception {
         StringBuilder steps = new StringBuilder();
-        try (StillRun still = new StillRun(List.of(dir.resolve("ball.png"), dir.resolve("ball.pfm")), ENDED)) {
-            still.open(List.of());
+        List<Path> images = List.of(dir.resolve("ball.png"), dir.resolve("ball.pfm"));
+        try (StillRun still = StillRun.open(images, List.of(), "still")) {
             java.util.function.DoubleSupplier[] last = new java.util.function.DoubleSupplier[1];
             StillRun.Steps record = (name, done) -> {
                 steps.append(name).append(';');

@@ -59,7 +59,7 @@ public final class Captures implements AutoCloseable {
             return stills.cancel();
         }
         Camera printed = CameraBlock.asPrinted(view.controller().camera()); // the camera a pasted block gives
-        return stills.startOrCancel(StillRender.job(view.compiled().withCamera(printed), printed,
+        return stills.start(StillRender.job(view.compiled().withCamera(printed), printed,
                 view.settings().still(view.scene(), size.fit(1)), source.scenePath(), screenshots, pfm), out, err);
     }
 

@@ -36,9 +36,6 @@ public final class StillRender implements AutoCloseable {
     static final String CANCELLED = "still: cancelled, nothing written";
     private static final String RENDERING = "still: rendering ";
     private static final String WRITING = "still: writing ";
-    /** What a guard says if the program ends too abruptly to delete a still's hidden files itself. */
-    private static final String ENDED = "glint: the program ended before the still was written; nothing written, "
-            + "its hidden temporary files removed";
 
     /**
      * What to render and where.
@@ -99,11 +96,8 @@ public final class StillRender implements AutoCloseable {
         return current != null && current.underWay();
     }
 
-    /** Starts a still (returns what the overlay says), or, if one is under way, cancels it. */
-    String startOrCancel(Job job, PrintWriter out, PrintWriter err) {
-        if (running()) {
-            return cancel();
-        }
+    /** Starts a still, after the one before has let go of its frame; returns what the overlay says. */
+    String start(Job job, PrintWriter out, PrintWriter err) {
         stills.removeIf(s -> s.ended.getCount() == 0);
         current = new Still(job, current, out, err);
         stills.add(current);
@@ -113,7 +107,7 @@ public final class StillRender implements AutoCloseable {
 
     /** Cancels the still under way (none is written); returns what the overlay says. */
     String cancel() {
-        return current == null ? CANCELLED : current.cancel();
+        return current == null || current.cancel() ? CANCELLED : "still: wrote " + current.job.files(); // too late
     }
 
     /** What changed since the last call (progress, written, failed), if anything. */
@@ -131,10 +125,10 @@ public final class StillRender implements AutoCloseable {
      * returns whether a still under way was cancelled by it.
      */
     boolean stop() {
-        boolean stopped = running() && cancel().equals(CANCELLED); // not when it was just renamed into place
+        boolean stopped = running() && current.cancel(); // not when it was just renamed into place
         long deadline = System.nanoTime() + TimeUnit.SECONDS.toNanos(30);
         for (Still s : stills) {
-            s.stopNow();
+            s.cancel();
             try {
                 s.ended.await(Math.max(0, deadline - System.nanoTime()), TimeUnit.NANOSECONDS);
             } catch (InterruptedException e) {
@@ -150,51 +144,69 @@ public final class StillRender implements AutoCloseable {
         stop();
     }
 
-    /** One still: its thread, its run through the pipeline, and how far it is. */
+    /**
+     * One still: its thread, its run through the pipeline (opened on that thread), and how far it is. Its
+     * cancel goes through it, before the run is opened as after.
+     */
     private final class Still {
         private final Job job;
         private Still previous; // may still be finishing a tile: this one waits for it (one frame in memory)
         private final PrintWriter out;
         private final PrintWriter err;
-        private final StillRun run;
         private final Thread thread;
         private final CountDownLatch ended = new CountDownLatch(1);
         private final AtomicReference<String> news = new AtomicReference<>(); // the last thing to show
+        // set under this object's lock: the run once opened, and whether the still was cancelled (before or since)
+        private volatile StillRun run;
+        private volatile boolean cancelled;
 
         Still(Job job, Still previous, PrintWriter out, PrintWriter err) {
             this.job = job;
             this.previous = previous;
             this.out = out;
             this.err = err;
-            this.run = new StillRun(job.images(), ENDED);
             this.thread = new Thread(this::run, "glint-still");
         }
 
         boolean underWay() {
-            return !run.cancelled() && ended.getCount() > 0;
+            return !cancelled && ended.getCount() > 0;
         }
 
-        /** Cancelled at once: no rename can follow, and the hidden files are gone before the overlay says so. */
-        String cancel() {
-            return run.cancel() ? CANCELLED : "still: wrote " + job.files(); // too late: it is there
+        /**
+         * Cancels it at once (any thread): no rename can follow, and the hidden files are gone before the
+         * overlay says so. Returns false, changing nothing, when it comes too late: the images are in place.
+         */
+        synchronized boolean cancel() {
+            if (run != null && !run.cancel()) {
+                return false;
+            }
+            cancelled = true;
+            return true;
         }
 
-        /** Stops the render at once, when the window closes. */
-        void stopNow() {
-            run.cancel();
+        /** The run, opened unless the still was cancelled before: its files are made under this lock. */
+        private synchronized StillRun open() throws StillRefused {
+            checkCancelled();
+            run = StillRun.open(job.images(), List.of(), "still");
+            return run;
         }
 
         String progressLine() {
-            String step = run.writing() ? WRITING + run.percentWritten() : RENDERING + run.percentRendered();
+            StillRun opened = run;
+            if (opened == null) {
+                return RENDERING + "0 % (Enter or Esc cancels)";
+            }
+            String step = opened.writing() ? WRITING + opened.percentWritten() : RENDERING + opened.percentRendered();
             return step + " % (Enter or Esc cancels)";
         }
 
         private void run() {
             long start = System.nanoTime();
+            StillRun opened = null;
             try {
                 awaitPrevious();
-                run.open(List.of());
-                run.write(run.render(job.scene(), job.config(), StillRun.Steps.NONE), StillRun.Steps.NONE);
+                opened = open();
+                opened.write(opened.render(job.scene(), job.config(), StillRun.Steps.NONE), StillRun.Steps.NONE);
                 report(start);
             } catch (CancellationException | InterruptedIOException e) {
                 // said when it was cancelled
@@ -204,7 +216,9 @@ public final class StillRender implements AutoCloseable {
                 failed(e instanceof OutOfMemoryError ? "out of memory" : e.getMessage() != null ? e.getMessage()
                         : e.toString());
             } finally {
-                run.close(); // renamed into place, or deleted wherever its folder is now
+                if (opened != null) {
+                    opened.close(); // renamed into place, or deleted wherever its folder is now
+                }
                 ended.countDown();
                 changed.run();
             }
@@ -230,7 +244,7 @@ public final class StillRender implements AutoCloseable {
         }
 
         private void checkCancelled() {
-            if (run.cancelled()) {
+            if (cancelled) {
                 throw new CancellationException();
             }
         }

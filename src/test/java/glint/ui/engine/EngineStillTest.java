@@ -193,6 +193,36 @@ class EngineStillTest {
         assertEquals(1, out.toString().split("still: wrote ", -1).length - 1, out::toString);
     }
 
+    /**
+     * A still cancelled while the one before it is still tracing its last tile (it waits for that one to let go
+     * of its frame before it opens its files) opens none: nothing is made, then or after, and the next still is
+     * written.
+     */
+    @Test
+    void aStillCancelledBeforeItOpensItsFilesMakesNone() throws Exception {
+        Files.writeString(sceneFile, TestScenes.sphere(0.1, 0.2, 0.3) + "render: {width: 480, height: 360}\n");
+        open(Config.defaults().withSize(W, H).withSamples(64).withThreads(2).withScreenDivider(2));
+        input.command(Action.RENDER_STILL);
+        stepUntilMatches("still: rendering [1-9][0-9]? % .*"); // a tile is done: the next ones are being traced
+        input.command(Action.RENDER_STILL);
+        engine.step();
+        assertEquals("still: cancelled, nothing written", message());
+        input.command(Action.RENDER_STILL); // a new still, waiting for the cancelled one's tile
+        engine.step();
+        assertEquals("still: rendering 0 % (Enter or Esc cancels)", message());
+        input.command(Action.RENDER_STILL);
+        engine.step();
+        assertEquals("still: cancelled, nothing written", message());
+        assertEquals(List.of(), files(), "no hidden file");
+        Poll.until(() -> stillThreads() == 0, 60_000, () -> "the stills' threads end: " + stillThreads());
+        assertEquals(List.of(), files(), "none made after the cancel either");
+        assertEquals("", err.toString());
+        input.command(Action.RENDER_STILL);
+        stepUntil("still: wrote ");
+        List<Path> written = files();
+        assertEquals(1, written.size(), written::toString);
+    }
+
     /** Standard output that does not take the still's report (a full disk): the image is there, and that is said. */
     @Test
     void aStillWhoseReportCannotBePrintedSaysSo() throws Exception {
