@@ -3,7 +3,6 @@ package glint.render;
 import glint.geometry.Hit;
 import glint.geometry.Primitives;
 import glint.geometry.PrimitiveKind;
-import glint.shading.LightSample;
 import glint.shading.Optics;
 import glint.shading.Rgb;
 import glint.shading.ShadingModel;
@@ -25,22 +24,15 @@ import glint.shading.Surface;
  */
 final class InsideWalk {
 
-    /** What the walk knows of the bounce at one level, from going in until coming out. */
-    private static final class Bounce {
-        final Hit end = new Hit();
-        final Surface surface = new Surface();
-        final LightSample light = new LightSample();
-        final Rgb f = new Rgb();
-        /** The light the bounce sends back by itself. */
-        final Rgb own = new Rgb();
-        final SingleRays rays = new SingleRays();
-        /** The direction of the ray leaving the bounce: refracted out, or past the critical angle reflected. */
-        final double[] leaving = new double[3];
+    /**
+     * What the walk knows of the bounce at one level, from going in until coming out: a path vertex
+     * (its {@code sum} the light the bounce sends back by itself, its {@code refracted} the direction
+     * of the ray leaving it) and the walk's own three values.
+     */
+    private static final class Bounce extends PathVertex {
         boolean leavesThrough;
         /** The path weight of the ray that met the bounce, and what its reflected ray counts for (0: not traced). */
         double weight, keepReflected;
-        /** The radiance the bounce sends back along the ray that met it (at the level below the deepest, what the search found). */
-        final Rgb radiance = new Rgb();
     }
 
     private final WhittedIntegrator it;
@@ -78,7 +70,7 @@ final class InsideWalk {
         }
         for (int level = deepest; level <= hitsLeft; level++) {
             Bounce v = bounces[level];
-            double sumR = v.own.r, sumG = v.own.g, sumB = v.own.b;
+            double sumR = v.sum.r, sumG = v.sum.g, sumB = v.sum.b;
             SingleRays rays = v.rays;
             if (v.keepReflected > 0) {
                 double k = v.keepReflected;
@@ -125,7 +117,7 @@ final class InsideWalk {
         Bounce previous = null;
         for (int level = hitsLeft; ; level--) {
             Bounce v = bounces[level];
-            Hit end = v.end;
+            Hit end = v.hit;
             double cosEnd = kind.chordInside(index, px, py, pz, ux, uy, uz, cos, offset, end);
             if (Double.isNaN(cosEnd)) {
                 Rgb rest = it.trace(sx, sy, sz, ux, uy, uz, level, weightIn, Hit.NONE, primitive);
@@ -135,7 +127,7 @@ final class InsideWalk {
             it.countRay();
             Surface s = v.surface;
             s.setInside(end, cosEnd, it.epsilon(), material, primitive);
-            model.direct(it, s, ux, uy, uz, v.light, v.f, v.own);
+            model.direct(it, s, ux, uy, uz, v.light, v.f, v.sum);
             SingleRays rays = v.rays;
             boolean sameAngle = previous != null && cosEnd == previous.surface.cosIncident;
             if (sameAngle) {
@@ -147,7 +139,7 @@ final class InsideWalk {
             v.weight = weightIn;
             v.keepReflected = 0;
             v.leavesThrough = !Double.isNaN(bend);
-            double[] out = v.leaving;
+            double[] out = v.refracted;
             if (v.leavesThrough) {
                 Optics.refractWithBend(ux, uy, uz, s.nx, s.ny, s.nz, rays.eta, bend, out);
             } else { // past the critical angle the leaving ray reflects: keep the incoming direction
@@ -183,7 +175,7 @@ final class InsideWalk {
     /** Traces the ray leaving bounce v (at {@code level}) through the surface, or past the critical angle reflected. */
     private Rgb leave(Bounce v, int primitive, int level, double weight) {
         Surface s = v.surface;
-        double[] d = v.leaving;
+        double[] d = v.refracted;
         if (v.leavesThrough) {
             return it.trace(s.farX(), s.farY(), s.farZ(), d[0], d[1], d[2], level - 1, weight, primitive, Hit.NONE);
         }
