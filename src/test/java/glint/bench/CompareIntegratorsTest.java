@@ -2,12 +2,15 @@ package glint.bench;
 
 import static org.junit.jupiter.api.Assertions.assertEquals;
 import static org.junit.jupiter.api.Assertions.assertThrows;
+import static org.junit.jupiter.api.Assertions.assertTrue;
 
 import glint.app.Main;
 import java.io.PrintWriter;
 import java.io.StringWriter;
 import java.nio.file.Files;
 import java.nio.file.Path;
+import java.util.regex.Matcher;
+import java.util.regex.Pattern;
 import org.junit.jupiter.api.Test;
 import org.junit.jupiter.api.io.TempDir;
 
@@ -48,6 +51,7 @@ class CompareIntegratorsTest {
                 objects: [{type: sphere, center: [0, 0, 0], radius: 5, material: {type: matte}}]
                 """);
         double[] rays = new double[2];
+        String[] outputs = new String[2];
         String[] integrators = {"whitted", "path"};
         for (int i = 0; i < 2; i++) {
             StringWriter out = new StringWriter(), err = new StringWriter();
@@ -56,10 +60,23 @@ class CompareIntegratorsTest {
                     new PrintWriter(out, true), new PrintWriter(err, true));
             assertEquals(0, status, err.toString());
             rays[i] = CompareIntegrators.parse(out.toString()).raysPerFrame();
+            outputs[i] = out.toString();
         }
         // Whitted: the camera ray and one shadow ray; the path: 5 hits, a shadow ray at each, 4 rays between
-        // (the printed median and rate hold 3 to 4 digits)
-        assertEquals(2 * 40 * 30, rays[0], 0.02 * 2 * 40 * 30);
-        assertEquals(10 * 40 * 30, rays[1], 0.02 * 10 * 40 * 30);
+        assertEquals(2 * 40 * 30, rays[0], printingError(outputs[0], 2 * 40 * 30));
+        assertEquals(10 * 40 * 30, rays[1], printingError(outputs[1], 10 * 40 * 30));
+    }
+
+    /**
+     * How far the rays a frame read back from a bench's summary may be from their count, by the printing alone:
+     * the rate is the count over the median frame's unrounded time, printed to a ray a second, and the median
+     * is printed to two decimals (within 0.005 ms), so their product errs by at most rays x (0.005 / median) and half a ray a second
+     * times the median.
+     */
+    private static double printingError(String benchOutput, double rays) {
+        Matcher m = Pattern.compile("median_ms=([0-9.]+)").matcher(benchOutput);
+        assertTrue(m.find(), benchOutput);
+        double medianMillis = Double.parseDouble(m.group(1));
+        return rays * 0.005 / (medianMillis - 0.005) + 0.5 * medianMillis / 1000;
     }
 }
