@@ -26,8 +26,8 @@ class PackageLayersTest {
 
     /** Bottom to top; a package may import only those before it. */
     static final List<String> LAYERS = List.of(
-            "math", "scene", "input", "geometry", "image", "shading", "accel", "registry", "scenefile", "config",
-            "render", "still",
+            "math", "scene", "input", "geometry", "image", "shading", "accel", "registry", "render", "scenefile",
+            "config", "still",
             "ui.input", "ui.frames", "ui.screen", "ui.view", "ui.scenes", "ui.capture", "ui.engine", "ui.swing",
             "app");
 

@@ -1,6 +1,6 @@
 package glint.bench;
 
-import glint.config.LightTransport;
+import glint.render.LightTransport;
 import glint.image.FrameBuffer;
 import glint.input.InputException;
 import glint.scenefile.SceneLoader;

@@ -1,7 +1,7 @@
 package glint.bench;
 
 import glint.config.Config;
-import glint.config.Shading;
+import glint.render.Shading;
 import glint.render.RenderSettings;
 import java.io.IOException;
 import java.nio.charset.StandardCharsets;

@@ -1,6 +1,6 @@
 package glint.study;
 
-import glint.config.Shading;
+import glint.render.Shading;
 import glint.image.FrameBuffer;
 import glint.render.RenderScene;
 import glint.render.RenderSettings;

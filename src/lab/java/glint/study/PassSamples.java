@@ -1,7 +1,7 @@
 package glint.study;
 
-import glint.config.LightTransport;
-import glint.config.Shading;
+import glint.render.LightTransport;
+import glint.render.Shading;
 import glint.image.FrameBuffer;
 import glint.input.InputException;
 import glint.render.RenderScene;

@@ -1,8 +1,8 @@
 package glint.study;
 
 import glint.config.Config;
-import glint.config.LightTransport;
-import glint.config.Shading;
+import glint.render.LightTransport;
+import glint.render.Shading;
 import glint.render.RenderSettings;
 import glint.render.RenderSettings.GlassFresnel;
 import glint.render.RenderSettings.Pruning;

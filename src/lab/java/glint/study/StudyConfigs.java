@@ -1,6 +1,6 @@
 package glint.study;
 
-import glint.config.Shading;
+import glint.render.Shading;
 import glint.render.RenderSettings.GlassFresnel;
 import java.util.ArrayList;
 import java.util.LinkedHashSet;

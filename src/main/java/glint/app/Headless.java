@@ -68,7 +68,7 @@ final class Headless {
         Scene scene = view.apply(SceneLoader.load(scenePath, settings.limits().scene()), scenePath.toString());
         Config config = flags.effective(settings, scene.render());
         progress.step("preparing the scene", null);
-        RenderScene compiled = RenderScene.compile(scene, RenderSettings.of(config));
+        RenderScene compiled = RenderScene.compile(scene, config.renderSettings());
         long start = System.nanoTime();
         still.write(still.render(compiled, config, progress::step), progress::step);
         long elapsed = System.nanoTime() - start;
@@ -94,7 +94,7 @@ final class Headless {
         Scene loaded = SceneLoader.load(scenePath, settings.limits().scene());
         Scene scene = view.apply(loaded, scenePath.toString());
         Config config = flags.effective(settings, scene.render());
-        RenderScene compiled = RenderScene.compile(scene, RenderSettings.of(config));
+        RenderScene compiled = RenderScene.compile(scene, config.renderSettings());
         try {
             MemoryCheck.check(config, MemoryCheck.FRAME_BYTES_PER_PIXEL, Runtime.getRuntime());
         } catch (StillRefused e) {

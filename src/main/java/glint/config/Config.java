@@ -1,5 +1,8 @@
 package glint.config;
 
+import glint.render.LightTransport;
+import glint.render.RenderSettings;
+import glint.render.Shading;
 import java.util.function.Consumer;
 
 /**
@@ -56,6 +59,11 @@ public record Config(boolean debug, double epsilon, double displayScale, int scr
     public static Config defaults() {
         return new Config(false, 1e-9, 2, 8, 800, 600, 16, "Glint", "scenes/default.yaml",
                 0, Shading.COOK_TORRANCE, 4, 1e-2, 2.0, 60, 30, Limits.DEFAULT);
+    }
+
+    /** What the renderer reads of this config: the shading model, depth, pruning, offset and integrator. */
+    public RenderSettings renderSettings() {
+        return new RenderSettings(shading, recursionMax, minWeight, epsilon).withTransport(transport);
     }
 
     /** Threads actually used: {@code threads}, or one per available core when it is 0. */

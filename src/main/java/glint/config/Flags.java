@@ -1,5 +1,7 @@
 package glint.config;
 
+import glint.render.LightTransport;
+import glint.render.Shading;
 import glint.input.InputException;
 import glint.input.Suggestions;
 import glint.scene.RenderBlock;

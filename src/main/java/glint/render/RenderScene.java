@@ -2,7 +2,6 @@ package glint.render;
 
 import glint.accel.Aggregate;
 import glint.accel.AggregatePolicy;
-import glint.config.Shading;
 import glint.geometry.PrimitiveKind;
 import glint.geometry.Primitives;
 import glint.registry.LightType;

@@ -1,9 +1,5 @@
 package glint.render;
 
-import glint.config.Config;
-import glint.config.LightTransport;
-import glint.config.Shading;
-
 /**
  * What the tracer needs to know besides the scene.
  *
@@ -31,11 +27,6 @@ public record RenderSettings(Shading shading, int recursionMax, double minWeight
 
     public RenderSettings(Shading shading, int recursionMax, double minWeight, double epsilon) {
         this(shading, recursionMax, minWeight, epsilon, GlassFresnel.EXACT, Pruning.ROULETTE, LightTransport.WHITTED);
-    }
-
-    public static RenderSettings of(Config config) {
-        return new RenderSettings(config.shading(), config.recursionMax(), config.minWeight(), config.epsilon())
-                .withTransport(config.transport());
     }
 
     public RenderSettings withGlassFresnel(GlassFresnel fresnel) {

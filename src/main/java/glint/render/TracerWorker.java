@@ -3,7 +3,6 @@ package glint.render;
 import glint.accel.AggregatePolicy;
 import glint.accel.Candidates;
 import glint.accel.Frustum;
-import glint.config.LightTransport;
 import glint.image.FrameBuffer;
 
 /**

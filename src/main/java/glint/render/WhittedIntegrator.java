@@ -1,6 +1,5 @@
 package glint.render;
 
-import glint.config.Shading;
 import glint.geometry.Hit;
 import glint.shading.CookTorrance;
 import glint.shading.Lights;

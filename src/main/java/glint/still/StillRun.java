@@ -1,7 +1,7 @@
 package glint.still;
 
 import glint.config.Config;
-import glint.config.LightTransport;
+import glint.render.LightTransport;
 import glint.image.FrameBuffer;
 import glint.image.ImageWriter;
 import glint.image.PartFile;

@@ -3,6 +3,7 @@ package glint.config;
 import static org.junit.jupiter.api.Assertions.assertEquals;
 import static org.junit.jupiter.api.Assertions.assertNotEquals;
 
+import glint.render.Shading;
 import org.junit.jupiter.api.Test;
 
 /** Each {@code with...} copy changes its own fields and keeps every other one. */

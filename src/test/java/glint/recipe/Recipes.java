@@ -1,6 +1,6 @@
 package glint.recipe;
 
-import glint.config.Shading;
+import glint.render.Shading;
 import glint.image.FrameBuffer;
 import glint.input.InputException;
 import glint.registry.Registry;

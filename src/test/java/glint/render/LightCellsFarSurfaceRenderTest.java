@@ -3,7 +3,7 @@ package glint.render;
 import static org.junit.jupiter.api.Assertions.assertArrayEquals;
 
 import glint.accel.FlatList;
-import glint.config.Shading;
+import glint.render.Shading;
 import glint.image.FrameBuffer;
 import glint.scene.Scene;
 import org.junit.jupiter.api.Test;

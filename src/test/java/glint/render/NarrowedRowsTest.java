@@ -4,7 +4,7 @@ import static org.junit.jupiter.api.Assertions.assertArrayEquals;
 import static org.junit.jupiter.api.Assertions.assertEquals;
 import static org.junit.jupiter.api.Assertions.assertTrue;
 
-import glint.config.Shading;
+import glint.render.Shading;
 import glint.accel.Candidates;
 import glint.accel.FlatList;
 import glint.accel.Frustum;

@@ -2,7 +2,7 @@ package glint.render;
 
 import static org.junit.jupiter.api.Assertions.assertEquals;
 
-import glint.config.Shading;
+import glint.render.Shading;
 import glint.image.FrameBuffer;
 import org.junit.jupiter.api.Test;
 

@@ -1,6 +1,6 @@
 package glint.render;
 
-import glint.config.Shading;
+import glint.render.Shading;
 import glint.image.FrameBuffer;
 import glint.input.InputException;
 import glint.math.Vector3d;

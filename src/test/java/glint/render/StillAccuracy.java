@@ -48,7 +48,7 @@ final class StillAccuracy {
 
     static Result measure(Scene scene, Config config, RenderSettings.Pruning pruning, int width, int height,
                           int threads) {
-        RenderSettings shipped = RenderSettings.of(config).withPruning(pruning);
+        RenderSettings shipped = config.renderSettings().withPruning(pruning);
         RenderSettings converged = new RenderSettings(config.shading(), CONVERGED_DEPTH, CONVERGED_MIN_WEIGHT,
                 config.epsilon()).withPruning(RenderSettings.Pruning.CUTOFF);
         FrameBuffer a = new FrameBuffer(width, height);

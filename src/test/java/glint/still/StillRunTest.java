@@ -7,8 +7,8 @@ import static org.junit.jupiter.api.Assertions.assertThrows;
 import static org.junit.jupiter.api.Assertions.assertTrue;
 
 import glint.config.Config;
-import glint.config.LightTransport;
-import glint.config.Shading;
+import glint.render.LightTransport;
+import glint.render.Shading;
 import glint.image.FrameBuffer;
 import glint.image.PfmReader;
 import glint.render.RenderScene;
@@ -47,7 +47,7 @@ class StillRunTest {
     private final Config config = Config.defaults().withSize(16, 12).withSamples(1).withThreads(2);
 
     private RenderScene scene() throws Exception {
-        return RenderScene.compile(SceneLoader.parse("ball.yaml", SCENE), RenderSettings.of(config));
+        return RenderScene.compile(SceneLoader.parse("ball.yaml", SCENE), config.renderSettings());
     }
 
     private List<String> files() throws IOException {

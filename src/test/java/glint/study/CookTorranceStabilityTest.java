@@ -3,7 +3,7 @@ package glint.study;
 import static org.junit.jupiter.api.Assertions.assertEquals;
 import static org.junit.jupiter.api.Assertions.assertTrue;
 
-import glint.config.Shading;
+import glint.render.Shading;
 import glint.image.FrameBuffer;
 import glint.input.InputException;
 import glint.render.RenderScene;

@@ -64,7 +64,7 @@ class MetricsTest {
     @Test
     void aMethodIsAnIntegratorWithItsDepthAndSamples() {
         StudyConfig path = StudyConfig.path(64);
-        assertEquals(glint.config.LightTransport.PATH, path.settings().transport());
+        assertEquals(glint.render.LightTransport.PATH, path.settings().transport());
         assertEquals(StudyConfig.shipped().depth(), path.settings().recursionMax());
         assertEquals("path d16 s64", path.label());
         assertEquals("path s64", path.methodLabel());
@@ -73,7 +73,7 @@ class MetricsTest {
         assertEquals("ray casting s4", StudyConfig.whitted(1, 4).methodLabel());
         assertEquals(StudyConfig.Method.RAY_CASTING, StudyConfig.whitted(1, 4).method());
         assertEquals("Whitted d8 s4", StudyConfig.whitted(8, 4).methodLabel());
-        assertEquals(glint.config.LightTransport.WHITTED, StudyConfig.whitted(8, 4).settings().transport());
+        assertEquals(glint.render.LightTransport.WHITTED, StudyConfig.whitted(8, 4).settings().transport());
         assertEquals(64, StudyConfig.pathReference(4096).depth());
         assertEquals("path s4096 d64", StudyConfig.pathReference(4096).methodLabel());
     }

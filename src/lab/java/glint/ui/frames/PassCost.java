@@ -34,7 +34,7 @@ public final class PassCost {
         int samples = 16;
         Config config = Config.defaults().withSize(width, height).withSamples(samples);
         Scene scene = SceneLoader.load(scenePath);
-        RenderScene compiled = RenderScene.compile(scene, RenderSettings.of(config));
+        RenderScene compiled = RenderScene.compile(scene, config.renderSettings());
         int threads = config.effectiveThreads();
         double[] headless = new double[rounds];
         double[] single = new double[rounds];

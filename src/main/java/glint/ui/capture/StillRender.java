@@ -2,7 +2,7 @@ package glint.ui.capture;
 
 import glint.config.Config;
 import glint.config.JarCommand;
-import glint.config.LightTransport;
+import glint.render.LightTransport;
 import glint.render.RenderScene;
 import glint.scene.Camera;
 import glint.still.StillRefused;

@@ -1,6 +1,6 @@
 package glint.ui.engine;
 
-import glint.config.LightTransport;
+import glint.render.LightTransport;
 import glint.ui.frames.FrameRenderer;
 import glint.ui.frames.Refinement;
 import glint.ui.scenes.SceneSource;

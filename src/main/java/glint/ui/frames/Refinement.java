@@ -1,7 +1,7 @@
 package glint.ui.frames;
 
 import glint.config.Config;
-import glint.config.LightTransport;
+import glint.render.LightTransport;
 
 /**
  * How far the window refines a view at rest, and in which pattern of samples. Whitted's refinement

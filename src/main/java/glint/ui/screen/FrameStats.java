@@ -1,7 +1,7 @@
 package glint.ui.screen;
 
-import glint.config.LightTransport;
-import glint.config.Shading;
+import glint.render.LightTransport;
+import glint.render.Shading;
 
 /**
  * What the overlay shows about the frame on screen and the engine's state.

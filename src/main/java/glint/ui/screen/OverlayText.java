@@ -1,6 +1,6 @@
 package glint.ui.screen;
 
-import glint.config.LightTransport;
+import glint.render.LightTransport;
 import java.util.ArrayList;
 import java.util.List;
 import java.util.Locale;

@@ -2,8 +2,8 @@ package glint.ui.view;
 
 import glint.config.Config;
 import glint.config.Flags;
-import glint.config.LightTransport;
-import glint.config.Shading;
+import glint.render.LightTransport;
+import glint.render.Shading;
 import glint.input.InputException;
 import glint.render.RenderSettings;
 import glint.scene.Scene;
@@ -85,7 +85,7 @@ public final class ViewSettings {
 
     /** What the tracer renders with now. */
     public RenderSettings render() {
-        return RenderSettings.of(still());
+        return still().renderSettings();
     }
 
     /** The scene's settings with the shading, integrator and depth on screen. */

@@ -9,7 +9,7 @@ import static org.junit.jupiter.api.Assertions.assertTrue;
 import glint.config.Config;
 import glint.config.Flags;
 import glint.config.Limits;
-import glint.config.Shading;
+import glint.render.Shading;
 import glint.input.InputException;
 import glint.math.Vector3d;
 import glint.scene.Camera;

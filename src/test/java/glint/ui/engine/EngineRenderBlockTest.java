@@ -4,7 +4,7 @@ import static org.junit.jupiter.api.Assertions.assertEquals;
 
 import glint.config.Config;
 import glint.config.Flags;
-import glint.config.Shading;
+import glint.render.Shading;
 import glint.input.InputException;
 import glint.ui.FakeClock;
 import glint.ui.RecordingPresenter;

@@ -7,7 +7,7 @@ import static org.junit.jupiter.api.Assertions.assertNotEquals;
 import static org.junit.jupiter.api.Assertions.assertTrue;
 
 import glint.config.Config;
-import glint.config.Shading;
+import glint.render.Shading;
 import glint.image.FrameBuffer;
 import glint.image.ImageWriter;
 import glint.input.InputException;
@@ -110,7 +110,7 @@ class EngineTest {
         Scene scene = SceneLoader.load(sceneFile);
         FrameBuffer still = new FrameBuffer(W, H);
         try (Tracer tracer = new Tracer(2)) {
-            tracer.render(RenderScene.compile(scene, RenderSettings.of(config)), still, 4, 0, 8);
+            tracer.render(RenderScene.compile(scene, config.renderSettings()), still, 4, 0, 8);
         }
         BufferedImage expected = ImageWriter.toImage(still);
         int differing = 0;

@@ -6,8 +6,8 @@ import static org.junit.jupiter.api.Assertions.assertTrue;
 
 import glint.config.Config;
 import glint.config.Flags;
-import glint.config.LightTransport;
-import glint.config.Shading;
+import glint.render.LightTransport;
+import glint.render.Shading;
 import glint.image.FrameBuffer;
 import glint.image.Srgb;
 import glint.input.InputException;
@@ -153,7 +153,7 @@ class PathRefinementTest {
 
     /** The window's image is the still of {@code samples} path samples, to an 8-bit level. */
     private void assertSameAsTheStill(BufferedImage shown, int samples) {
-        RenderSettings path = RenderSettings.of(config.withTransport(LightTransport.PATH));
+        RenderSettings path = config.withTransport(LightTransport.PATH).renderSettings();
         FrameBuffer still = new FrameBuffer(W, H);
         try (Tracer tracer = new Tracer(2)) {
             tracer.render(RenderScene.compile(scene, path).withCamera(view.camera()), still, samples, 0, 3);

@@ -40,7 +40,7 @@ class RefinePacingTest {
     @Test
     void passesInBatchesAverageToTheStillImage() throws Exception {
         RenderScene scene = RenderScene.compile(SceneLoader.parse("s.yaml", TestScenes.sphere(0.1, 0.2, 0.3)),
-                RenderSettings.of(Config.defaults()));
+                Config.defaults().renderSettings());
         int w = 40, h = 30, samples = 16;
         FrameBuffer still = new FrameBuffer(w, h);
         try (Tracer tracer = new Tracer(2)) {

@@ -92,7 +92,7 @@ class CameraToolsTest {
                 objects:
                   - {type: sphere, center: [0, 1, 0], radius: 1}
                 """);
-        RenderScene compiled = RenderScene.compile(scene, RenderSettings.of(Config.defaults()));
+        RenderScene compiled = RenderScene.compile(scene, Config.defaults().renderSettings());
         Vector3d centre = OrbitPivot.pick(compiled, scene.camera(), 49.5, 39.5, 100, 80); // the middle of 100x80
         assertVector(new Vector3d(0, 1, -1), centre, 1e-9);
         Vector3d miss = OrbitPivot.pick(compiled, scene.camera(), 0, 0, 100, 80);
@@ -106,7 +106,7 @@ class CameraToolsTest {
                 objects:
                   - {type: plane, point: [0, 0, 10], normal: [0, 0, -1]}
                 """);
-        RenderScene compiled = RenderScene.compile(scene, RenderSettings.of(Config.defaults()));
+        RenderScene compiled = RenderScene.compile(scene, Config.defaults().renderSettings());
         PinholeCamera camera = new PinholeCamera(scene.camera());
         java.util.SplittableRandom random = new java.util.SplittableRandom(46);
         for (int trial = 0; trial < 50; trial++) {

@@ -281,8 +281,7 @@ class WindowStudioTest {
         Camera before = window.engine().camera();
         int x = W / 2 - 20;
         int y = H / 2 + 10;
-        RenderScene compiled = RenderScene.compile(window.engine().scene(), glint.render.RenderSettings.of(
-                Config.defaults()));
+        RenderScene compiled = RenderScene.compile(window.engine().scene(), Config.defaults().renderSettings());
         Vector3d pivot = OrbitPivot.pick(compiled, before, x, y, W, H);
         assertTrue(pivot.sub(new Vector3d(0, 1, 0)).length() < 1 + 1e-9, "on the ball: " + pivot);
         Point start = onScreen(x, y);

@@ -7,9 +7,9 @@ import static org.junit.jupiter.api.Assertions.assertTrue;
 
 import glint.config.Config;
 import glint.config.Flags;
-import glint.config.LightTransport;
+import glint.render.LightTransport;
 import glint.config.Limits;
-import glint.config.Shading;
+import glint.render.Shading;
 import glint.input.InputException;
 import glint.math.Quaternion;
 import glint.math.Vector3d;

@@ -1,4 +1,4 @@
-package glint.config;
+package glint.render;
 
 import java.util.List;
 

@@ -1,4 +1,4 @@
-package glint.config;
+package glint.render;
 
 /** The shading models of docs/conventions.md ("Shading models"). */
 public enum Shading {
