@@ -5,6 +5,7 @@ import glint.shading.Bsdf;
 import glint.shading.BsdfSample;
 import glint.shading.DirectLight;
 import glint.shading.LightSample;
+import glint.shading.Mis;
 import glint.shading.Rgb;
 import glint.shading.Surface;
 
@@ -13,8 +14,10 @@ import glint.shading.Surface;
  * hit, a path of surface hits, each lit by every light through a shadow ray where its material has a
  * lobe that is not a delta (next-event estimation), and continued along a direction its BSDF samples;
  * a ray that escapes brings the background's radiance, whatever its depth, so a sky lights the scene.
- * The path ends at {@code recursion_max} hits, where no direction is sampled, or by Russian roulette
- * on its throughput. Ambient light plays no part. Allocates nothing per ray.
+ * A light with a size is found both by its sample and by the BSDF's, each weighed by the power
+ * heuristic (multiple importance sampling); past the last hit a BSDF sample still brings what it
+ * finds of such a light, the other half of the light the last hit's sample counted. The path ends
+ * at {@code recursion_max} hits, where no direction is sampled, or by Russian roulette on its throughput. Ambient light plays no part. Allocates nothing per ray.
  */
 final class PathIntegrator extends Integrator {
 
@@ -25,6 +28,11 @@ final class PathIntegrator extends Integrator {
     static final int ROULETTE_FROM = 5;
     /** Random dimensions a vertex uses: the direction (a pair), the lobe and the roulette. */
     private static final int DIMENSIONS_PER_VERTEX = 3;
+    /**
+     * The first dimension of the lights' samples (a pair a light a vertex), past those of any path's
+     * directions (3 x 2^20), so that adding a light with a size leaves the other numbers as they were.
+     */
+    private static final int LIGHT_DIMENSIONS = 3 << 20;
 
     private final Hit hit = new Hit();
     private final Surface surface = new Surface();
@@ -34,6 +42,8 @@ final class PathIntegrator extends Integrator {
     private final Rgb lit = new Rgb();
     private final Rgb radiance = new Rgb();
     private final PathSamples random = new PathSamples();
+    /** The vertex being lit, from 1 (the camera ray's hit): which numbers its lights' samples take. */
+    private int vertex;
 
     @Override
     void prepared(RenderSettings settings) {
@@ -45,10 +55,16 @@ final class PathIntegrator extends Integrator {
     }
 
     @Override
+    PathSamples lightNumbers(int light) {
+        random.pair(LIGHT_DIMENSIONS + (vertex - 1) * lights.count() + light);
+        return random;
+    }
+
+    @Override
     Rgb shadeCamera(int primitive, double t, double ox, double oy, double oz, double dx, double dy, double dz,
                     int hitsLeft) {
         if (primitive == Hit.NONE) {
-            radiance.set(scene.backgroundR, scene.backgroundG, scene.backgroundB);
+            escaped(dx, dy, dz, f, radiance);
             return radiance;
         }
         primitives.record(hit, primitive, t);
@@ -61,34 +77,44 @@ final class PathIntegrator extends Integrator {
 
     /**
      * The radiance along the ray from o along d whose hit is in {@link #hit}, into {@link #radiance}:
-     * the path from there, of at most {@code hitsLeft} hits.
+     * the path from there, of at most {@code hitsLeft} hits. Light a BSDF sample meets (a light's
+     * body, a sun) counts by the power heuristic against the light's own sample from the vertex it
+     * left, as that sample counts against the BSDF's ({@link DirectLight#sum}).
      */
     private void follow(double ox, double oy, double oz, double dx, double dy, double dz, int hitsLeft) {
         double sumR = 0, sumG = 0, sumB = 0;
         double throughputR = 1, throughputG = 1, throughputB = 1;
         Surface s = surface;
         BsdfSample next = sampled;
-        for (int vertex = 1; ; vertex++) {
+        double emittedWeight = 1; // of light the ray meets: 1 for the camera ray and after a delta lobe
+        for (vertex = 1; ; vertex++) {
             describe(hit, ox, oy, oz, dx, dy, dz, s);
             Bsdf bsdf = materials.bsdf(s.material);
-            if (materials.emits(s.material)) {
+            boolean pastLastHit = vertex > hitsLeft;
+            if (materials.emits(s.material) && (!pastLastHit || scene.lightOf[hit.primitive] >= 0)) {
                 bsdf.emitted(materials, s, f);
-                sumR += throughputR * f.r;
-                sumG += throughputG * f.g;
-                sumB += throughputB * f.b;
+                double k = emittedWeight;
+                sumR += throughputR * f.r * k;
+                sumG += throughputG * f.g * k;
+                sumB += throughputB * f.b * k;
+            }
+            if (pastLastHit) {
+                break;
             }
             if (!materials.isDelta(s.material)) {
-                DirectLight.sum(this, lights, materials, bsdf, s, -dx, -dy, -dz, light, f, lit);
+                DirectLight.sum(this, lights, materials, bsdf, s, -dx, -dy, -dz, true, light, f, lit);
                 sumR += throughputR * lit.r;
                 sumG += throughputG * lit.g;
                 sumB += throughputB * lit.b;
             }
-            if (vertex >= hitsLeft) {
+            // past the last hit only a light with a size is still met: the BSDF's half of its light
+            if (vertex >= hitsLeft && (scene.lightsWithSize == 0 || materials.isDelta(s.material))) {
                 break;
             }
             int dimension = (vertex - 1) * DIMENSIONS_PER_VERTEX;
             random.pair(dimension);
-            if (!bsdf.sample(materials, s, -dx, -dy, -dz, random.u1, random.u2, random.single(dimension + 1), next)) {
+            if (!bsdf.sample(materials, s, -dx, -dy, -dz, random.u1, random.u2, random.single(dimension + 1), next)
+                    || vertex >= hitsLeft && next.delta) {
                 break;
             }
             throughputR *= next.weightR;
@@ -111,12 +137,51 @@ final class PathIntegrator extends Integrator {
             dz = next.wiZ;
             if (!nearest(ox, oy, oz, dx, dy, dz, next.transmitted ? s.skipFar : s.skipNear,
                     next.transmitted ? s.insideFar : s.insideNear, hit)) {
-                sumR += throughputR * scene.backgroundR;
-                sumG += throughputG * scene.backgroundG;
-                sumB += throughputB * scene.backgroundB;
+                escapedFrom(s, next, dx, dy, dz, vertex < hitsLeft);
+                sumR += throughputR * lit.r;
+                sumG += throughputG * lit.g;
+                sumB += throughputB * lit.b;
                 break;
             }
+            emittedWeight = next.delta ? 1 : weightOfLightMet(s, next, hit.primitive, dx, dy, dz);
         }
         radiance.set(sumR, sumG, sumB);
+    }
+
+    /**
+     * The weight of the light of a light's body that the BSDF sample {@code next} from surface s
+     * meets at primitive {@code primitive}: the power heuristic of the BSDF's density against the
+     * light's for that direction; 1 for a primitive that is no light's body (its glow has no sample).
+     */
+    private double weightOfLightMet(Surface s, BsdfSample next, int primitive, double dx, double dy, double dz) {
+        int light = scene.lightOf[primitive];
+        if (light < 0) {
+            return 1;
+        }
+        return Mis.powerHeuristic(next.pdf, lights.pdf(light, s.px, s.py, s.pz, dx, dy, dz));
+    }
+
+    /**
+     * The radiance the BSDF sample {@code next} from surface s brings as it escapes the scene along d,
+     * into {@link #lit}: the background where {@code background} says (not past the last hit), and
+     * each light at infinity it sees (a sun's disc) by the power heuristic against that light's
+     * sample (1 after a delta lobe).
+     */
+    private void escapedFrom(Surface s, BsdfSample next, double dx, double dy, double dz, boolean background) {
+        double r = 0, g = 0, b = 0;
+        if (background) {
+            r = scene.backgroundR;
+            g = scene.backgroundG;
+            b = scene.backgroundB;
+        }
+        for (int k = 0, n = lights.countAtInfinity(); k < n; k++) {
+            int i = lights.atInfinity(k);
+            lights.arriving(i, dx, dy, dz, f);
+            double w = next.delta ? 1 : Mis.powerHeuristic(next.pdf, lights.pdf(i, s.px, s.py, s.pz, dx, dy, dz));
+            r += w * f.r;
+            g += w * f.g;
+            b += w * f.b;
+        }
+        lit.set(r, g, b);
     }
 }

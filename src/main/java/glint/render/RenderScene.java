@@ -13,10 +13,13 @@ import glint.scene.Material;
 import glint.scene.Scene;
 import glint.scene.SceneObject;
 import glint.scene.Shape;
+import glint.shading.LampBody;
 import glint.shading.Lights;
 import glint.shading.Materials;
 import java.util.ArrayList;
+import java.util.IdentityHashMap;
 import java.util.List;
+import java.util.Map;
 import java.util.function.Function;
 
 /**
@@ -25,6 +28,9 @@ import java.util.function.Function;
  * Immutable; shared by all render threads.
  */
 public final class RenderScene {
+
+    /** The surface of every light's body. */
+    private static final LampBody LAMP_BODY = new LampBody();
 
     final RenderSettings settings;
     final Primitives primitives;
@@ -36,6 +42,10 @@ public final class RenderScene {
     final Aggregate[] shadowAggregate;
     /** Per primitive: its material's number. */
     final int[] materialOf;
+    /** Per primitive: the number of the light whose body it is, or -1. */
+    final int[] lightOf;
+    /** How many lights have a size (are not delta lights): a BSDF sample may meet them. */
+    final int lightsWithSize;
     final Materials materials;
     final Lights lights;
     /**
@@ -51,22 +61,59 @@ public final class RenderScene {
     private RenderScene(Scene scene, RenderSettings settings, Registry registry,
                         Function<Primitives, Aggregate> aggregateOf, boolean lightCells) {
         this.settings = settings;
+        List<LightType.Compiled> compiledLights = new ArrayList<>();
+        for (Light light : scene.lights()) {
+            compiledLights.add(registry.typeOf(light).compile(light));
+        }
+        // the scene's objects, then the lights' bodies, each light's with its number
+        List<SceneObject> objects = new ArrayList<>(scene.objects());
+        Map<SceneObject, Integer> bodyOf = new IdentityHashMap<>();
+        for (int i = 0; i < compiledLights.size(); i++) {
+            Shape body = compiledLights.get(i).body();
+            if (body != null) {
+                SceneObject o = new SceneObject(body, null);
+                objects.add(o);
+                bodyOf.put(o, i);
+            }
+        }
         List<SceneObject> inOrder = new ArrayList<>(); // kind by kind, in the registry's order
-        primitives = new Primitives(kinds(scene, registry, inOrder));
+        primitives = new Primitives(kinds(objects, registry, inOrder));
         aggregate = aggregateOf.apply(primitives);
         List<Material> materialList = new ArrayList<>();
         materialOf = new int[inOrder.size()];
+        lightOf = new int[inOrder.size()];
         for (int p = 0; p < materialOf.length; p++) {
-            materialOf[p] = indexOf(materialList, inOrder.get(p).material());
+            Integer light = bodyOf.get(inOrder.get(p));
+            lightOf[p] = light == null ? -1 : light;
+            materialOf[p] = light == null ? indexOf(materialList, inOrder.get(p).material()) : -1;
         }
-        materials = Materials.of(materialList.stream().map(m -> parameters(registry, m)).toList(),
-                settings.glassFresnel() == RenderSettings.GlassFresnel.EXACT);
+        List<Materials.Parameters> parameters = new ArrayList<>(materialList.stream()
+                .map(m -> parameters(registry, m)).toList());
+        int[] bodyMaterial = new int[compiledLights.size()];
+        for (int i = 0; i < compiledLights.size(); i++) {
+            if (compiledLights.get(i).body() != null) {
+                bodyMaterial[i] = parameters.size();
+                parameters.add(new Materials.Parameters(LAMP_BODY, compiledLights.get(i).bodyRadiance(), 0, 0, 0, 0, 1,
+                        0));
+            }
+        }
+        for (int p = 0; p < materialOf.length; p++) {
+            if (lightOf[p] >= 0) {
+                materialOf[p] = bodyMaterial[lightOf[p]];
+            }
+        }
+        materials = Materials.of(parameters, settings.glassFresnel() == RenderSettings.GlassFresnel.EXACT);
         shadowPass = new double[materialOf.length];
         for (int p = 0; p < materialOf.length && settings.shading() == Shading.PHONG; p++) {
             int m = materialOf[p];
             shadowPass[p] = materials.bsdf(m).transmits() ? materials.kt(m) : 0;
         }
-        lights = Lights.of(scene.lights().stream().map(light -> compiled(registry.typeOf(light), light)).toList());
+        lights = Lights.of(compiledLights.stream().map(LightType.Compiled::light).toList());
+        int withSize = 0;
+        for (int i = 0; i < lights.count(); i++) {
+            withSize += lights.isDelta(i) ? 0 : 1;
+        }
+        lightsWithSize = withSize;
         shadowAggregate = new Aggregate[lights.count()];
         for (int i = 0, points = 0; i < shadowAggregate.length; i++) {
             shadowAggregate[i] = lightCells && lights.atPoint(i) ? AggregatePolicy.forPointLight(aggregate, points++,
@@ -88,6 +135,8 @@ public final class RenderScene {
         aggregate = base.aggregate;
         shadowAggregate = base.shadowAggregate;
         materialOf = base.materialOf;
+        lightOf = base.lightOf;
+        lightsWithSize = base.lightsWithSize;
         materials = base.materials;
         lights = base.lights;
         shadowPass = base.shadowPass;
@@ -139,11 +188,12 @@ public final class RenderScene {
      * The scene's primitives kind by kind, one kind per shape type of the registry (in its order);
      * each primitive's object, in that order, is added to {@code inOrder}.
      */
-    private static List<PrimitiveKind> kinds(Scene scene, Registry registry, List<SceneObject> inOrder) {
+    private static List<PrimitiveKind> kinds(List<SceneObject> objects, Registry registry,
+                                             List<SceneObject> inOrder) {
         List<PrimitiveKind> kinds = new ArrayList<>();
         for (ShapeType<?> type : registry.shapes()) {
             List<Shape> shapes = new ArrayList<>();
-            for (SceneObject o : scene.objects()) {
+            for (SceneObject o : objects) {
                 if (type.holds(o.shape())) {
                     shapes.add(o.shape());
                     for (int k = type.primitives(o.shape()); k > 0; k--) {
@@ -153,7 +203,7 @@ public final class RenderScene {
             }
             kinds.add(type.compile(shapes));
         }
-        for (SceneObject o : scene.objects()) {
+        for (SceneObject o : objects) {
             if (registry.shapes().stream().noneMatch(type -> type.holds(o.shape()))) {
                 throw new IllegalArgumentException("no primitive kind compiles " + o.shape().getClass().getSimpleName());
             }
@@ -164,11 +214,6 @@ public final class RenderScene {
     private static Materials.Parameters parameters(Registry registry, Material m) {
         return new Materials.Parameters(registry.material(m.type()).bsdf(), m.color(), m.kd(), m.ks(), m.kt(), m.shininess(), m.ior(),
                 m.roughness());
-    }
-
-    private static Lights.Light compiled(LightType<?> type, Light light) {
-        return new Lights.Light(type.sampler(), type.atPoint(), type.vectorOf(light),
-                light.color().scale(light.intensity()));
     }
 
     private static int indexOf(List<Material> materials, Material material) {

@@ -32,6 +32,15 @@ final class WhittedIntegrator extends Integrator implements ShadingContext {
 
     // the camera ray whose path is being traced, which seeds its random decisions, and how many it made
     private int pathPixel, pathFrame, pathSample, pathDraws;
+    /**
+     * The numbers of the samples of lights with a size along the path, each stratified over the
+     * pixel's samples: the k-th light sample of the path takes dimension k, so the camera ray's
+     * hit (whose lights are sampled first) sees its lights' cones evenly covered by the pixel's samples.
+     */
+    private final PathSamples lightSamples = new PathSamples();
+    private int lightDraws;
+    /** Scratch: a light at infinity seen by an escaping ray. */
+    private final Rgb arriving = new Rgb();
 
     @Override
     void prepared(RenderSettings settings) {
@@ -55,6 +64,14 @@ final class WhittedIntegrator extends Integrator implements ShadingContext {
         pathFrame = frameIndex;
         pathSample = sample;
         pathDraws = 0;
+        lightSamples.begin(pixelIndex, frameIndex, sample, samples);
+        lightDraws = 0;
+    }
+
+    @Override
+    PathSamples lightNumbers(int light) {
+        lightSamples.pair(lightDraws++);
+        return lightSamples;
     }
 
     /**
@@ -86,7 +103,7 @@ final class WhittedIntegrator extends Integrator implements ShadingContext {
               int skip, int inside) {
         PathVertex v = vertices[hitsLeft];
         if (!nearest(ox, oy, oz, dx, dy, dz, skip, inside, v.hit)) {
-            v.radiance.set(scene.backgroundR, scene.backgroundG, scene.backgroundB);
+            escaped(dx, dy, dz, arriving, v.radiance);
             return v.radiance;
         }
         return shadeHit(v, ox, oy, oz, dx, dy, dz, hitsLeft, weight);
@@ -98,7 +115,7 @@ final class WhittedIntegrator extends Integrator implements ShadingContext {
                     int hitsLeft) {
         PathVertex v = vertices[hitsLeft];
         if (primitive == Hit.NONE) {
-            v.radiance.set(scene.backgroundR, scene.backgroundG, scene.backgroundB);
+            escaped(dx, dy, dz, arriving, v.radiance);
             return v.radiance;
         }
         primitives.record(v.hit, primitive, t);

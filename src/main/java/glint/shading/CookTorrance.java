@@ -17,7 +17,7 @@ public final class CookTorrance implements ShadingModel {
         if (m.isDelta(material)) {
             sum.set(0, 0, 0);
         } else {
-            DirectLight.sum(c, c.lights(), m, bsdf, s, -dx, -dy, -dz, light, f, sum);
+            DirectLight.sum(c, c.lights(), m, bsdf, s, -dx, -dy, -dz, false, light, f, sum);
         }
         if (m.ambientLit(material)) {
             sum.r += c.ambient(0) * m.color(material, 0);

@@ -1,21 +1,41 @@
 package glint.shading;
 
 /**
- * A directional light (its vector the unit direction towards it): the same irradiance from the
- * same direction everywhere.
+ * A directional light of size 0, its numbers [x, y, z, R, G, B]: the unit direction towards it and
+ * the irradiance on a surface facing it; the same from everywhere. A delta light.
  */
 public final class DirectionalLightSampler implements LightSampler {
 
+    /** How many numbers a directional light keeps. */
+    public static final int SIZE = 6;
+
+    /** The numbers of a directional light towards unit direction w of irradiance e per channel. */
+    public static double[] data(double wx, double wy, double wz, double r, double g, double b) {
+        return new double[] {wx, wy, wz, r, g, b};
+    }
+
     @Override
-    public boolean sample(double[] vector, double[] power, int at, double px, double py, double pz,
+    public boolean sample(double[] data, int at, double px, double py, double pz, double u1, double u2,
                           LightSample out) {
-        out.dirX = vector[at];
-        out.dirY = vector[at + 1];
-        out.dirZ = vector[at + 2];
-        out.distance = Double.POSITIVE_INFINITY;
-        out.irradianceR = power[at];
-        out.irradianceG = power[at + 1];
-        out.irradianceB = power[at + 2];
+        out.setDirection(data[at], data[at + 1], data[at + 2], Double.POSITIVE_INFINITY);
+        out.setIrradiance(data[at + 3], data[at + 4], data[at + 5]);
+        out.pdf = 0;
         return true;
+    }
+
+    @Override
+    public double pdf(double[] data, int at, double px, double py, double pz, double wx, double wy, double wz) {
+        return 0;
+    }
+
+    @Override
+    public boolean isDelta() {
+        return true;
+    }
+
+    /** The irradiance over a disc of the scene's radius. */
+    @Override
+    public double power(double[] data, int at, double sceneRadius) {
+        return Math.PI * sceneRadius * sceneRadius * (data[at + 3] + data[at + 4] + data[at + 5]) / 3;
     }
 }

@@ -3,37 +3,63 @@ package glint.shading;
 import glint.math.Vector3d;
 import java.util.List;
 
-/** A scene's lights in flat arrays, each sampled by its type's {@link LightSampler}. */
+/**
+ * A scene's lights: each light's numbers one run in a flat array, read by its kind's
+ * {@link LightSampler}, which this answers through for light i.
+ */
 public final class Lights {
 
     private final int count;
     private final LightSampler[] sampler;
-    private final boolean[] atPoint;
-    /** Per light: what its sampler reads, e.g. a point light's position or the unit direction towards a directional one. */
-    private final double[] vector;
-    /** Per light: colour x intensity. */
-    private final double[] power;
+    /** Where light i's numbers start in {@link #data}. */
+    private final int[] start;
+    private final double[] data;
+    private final boolean[] delta;
+    /** Per light: the point all its light leaves, or null. */
+    private final Vector3d[] point;
+    /** The lights that rays escaping the scene may see, in order. */
+    private final int[] atInfinity;
 
     private Lights(List<Light> lights) {
         count = lights.size();
         sampler = new LightSampler[count];
-        atPoint = new boolean[count];
-        vector = new double[3 * count];
-        power = new double[3 * count];
-        for (int i = 0; i < count; i++) {
+        start = new int[count];
+        delta = new boolean[count];
+        point = new Vector3d[count];
+        int size = 0;
+        for (Light light : lights) {
+            size += light.data.length;
+        }
+        data = new double[size];
+        int infinite = 0;
+        for (int i = 0, at = 0; i < count; i++) {
             Light light = lights.get(i);
             sampler[i] = light.sampler;
-            atPoint[i] = light.atPoint;
-            put(vector, i, light.vector);
-            put(power, i, light.power);
+            start[i] = at;
+            System.arraycopy(light.data, 0, data, at, light.data.length);
+            at += light.data.length;
+            delta[i] = light.sampler.isDelta();
+            point[i] = light.point;
+            infinite += light.sampler.atInfinity() ? 1 : 0;
+        }
+        atInfinity = new int[infinite];
+        for (int i = 0, k = 0; i < count; i++) {
+            if (sampler[i].atInfinity()) {
+                atInfinity[k++] = i;
+            }
         }
     }
 
     /**
-     * A light as the compiled scene keeps it: its type's sampler, whether all its light leaves one
-     * point (then {@code vector} is that point), the vector the sampler reads and its power.
+     * A light as the compiled scene keeps it: its kind's sampler, the numbers the sampler reads, and
+     * the point all its light leaves (null where it has none; then its shadow rays may not use
+     * direction cells around a point).
      */
-    public record Light(LightSampler sampler, boolean atPoint, Vector3d vector, Vector3d power) {
+    public record Light(LightSampler sampler, double[] data, Vector3d point) {
+
+        public Light {
+            data = data.clone();
+        }
     }
 
     /** The lights numbered in the order given. */
@@ -45,28 +71,51 @@ public final class Lights {
         return count;
     }
 
+    /** Whether light i is a delta light: no ray meets it, only its sample finds it. */
+    public boolean isDelta(int i) {
+        return delta[i];
+    }
+
     /** Whether all of light i's light leaves one point, {@link #position}. */
     public boolean atPoint(int i) {
-        return atPoint[i];
+        return point[i] != null;
     }
 
     /** Coordinate {@code axis} (0 to 2) of the point light i's light leaves. */
     public double position(int i, int axis) {
-        return vector[3 * i + axis];
+        return axis == 0 ? point[i].x() : axis == 1 ? point[i].y() : point[i].z();
     }
 
     /**
-     * Light i seen from surface point p of unit normal n, into {@code out}; returns n.l, the cosine
-     * at the surface, or 0 (leaving {@code out} alone) where it has no direction from p.
+     * Light i seen from point p, sampled by u1 and u2 (a delta light ignores them), into
+     * {@code out} ({@link LightSampler#sample}); false where it has no direction from p.
      */
-    public double sample(int i, double px, double py, double pz, double nx, double ny, double nz, LightSample out) {
-        boolean found = sampler[i].sample(vector, power, 3 * i, px, py, pz, out);
-        return found ? out.dirX * nx + out.dirY * ny + out.dirZ * nz : 0;
+    public boolean sample(int i, double px, double py, double pz, double u1, double u2, LightSample out) {
+        return sampler[i].sample(data, start[i], px, py, pz, u1, u2, out);
     }
 
-    private static void put(double[] array, int i, Vector3d v) {
-        array[3 * i] = v.x();
-        array[3 * i + 1] = v.y();
-        array[3 * i + 2] = v.z();
+    /** The density per solid angle with which light i's sample from p chooses unit direction w. */
+    public double pdf(int i, double px, double py, double pz, double wx, double wy, double wz) {
+        return sampler[i].pdf(data, start[i], px, py, pz, wx, wy, wz);
+    }
+
+    /** Light i's power, the mean of its channels ({@link LightSampler#power}). */
+    public double power(int i, double sceneRadius) {
+        return sampler[i].power(data, start[i], sceneRadius);
+    }
+
+    /** How many lights rays escaping the scene may see. */
+    public int countAtInfinity() {
+        return atInfinity.length;
+    }
+
+    /** The number of the k-th light that rays escaping the scene may see. */
+    public int atInfinity(int k) {
+        return atInfinity[k];
+    }
+
+    /** The radiance arriving along unit direction d from light i, at infinity, into {@code out}. */
+    public void arriving(int i, double dx, double dy, double dz, Rgb out) {
+        sampler[i].arriving(data, start[i], dx, dy, dz, out);
     }
 }

@@ -3,7 +3,7 @@ package glint.shading;
 /**
  * The seed's model (docs/conventions.md, "phong"): ka ambient x colour + the sum over lights of (kd
  * colour E n.l + ks E (r.v)^shininess), + ks I_reflected + kt colour I_transmitted, with ka = kd,
- * whatever the material's type. A shadow ray passes kt of the light through each object whose material
+ * whatever the material's type, and the light a surface sends of its own (a light's body). A shadow ray passes kt of the light through each object whose material
  * transmits light.
  */
 public final class Phong implements ShadingModel {
@@ -37,6 +37,10 @@ public final class Phong implements ShadingModel {
         double kd = m.kd(material), ks = m.ks(material);
         sum.set(kd * m.color(material, 0) * diffuseR + ks * specR, kd * m.color(material, 1) * diffuseG + ks * specG,
                 kd * m.color(material, 2) * diffuseB + ks * specB);
+        if (m.emits(material)) { // a light's body is seen in every model
+            m.bsdf(material).emitted(m, s, f);
+            sum.set(sum.r + f.r, sum.g + f.g, sum.b + f.b);
+        }
     }
 
     /** ks of the light reflected, kt x colour of the light refracted, whatever the angle. */

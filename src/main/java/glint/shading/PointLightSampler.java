@@ -1,7 +1,13 @@
 package glint.shading;
 
-/** A point light (its vector the position): inverse-square irradiance along the direction to it. */
+/**
+ * A point light, its numbers [x, y, z, R, G, B]: the position and the radiant intensity (colour x
+ * intensity); inverse-square irradiance along the direction to it. A delta light.
+ */
 public final class PointLightSampler implements LightSampler {
+
+    /** How many numbers a point light keeps. */
+    public static final int SIZE = 6;
 
     /**
      * The largest 1/d^2 taken: a light nearer than 1e-125 lights as one 1e-125 away, so that 100,000
@@ -9,23 +15,40 @@ public final class PointLightSampler implements LightSampler {
      */
     static final double LARGEST_SCALE = 1e250;
 
+    /** The numbers of a point light at p of radiant intensity i per channel. */
+    public static double[] data(double px, double py, double pz, double r, double g, double b) {
+        return new double[] {px, py, pz, r, g, b};
+    }
+
     @Override
-    public boolean sample(double[] vector, double[] power, int at, double px, double py, double pz,
+    public boolean sample(double[] data, int at, double px, double py, double pz, double u1, double u2,
                           LightSample out) {
-        double lx = vector[at] - px, ly = vector[at + 1] - py, lz = vector[at + 2] - pz;
+        double lx = data[at] - px, ly = data[at + 1] - py, lz = data[at + 2] - pz;
         double distance2 = lx * lx + ly * ly + lz * lz;
         if (distance2 == 0) {
             return false;
         }
         double inv = 1 / Math.sqrt(distance2);
-        out.distance = distance2 * inv;
-        out.dirX = lx * inv;
-        out.dirY = ly * inv;
-        out.dirZ = lz * inv;
+        out.setDirection(lx * inv, ly * inv, lz * inv, distance2 * inv);
         double scale = Math.min(inv * inv, LARGEST_SCALE);
-        out.irradianceR = power[at] * scale;
-        out.irradianceG = power[at + 1] * scale;
-        out.irradianceB = power[at + 2] * scale;
+        out.setIrradiance(data[at + 3] * scale, data[at + 4] * scale, data[at + 5] * scale);
+        out.pdf = 0;
         return true;
+    }
+
+    @Override
+    public double pdf(double[] data, int at, double px, double py, double pz, double wx, double wy, double wz) {
+        return 0;
+    }
+
+    @Override
+    public boolean isDelta() {
+        return true;
+    }
+
+    /** 4 pi times the radiant intensity. */
+    @Override
+    public double power(double[] data, int at, double sceneRadius) {
+        return 4 * Math.PI * (data[at + 3] + data[at + 4] + data[at + 5]) / 3;
     }
 }

@@ -5,6 +5,7 @@ import static org.junit.jupiter.api.Assertions.assertEquals;
 import static org.junit.jupiter.api.Assertions.assertThrows;
 
 import glint.input.InputException;
+import glint.registry.DirectionalLightType;
 import glint.registry.MaterialType;
 import glint.scene.Scene;
 import java.io.IOException;
@@ -106,7 +107,7 @@ class SceneLoaderErrorTest {
     @Test
     void pointLightKeyInDirectionalLight() {
         assertError("scenes/x.yaml:4:5: unknown key 'position' in directional light "
-                + "(expected one of: type, direction, color, intensity)",
+                + "(expected one of: type, " + String.join(", ", DirectionalLightType.TYPE.keys()) + ", color, intensity)",
                 """
                 lights:
                   - type: directional
@@ -536,6 +537,40 @@ class SceneLoaderErrorTest {
         assertError("scenes/x.yaml:2:52: roughness must lie in [0, 1], got -0.1", """
                 materials:
                   gold: {type: metal, color: [1, 1, 1], roughness: -0.1}
+                """);
+    }
+
+    @Test
+    void negativeLightRadius() {
+        assertError("scenes/x.yaml:2:48: radius must be >= 0 (0 is a point light), got -0.5", """
+                lights:
+                  - {type: point, position: [0, 5, 0], radius: -0.5}
+                """);
+    }
+
+    @Test
+    void lightRadiusTooSmallForItsRadiance() {
+        assertError("scenes/x.yaml:2:48: radius must be 0 (a point light) or between 1e-50 and 1e50, got 1e-60", """
+                lights:
+                  - {type: point, position: [0, 5, 0], radius: 1e-60}
+                """);
+    }
+
+    @Test
+    void negativeSunAngle() {
+        assertError("scenes/x.yaml:2:55: angle must lie in [0, 180) degrees (the disc's apparent diameter; the sun's"
+                + " is 0.53), got -1", """
+                lights:
+                  - {type: directional, direction: [0, -1, 0], angle: -1}
+                """);
+    }
+
+    @Test
+    void sunAngleOf180() {
+        assertError("scenes/x.yaml:2:55: angle must lie in [0, 180) degrees (the disc's apparent diameter; the sun's"
+                + " is 0.53), got 180", """
+                lights:
+                  - {type: directional, direction: [0, -1, 0], angle: 180}
                 """);
     }
 

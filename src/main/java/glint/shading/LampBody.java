@@ -1,0 +1,55 @@
+package glint.shading;
+
+/**
+ * The surface of a light with a body (a sphere light): black, it sends back nothing and sends on
+ * no ray; it sends only the light's radiance, its material's colour, uniformly outwards. Not a material type a scene names: the scene compiler gives each such light's body one.
+ */
+public final class LampBody implements Bsdf {
+
+    @Override
+    public void evaluate(Materials m, Surface s, double woX, double woY, double woZ, double wiX, double wiY,
+                         double wiZ, Rgb f) {
+        f.set(0, 0, 0);
+    }
+
+    @Override
+    public double pdf(Materials m, Surface s, double woX, double woY, double woZ, double wiX, double wiY,
+                      double wiZ) {
+        return 0;
+    }
+
+    /** Nothing is scattered: the path ends at the light. */
+    @Override
+    public boolean sample(Materials m, Surface s, double woX, double woY, double woZ, double u1, double u2,
+                          double uLobe, BsdfSample out) {
+        return false;
+    }
+
+    /** No light sample could add anything to black: the light loop is skipped. */
+    @Override
+    public boolean isDelta(Materials m, int material) {
+        return true;
+    }
+
+    @Override
+    public void specular(Materials m, Surface s, SingleRays out) {
+        out.setReflect(0, 0, 0);
+        out.setTransmit(0, 0, 0);
+    }
+
+    @Override
+    public boolean emits() {
+        return true;
+    }
+
+    /** The light's radiance, the same towards every direction outside it; none inside it. */
+    @Override
+    public void emitted(Materials m, Surface s, Rgb out) {
+        int material = s.material;
+        if (s.front) {
+            out.set(m.color(material, 0), m.color(material, 1), m.color(material, 2));
+        } else {
+            out.set(0, 0, 0);
+        }
+    }
+}

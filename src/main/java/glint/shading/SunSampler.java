@@ -1,0 +1,77 @@
+package glint.shading;
+
+/**
+ * A directional light with a size (a sun), its numbers [x, y, z, 1 - cos, sin^2, R, G, B]: the unit
+ * direction towards its centre, the disc's angular radius theta (as 1 - cos theta and sin^2 theta)
+ * and the disc's uniform radiance, colour x intensity / (pi sin^2 theta), which gives the irradiance
+ * colour x intensity on a surface facing its centre. Sampled uniformly over its disc; a ray that
+ * escapes the scene within the disc sees it.
+ */
+public final class SunSampler implements LightSampler {
+
+    /** How many numbers a sun keeps. */
+    public static final int SIZE = 8;
+
+    /**
+     * The numbers of a sun towards unit direction w of angular radius {@code radiusRadians} (in (0, pi/2))
+     * giving irradiance e per channel on a surface facing it.
+     */
+    public static double[] data(double wx, double wy, double wz, double radiusRadians, double r, double g,
+                                double b) {
+        double sin = Math.sin(radiusRadians);
+        double sin2 = sin * sin;
+        double toRadiance = 1 / (Math.PI * sin2);
+        return new double[] {wx, wy, wz, Cone.oneMinusCos(sin2), sin2, r * toRadiance, g * toRadiance,
+                b * toRadiance};
+    }
+
+    @Override
+    public boolean sample(double[] data, int at, double px, double py, double pz, double u1, double u2,
+                          LightSample out) {
+        double oneMinusCos = data[at + 3];
+        Cone.sample(data[at], data[at + 1], data[at + 2], oneMinusCos, u1, u2, out);
+        out.distance = Double.POSITIVE_INFINITY;
+        double solidAngle = Cone.solidAngle(oneMinusCos);
+        out.setIrradiance(data[at + 5] * solidAngle, data[at + 6] * solidAngle, data[at + 7] * solidAngle);
+        out.pdf = 1 / solidAngle;
+        return true;
+    }
+
+    @Override
+    public double pdf(double[] data, int at, double px, double py, double pz, double wx, double wy, double wz) {
+        return within(data, at, wx, wy, wz) ? Cone.pdf(data[at + 3]) : 0;
+    }
+
+    @Override
+    public boolean isDelta() {
+        return false;
+    }
+
+    /**
+     * The light crossing a disc of the scene's radius from every direction of the sun's: the radiance x
+     * the disc's solid angle x pi radius^2 (the scene's cross-section, seen from any direction).
+     */
+    @Override
+    public double power(double[] data, int at, double sceneRadius) {
+        double radianceTimesSolidAngle = Cone.solidAngle(data[at + 3]) * (data[at + 5] + data[at + 6] + data[at + 7]) / 3;
+        return Math.PI * sceneRadius * sceneRadius * radianceTimesSolidAngle;
+    }
+
+    @Override
+    public void arriving(double[] data, int at, double dx, double dy, double dz, Rgb out) {
+        if (within(data, at, dx, dy, dz)) {
+            out.set(data[at + 5], data[at + 6], data[at + 7]);
+        } else {
+            out.set(0, 0, 0);
+        }
+    }
+
+    @Override
+    public boolean atInfinity() {
+        return true;
+    }
+
+    private static boolean within(double[] data, int at, double wx, double wy, double wz) {
+        return Cone.contains(data[at], data[at + 1], data[at + 2], data[at + 4], wx, wy, wz);
+    }
+}
