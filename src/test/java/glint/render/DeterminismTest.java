@@ -12,6 +12,8 @@ import java.io.IOException;
 import java.nio.file.Path;
 import javax.imageio.ImageIO;
 import org.junit.jupiter.api.Test;
+import org.junit.jupiter.params.ParameterizedTest;
+import org.junit.jupiter.params.provider.EnumSource;
 
 /**
  * The same settings give the same bytes for any thread or tile count (docs/conventions.md, "Pixels and
@@ -27,6 +29,40 @@ class DeterminismTest {
             for (int divider : new int[] {1, 8, 13}) {
                 byte[] bytes = png(Renders.render(scene, 96, 72, 4, 5, Shading.COOK_TORRANCE, threads, divider));
                 assertArrayEquals(reference, bytes, threads + " threads, divider " + divider);
+            }
+        }
+    }
+
+    /** A sphere light, a sun with a size, a rough metal and glass: the lights' samples follow the pixel and sample. */
+    private static final String LIGHTS_WITH_A_SIZE = """
+            camera: {position: [0, 2, -4], look_at: [0, 0.5, 0.5], fov: 55}
+            background: [0.2, 0.25, 0.3]
+            lights:
+              - {type: point, position: [1.2, 2.2, 0.4], radius: 0.4, intensity: 8}
+              - {type: directional, direction: [-0.3, -1, 0.4], angle: 6, intensity: 1.5}
+            objects:
+              - {type: plane, point: [0, 0, 0], normal: [0, 1, 0]}
+              - {type: sphere, center: [-0.7, 0.5, 0.3], radius: 0.5, material: {type: glass}}
+              - {type: sphere, center: [0.7, 0.5, 0.6], radius: 0.5, material: {type: metal, roughness: 0.3}}
+            """;
+
+    @ParameterizedTest
+    @EnumSource(LightTransport.class)
+    void lightsWithASizeGiveTheSameBytesForAnyThreadAndTileCount(LightTransport transport) throws Exception {
+        RenderScene compiled = RenderScene.compile(Renders.scene(LIGHTS_WITH_A_SIZE),
+                new RenderSettings(Shading.COOK_TORRANCE, 6, 0.01, 1e-9).withTransport(transport));
+        byte[] reference = null;
+        for (int threads : new int[] {1, 2, 7}) {
+            for (int divider : new int[] {1, 8, 13}) {
+                FrameBuffer frame = new FrameBuffer(64, 48);
+                try (Tracer tracer = new Tracer(threads)) {
+                    tracer.render(compiled, frame, 4, 1, divider);
+                }
+                byte[] bytes = png(frame);
+                if (reference == null) {
+                    reference = bytes;
+                }
+                assertArrayEquals(reference, bytes, transport + ", " + threads + " threads, divider " + divider);
             }
         }
     }
@@ -56,7 +92,19 @@ class DeterminismTest {
     void progressivePassesAverageToTheStillImage() throws Exception {
         // pruned by roulette, whose draws follow the sample index: the passes refine to the still image
         Scene scene = SceneLoader.load(Path.of("src/test/resources/scenes/glass-on-mirror.yaml"));
-        RenderScene compiled = RenderScene.compile(scene, new RenderSettings(Shading.COOK_TORRANCE, 12, 0.05, 1e-9));
+        assertPassesAverageToTheStill(RenderScene.compile(scene, new RenderSettings(Shading.COOK_TORRANCE, 12, 0.05,
+                1e-9)));
+    }
+
+    @ParameterizedTest
+    @EnumSource(LightTransport.class)
+    void passesOfLightsWithASizeAverageToTheStillImage(LightTransport transport) {
+        // each pass is one of the still's stratified samples of the lights, so the passes refine to the still
+        assertPassesAverageToTheStill(RenderScene.compile(Renders.scene(LIGHTS_WITH_A_SIZE),
+                new RenderSettings(Shading.COOK_TORRANCE, 6, 0.01, 1e-9).withTransport(transport)));
+    }
+
+    private static void assertPassesAverageToTheStill(RenderScene compiled) {
         int samples = 9;
         FrameBuffer still = new FrameBuffer(40, 30);
         FrameBuffer pass = new FrameBuffer(40, 30);
