@@ -6,7 +6,10 @@ import static org.junit.jupiter.api.Assertions.assertThrows;
 
 import glint.input.InputException;
 import glint.registry.DirectionalLightType;
+import glint.registry.LightType;
 import glint.registry.MaterialType;
+import glint.registry.Registry;
+import glint.registry.ShapeType;
 import glint.scene.Scene;
 import java.io.IOException;
 import java.nio.file.Files;
@@ -26,6 +29,14 @@ class SceneLoaderErrorTest {
     private static InputException failure(String text) {
         return assertThrows(InputException.class, () -> SceneLoader.parse(FILE, text));
     }
+
+    /** The type names the registry lists, in its order, as the messages list them. */
+    private static final String OBJECT_TYPES = String.join(", ",
+            Registry.STANDARD.shapes().stream().map(ShapeType::name).toList());
+    private static final String LIGHT_TYPES = String.join(", ",
+            Registry.STANDARD.lights().stream().map(LightType::name).toList());
+    private static final String MATERIAL_TYPES = String.join(", ",
+            Registry.STANDARD.materials().stream().map(MaterialType::name).toList());
 
     private static void assertError(String expected, String text) {
         assertEquals(expected, failure(text).getMessage());
@@ -234,7 +245,7 @@ class SceneLoaderErrorTest {
                 materials:
                   m: {rougness: 0.5, type: metl}
                 """);
-        assertError("scenes/x.yaml:2:6: missing required key 'type' in material 'm' (one of: matte, metal, glass)", """
+        assertError("scenes/x.yaml:2:6: missing required key 'type' in material 'm' (one of: " + MATERIAL_TYPES + ")", """
                 materials:
                   m: {colr: [1, 0, 0]}
                 """);
@@ -253,7 +264,7 @@ class SceneLoaderErrorTest {
 
     @Test
     void unknownObjectTypeFarFromAnyListsTheTypes() {
-        assertError("scenes/x.yaml:2:11: unknown object type 'cube' (expected one of: sphere, plane)", """
+        assertError("scenes/x.yaml:2:11: unknown object type 'cube' (expected one of: " + OBJECT_TYPES + ")", """
                 objects:
                   - type: cube
                     size: 1
@@ -262,7 +273,7 @@ class SceneLoaderErrorTest {
 
     @Test
     void unknownLightType() {
-        assertError("scenes/x.yaml:2:12: unknown light type 'spot' (expected one of: point, directional)", """
+        assertError("scenes/x.yaml:2:12: unknown light type 'spot' (expected one of: " + LIGHT_TYPES + ")", """
                 lights:
                   - {type: spot, position: [0, 5, 0]}
                 """);
@@ -309,7 +320,7 @@ class SceneLoaderErrorTest {
 
     @Test
     void unknownMaterialNameFarFromAnyListsPresetsThenNamedInOrder() {
-        assertError("scenes/x.yaml:6:15: unknown material 'blue' (expected one of: matte, metal, glass, red, "
+        assertError("scenes/x.yaml:6:15: unknown material 'blue' (expected one of: " + MATERIAL_TYPES + ", red, "
                 + "gold)", """
                 materials:
                   red: {type: matte, color: [0.8, 0.1, 0.1]}
@@ -396,7 +407,7 @@ class SceneLoaderErrorTest {
 
     @Test
     void missingObjectType() {
-        assertError("scenes/x.yaml:2:5: missing required key 'type' in object (one of: sphere, plane)", """
+        assertError("scenes/x.yaml:2:5: missing required key 'type' in object (one of: " + OBJECT_TYPES + ")", """
                 objects:
                   - {center: [0, 0, 0], radius: 1}
                 """);
@@ -404,7 +415,7 @@ class SceneLoaderErrorTest {
 
     @Test
     void missingLightType() {
-        assertError("scenes/x.yaml:2:5: missing required key 'type' in light (one of: point, directional)", """
+        assertError("scenes/x.yaml:2:5: missing required key 'type' in light (one of: " + LIGHT_TYPES + ")", """
                 lights:
                   - position: [0, 5, 0]
                 """);
@@ -412,7 +423,7 @@ class SceneLoaderErrorTest {
 
     @Test
     void missingMaterialType() {
-        assertError("scenes/x.yaml:2:8: missing required key 'type' in material 'red' (one of: matte, metal, glass)",
+        assertError("scenes/x.yaml:2:8: missing required key 'type' in material 'red' (one of: " + MATERIAL_TYPES + ")",
                 """
                 materials:
                   red: {color: [0.8, 0.1, 0.1]}
@@ -421,7 +432,7 @@ class SceneLoaderErrorTest {
 
     @Test
     void missingInlineMaterialType() {
-        assertError("scenes/x.yaml:5:15: missing required key 'type' in material (one of: matte, metal, glass)",
+        assertError("scenes/x.yaml:5:15: missing required key 'type' in material (one of: " + MATERIAL_TYPES + ")",
                 """
                 objects:
                   - type: sphere
