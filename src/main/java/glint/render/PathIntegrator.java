@@ -103,14 +103,14 @@ final class PathIntegrator extends Integrator {
                 throughputG /= survive;
                 throughputB /= survive;
             }
-            ox = next.transmitted ? s.farX() : s.nearX();
-            oy = next.transmitted ? s.farY() : s.nearY();
-            oz = next.transmitted ? s.farZ() : s.nearZ();
+            ox = next.transmitted() ? s.farX() : s.nearX();
+            oy = next.transmitted() ? s.farY() : s.nearY();
+            oz = next.transmitted() ? s.farZ() : s.nearZ();
             dx = next.wiX;
             dy = next.wiY;
             dz = next.wiZ;
-            if (!nearest(ox, oy, oz, dx, dy, dz, next.transmitted ? s.skipFar : s.skipNear,
-                    next.transmitted ? s.insideFar : s.insideNear, hit)) {
+            if (!nearest(ox, oy, oz, dx, dy, dz, next.transmitted() ? s.skipFar : s.skipNear,
+                    next.transmitted() ? s.insideFar : s.insideNear, hit)) {
                 sumR += throughputR * scene.backgroundR;
                 sumG += throughputG * scene.backgroundG;
                 sumB += throughputB * scene.backgroundB;

@@ -2,8 +2,8 @@ package glint.shading;
 
 /**
  * How one material type scatters light (pbrt's BxDF, Mitsuba's BSDF): f(wo, wi) ({@link #evaluate}),
- * a direction sampled with its weight and density ({@link #sample}, {@link #pdf}), and whether its
- * lobes are delta ({@link #isDelta}); for Whitted's integrator besides, the single rays its lobes
+ * a direction sampled with its weight and density ({@link #sample}, {@link #pdf}), and the kinds of
+ * its lobes ({@link #lobes}); for Whitted's integrator besides, the single rays its lobes
  * are followed along ({@link #specular}). It only answers: the integrators own the light loop, the
  * depth and the rays. One per material type ({@code glint.registry.MaterialType}): {@link Lambert},
  * {@link Conductor}, {@link Dielectric}.
@@ -13,7 +13,10 @@ public interface Bsdf {
     // wo and wi are unit world directions away from surface s (wo towards where the light goes, the
     // reverse of the incoming ray), s's normal faces wo; the material is s.material.
 
-    /** f(wo, wi) of the material's lobes that are not delta, per channel, into {@code f} (0 where none). */
+    /**
+     * f(wo, wi) of the material's lobes that are not delta, per channel, into {@code f} (0 where none),
+     * for wi anywhere on the sphere: on wo's side its reflection, through the surface its transmission.
+     */
     void evaluate(Materials m, Surface s, double woX, double woY, double woZ, double wiX, double wiY, double wiZ,
                   Rgb f);
 
@@ -22,14 +25,17 @@ public interface Bsdf {
 
     /**
      * Samples a direction wi for wo from the uniform numbers u1, u2 (the direction) and uLobe (which
-     * lobe), into {@code out}: wi, the weight f cos / pdf, the pdf and whether a delta lobe chose it.
+     * lobe), into {@code out}: wi, the weight f |cos| / pdf, the pdf and the kind of lobe that chose it.
      * False where no direction is sampled (it would point into the surface): the path ends.
      */
     boolean sample(Materials m, Surface s, double woX, double woY, double woZ, double u1, double u2, double uLobe,
                    BsdfSample out);
 
-    /** Whether every lobe of material {@code material} is a delta (a mirror, smooth glass): no light sample sees it. */
-    boolean isDelta(Materials m, int material);
+    /**
+     * The kinds of material {@code material}'s lobes, {@link Lobe}'s bits: all of them delta (or none)
+     * means no light sample sees it ({@link Materials#isDelta}). Asked once per material.
+     */
+    int lobes(Materials m, int material);
 
     /**
      * Whitted's rays: the factors of the single rays the surface sends on in place of its lobes, into

@@ -68,13 +68,12 @@ public final class Conductor implements Bsdf {
         int material = s.material;
         double alpha = m.alpha(material);
         double cosOut = s.cosIncident;
-        out.transmitted = false;
         if (alpha < Microfacet.MIRROR_ALPHA) {
             mirror(s, woX, woY, woZ, out);
             out.setWeight(Optics.schlick(m.color(material, 0), cosOut), Optics.schlick(m.color(material, 1), cosOut),
                     Optics.schlick(m.color(material, 2), cosOut));
             out.pdf = 0;
-            out.delta = true;
+            out.lobe = Lobe.SPECULAR_REFLECTION;
             return true;
         }
         if (!(cosOut > 0)) {
@@ -100,13 +99,13 @@ public final class Conductor implements Bsdf {
                 masking * Optics.schlick(m.color(material, 1), cosOutHalf),
                 masking * Optics.schlick(m.color(material, 2), cosOutHalf));
         out.pdf = Microfacet.reflectedPdf(cosOut, h[2], alpha);
-        out.delta = false;
+        out.lobe = Lobe.GLOSSY_REFLECTION;
         return true;
     }
 
     @Override
-    public boolean isDelta(Materials m, int material) {
-        return m.alpha(material) < Microfacet.MIRROR_ALPHA;
+    public int lobes(Materials m, int material) {
+        return m.alpha(material) < Microfacet.MIRROR_ALPHA ? Lobe.SPECULAR_REFLECTION : Lobe.GLOSSY_REFLECTION;
     }
 
     /** Sets out's direction to wo mirrored about s's normal. */

@@ -51,24 +51,23 @@ public final class Dielectric implements Bsdf {
         double cos = s.cosIncident;
         double reflectance = reflectance(m, cos, eta);
         out.pdf = 0;
-        out.delta = true;
         double[] refracted = out.half;
         if (uLobe >= reflectance && Optics.refract(-woX, -woY, -woZ, s.nx, s.ny, s.nz, cos, eta, refracted)) {
             out.wiX = refracted[0];
             out.wiY = refracted[1];
             out.wiZ = refracted[2];
             out.setWeight(m.color(material, 0), m.color(material, 1), m.color(material, 2));
-            out.transmitted = true;
+            out.lobe = Lobe.SPECULAR_TRANSMISSION;
             return true;
         }
         Conductor.mirror(s, woX, woY, woZ, out);
         out.setWeight(1, 1, 1);
-        out.transmitted = false;
+        out.lobe = Lobe.SPECULAR_REFLECTION;
         return true;
     }
 
     @Override
-    public boolean isDelta(Materials m, int material) {
-        return true;
+    public int lobes(Materials m, int material) {
+        return Lobe.SPECULAR_REFLECTION | Lobe.SPECULAR_TRANSMISSION;
     }
 }

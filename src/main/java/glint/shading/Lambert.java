@@ -51,13 +51,12 @@ public final class Lambert implements Bsdf {
         out.pdf = z * INV_PI;
         int material = s.material;
         out.setWeight(m.color(material, 0), m.color(material, 1), m.color(material, 2));
-        out.delta = false;
-        out.transmitted = false;
+        out.lobe = Lobe.DIFFUSE_REFLECTION;
         return true;
     }
 
     @Override
-    public boolean isDelta(Materials m, int material) {
-        return false;
+    public int lobes(Materials m, int material) {
+        return Lobe.DIFFUSE_REFLECTION;
     }
 }

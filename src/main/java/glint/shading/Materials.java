@@ -17,7 +17,8 @@ public final class Materials {
     private final boolean exactFresnel;
     /** Per material: whether Whitted's ambient light reaches it, and whether it sends light of its own. */
     private final boolean[] ambientLit, emits;
-    /** Per material: whether all its lobes are delta ({@link Bsdf#isDelta}), asked once. */
+    /** Per material: the kinds of its lobes ({@link Bsdf#lobes}), asked once, and whether all are delta. */
+    private final int[] lobes;
     private final boolean[] delta;
 
     private Materials(List<Parameters> materials, boolean exactFresnel) {
@@ -33,6 +34,7 @@ public final class Materials {
         alpha = new double[n];
         ambientLit = new boolean[n];
         emits = new boolean[n];
+        lobes = new int[n];
         delta = new boolean[n];
         for (int i = 0; i < n; i++) {
             Parameters m = materials.get(i);
@@ -50,7 +52,8 @@ public final class Materials {
             alpha[i] = m.roughness > 0 ? Math.max(m.roughness * m.roughness, MIN_ALPHA) : 0;
         }
         for (int i = 0; i < n; i++) {
-            delta[i] = bsdf[i].isDelta(this, i);
+            lobes[i] = bsdf[i].lobes(this, i);
+            delta[i] = Lobe.allDelta(lobes[i]);
         }
     }
 
@@ -83,9 +86,17 @@ public final class Materials {
         return bsdf[m];
     }
 
-    /** Whether all of material m's lobes are delta: no light sample sees them ({@link Bsdf#isDelta}). */
+    /** Whether all of material m's lobes are delta (or it has none): no light sample sees them. */
     public boolean isDelta(int m) {
         return delta[m];
+    }
+
+    /**
+     * The kinds of material m's lobes ({@link Bsdf#lobes}, {@link Lobe}'s bits): {@code
+     * Lobe.transmitsNonDelta(lobes(m))} asks whether light samples reach it through the surface.
+     */
+    public int lobes(int m) {
+        return lobes[m];
     }
 
     /** Whether Whitted's ambient light reaches material m, times its colour ({@link Bsdf#ambientLit}). */

@@ -51,8 +51,9 @@ final class Glow implements Bsdf {
         return false;
     }
 
+    /** No lobe at all: no light sample sees it. */
     @Override
-    public boolean isDelta(Materials m, int material) {
-        return true;
+    public int lobes(Materials m, int material) {
+        return 0;
     }
 }

@@ -141,7 +141,7 @@ class BsdfTest {
                 continue;
             }
             drawn++;
-            assertFalse(out.delta);
+            assertFalse(out.delta());
             double cosIn = out.wiX * NORMAL[0] + out.wiY * NORMAL[1] + out.wiZ * NORMAL[2];
             assertTrue(cosIn > 0, "a sample on the normal's side");
             bsdf.evaluate(m, s, wo[0], wo[1], wo[2], out.wiX, out.wiY, out.wiZ, f);
