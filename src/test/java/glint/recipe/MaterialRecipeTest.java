@@ -66,8 +66,8 @@ class MaterialRecipeTest {
 
     @Test
     void theNewTypeReadsItsOwnKeysAndAKeyOfAnotherTypeIsRefusedNamingItAndTheFix() {
-        assertEquals("recipe.yaml:2:19: a glow material has no roughness (roughness is a key of metal; write type: "
-                        + "metal, or remove roughness)",
+        assertEquals("recipe.yaml:2:19: a glow material has no roughness (roughness is a key of metal and glass; "
+                        + "write type: metal or type: glass, or remove roughness)",
                 Recipes.error(REGISTRY, "materials:\n  m: {type: glow, roughness: 0.5}\n"));
         // a second type reading ior: both are named
         MaterialType lens = new MaterialType("lens", List.of("ior"), GlassType::read, new Dielectric(), Vector3d.ONE,
