@@ -15,7 +15,9 @@ public final class GlassType {
 
     public static final MaterialType TYPE = new MaterialType("glass", List.of("ior", "roughness"),
             (fields, common) -> MetalType.read(fields, read(fields, common)), new Dielectric(), Vector3d.ONE, 0.01, 0.2,
-            0.79, 125);
+            0.79, 125)
+            .sampledAt("ior", 0.75, 1.5, 2.4)
+            .sampledAt("roughness", 0, 0.2, 0.5, 1);
 
     /** The range of ior: far wider than that of real media (about 1 to 4) and their ratios. */
     static final double MIN_IOR = 0.1, MAX_IOR = 100;

@@ -13,7 +13,8 @@ import java.util.List;
 public final class MetalType {
 
     public static final MaterialType TYPE = new MaterialType("metal", List.of("roughness"), MetalType::read,
-            new Conductor(), new Vector3d(0.9, 0.9, 0.9), 0.1, 0.7, 0.0, 50);
+            new Conductor(), new Vector3d(0.9, 0.9, 0.9), 0.1, 0.7, 0.0, 50)
+            .sampledAt("roughness", 0, 0.2, 0.5, 1);
 
     private MetalType() {
     }

@@ -111,4 +111,24 @@ class MaterialRecipeTest {
         assertEquals(Registry.STANDARD.materials().get(0).preset(),
                 Recipes.scene(REGISTRY, yaml).objects().get(0).material());
     }
+
+    /**
+     * A type reading a physical key is sampled by the contract tests at the values it declares, every
+     * combination over its preset; without them it has no sample, which fails
+     * {@code BsdfContractTest} once the type is registered.
+     */
+    @Test
+    void aTypeIsSampledAtTheValuesItDeclaresForItsPhysicalKeys() {
+        MaterialType lens = new MaterialType("lens", List.of("ior", "roughness"), GlassType::read, new Dielectric(),
+                Vector3d.ONE, 0, 0, 1, 1);
+        assertEquals(List.of(), lens.samples());
+        MaterialType sampled = lens.sampledAt("ior", 1.2, 2).sampledAt("roughness", 0, 0.5);
+        assertEquals(List.of(new Material("lens", Vector3d.ONE, 0, 0, 1, 1, 1.2, 0),
+                new Material("lens", Vector3d.ONE, 0, 0, 1, 1, 1.2, 0.5),
+                new Material("lens", Vector3d.ONE, 0, 0, 1, 1, 2, 0),
+                new Material("lens", Vector3d.ONE, 0, 0, 1, 1, 2, 0.5)), sampled.samples());
+        assertEquals(List.of(GlowType.TYPE.preset()), GlowType.TYPE.samples(), "a type without physical keys: its preset");
+        assertThrows(IllegalArgumentException.class, () -> GlowType.TYPE.sampledAt("ior", 1.5));
+        assertThrows(IllegalArgumentException.class, () -> lens.sampledAt("kd", 0.5));
+    }
 }
