@@ -4,6 +4,7 @@ import glint.input.InputException;
 import glint.math.Vector3d;
 import glint.scene.Material;
 import glint.shading.Dielectric;
+import glint.shading.GlassResponse;
 import java.util.List;
 
 /**
@@ -14,8 +15,8 @@ import java.util.List;
 public final class GlassType {
 
     public static final MaterialType TYPE = new MaterialType("glass", List.of("ior", "roughness"),
-            (fields, common) -> MetalType.read(fields, read(fields, common)), new Dielectric(), Vector3d.ONE, 0.01, 0.2,
-            0.79, 125)
+            (fields, common) -> MetalType.read(fields, read(fields, common)), new Dielectric(), new GlassResponse(),
+            Vector3d.ONE, 0.01, 0.2, 0.79, 125)
             .sampledAt("ior", 0.75, 1.5, 2.4)
             .sampledAt("roughness", 0, 0.2, 0.5, 1);
 

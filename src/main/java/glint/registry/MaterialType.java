@@ -4,6 +4,7 @@ import glint.input.InputException;
 import glint.math.Vector3d;
 import glint.scene.Material;
 import glint.shading.Bsdf;
+import glint.shading.WhittedResponse;
 import java.util.ArrayList;
 import java.util.LinkedHashMap;
 import java.util.List;
@@ -12,7 +13,8 @@ import java.util.Map;
 /**
  * A kind of material, registered once in {@link Registry}: its name in scene files (also the name
  * of its preset material), the keys a material of the type reads and its reader, the preset's
- * values, and its {@link Bsdf}, how the physically based model scatters light at it. Every type
+ * values, its {@link Bsdf}, how the physically based model scatters light at it, and its
+ * {@link WhittedResponse}, what Whitted's shading models ask of it besides. Every type
  * reads the colour and the phong coefficients ({@link #COMMON_KEYS}) over its preset, because the
  * phong model reads kd, ks, kt and shininess of every material whatever its type and refracts any
  * material with kt above 0 (at its ior, the preset's 1.5 unless the type reads {@code ior}); a
@@ -39,6 +41,7 @@ public final class MaterialType {
     private final List<String> keys;
     private final Reader reader;
     private final Bsdf bsdf;
+    private final WhittedResponse response;
     private final Material preset;
     /** Per physical key: the values the contract tests sample a material of the type at ({@link #samples}). */
     private final Map<String, double[]> sampleValues;
@@ -58,8 +61,8 @@ public final class MaterialType {
      * with {@code reader}, whose preset has the given colour and phong coefficients, ior 1.5 and
      * roughness 0.
      */
-    public MaterialType(String name, List<String> physicalKeys, Reader reader, Bsdf bsdf, Vector3d color,
-                        double kd, double ks, double kt, double shininess) {
+    public MaterialType(String name, List<String> physicalKeys, Reader reader, Bsdf bsdf, WhittedResponse response,
+                        Vector3d color, double kd, double ks, double kt, double shininess) {
         if (!PHYSICAL_KEYS.containsAll(physicalKeys)) {
             throw new IllegalArgumentException("material type " + name + " reads " + physicalKeys
                     + ", but a material's physical parameters are " + PHYSICAL_KEYS);
@@ -70,6 +73,7 @@ public final class MaterialType {
         this.keys = List.copyOf(all);
         this.reader = reader;
         this.bsdf = bsdf;
+        this.response = response;
         this.preset = new Material(name, color, kd, ks, kt, shininess, 1.5, 0);
         this.sampleValues = Map.of();
     }
@@ -79,13 +83,15 @@ public final class MaterialType {
         keys = type.keys;
         reader = type.reader;
         bsdf = type.bsdf;
+        response = type.response;
         preset = type.preset;
         this.sampleValues = sampleValues;
     }
 
     /** A type that reads the common keys only. */
-    public MaterialType(String name, Bsdf bsdf, Vector3d color, double kd, double ks, double kt, double shininess) {
-        this(name, List.of(), (fields, common) -> common, bsdf, color, kd, ks, kt, shininess);
+    public MaterialType(String name, Bsdf bsdf, WhittedResponse response, Vector3d color, double kd, double ks,
+                        double kt, double shininess) {
+        this(name, List.of(), (fields, common) -> common, bsdf, response, color, kd, ks, kt, shininess);
     }
 
     /**
@@ -134,8 +140,10 @@ public final class MaterialType {
 
     private static Material with(Material m, String key, double value) {
         return switch (key) {
-            case "ior" -> new Material(m.type(), m.color(), m.kd(), m.ks(), m.kt(), m.shininess(), value, m.roughness());
-            case "roughness" -> new Material(m.type(), m.color(), m.kd(), m.ks(), m.kt(), m.shininess(), m.ior(), value);
+            case "ior" -> new Material(m.type(), m.color(), m.kd(), m.ks(), m.kt(), m.shininess(), value,
+                    m.roughness());
+            case "roughness" -> new Material(m.type(), m.color(), m.kd(), m.ks(), m.kt(), m.shininess(), m.ior(),
+                    value);
             default -> throw new IllegalArgumentException("no physical key " + key);
         };
     }
@@ -152,6 +160,11 @@ public final class MaterialType {
 
     public Bsdf bsdf() {
         return bsdf;
+    }
+
+    /** What Whitted's shading models ask of a material of this type besides its BSDF. */
+    public WhittedResponse response() {
+        return response;
     }
 
     /** The material its name alone means; a material of this type written in a scene starts from it. */

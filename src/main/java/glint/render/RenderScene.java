@@ -5,6 +5,7 @@ import glint.accel.AggregatePolicy;
 import glint.geometry.PrimitiveKind;
 import glint.geometry.Primitives;
 import glint.registry.LightType;
+import glint.registry.MaterialType;
 import glint.registry.Registry;
 import glint.registry.ShapeType;
 import glint.scene.Camera;
@@ -64,7 +65,7 @@ public final class RenderScene {
         shadowPass = new double[materialOf.length];
         for (int p = 0; p < materialOf.length && settings.shading() == Shading.PHONG; p++) {
             int m = materialOf[p];
-            shadowPass[p] = materials.bsdf(m).transmits() ? materials.kt(m) : 0;
+            shadowPass[p] = materials.response(m).transmits() ? materials.kt(m) : 0;
         }
         lights = Lights.of(scene.lights().stream().map(light -> compiled(registry.typeOf(light), light)).toList());
         shadowAggregate = new Aggregate[lights.count()];
@@ -162,8 +163,9 @@ public final class RenderScene {
     }
 
     private static Materials.Parameters parameters(Registry registry, Material m) {
-        return new Materials.Parameters(registry.material(m.type()).bsdf(), m.color(), m.kd(), m.ks(), m.kt(), m.shininess(), m.ior(),
-                m.roughness());
+        MaterialType type = registry.material(m.type());
+        return new Materials.Parameters(type.bsdf(), type.response(), m.color(), m.kd(), m.ks(), m.kt(), m.shininess(),
+                m.ior(), m.roughness());
     }
 
     private static Lights.Light compiled(LightType<?> type, Light light) {

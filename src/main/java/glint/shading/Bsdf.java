@@ -2,11 +2,11 @@ package glint.shading;
 
 /**
  * How one material type scatters light (pbrt's BxDF, Mitsuba's BSDF): f(wo, wi) ({@link #evaluate}),
- * a direction sampled with its weight and density ({@link #sample}, {@link #pdf}), and the kinds of
- * its lobes ({@link #lobes}); for Whitted's integrator besides, the single rays its lobes
- * are followed along ({@link #specular}). It only answers: the integrators own the light loop, the
- * depth and the rays. One per material type ({@code glint.registry.MaterialType}): {@link Lambert},
- * {@link Conductor}, {@link Dielectric}.
+ * a direction sampled with its weight and density ({@link #sample}, {@link #pdf}), the kinds of its
+ * lobes ({@link #lobes}) and its own light ({@link #emitted}). It only answers: the integrators own
+ * the light loop, the depth and the rays. One per material type ({@code glint.registry.MaterialType}):
+ * {@link Lambert}, {@link Conductor}, {@link Dielectric}; what Whitted's models ask besides is the
+ * type's {@link WhittedResponse}.
  */
 public interface Bsdf {
 
@@ -37,19 +37,6 @@ public interface Bsdf {
      */
     int lobes(Materials m, int material);
 
-    /**
-     * Whitted's rays: the factors of the single rays the surface sends on in place of its lobes, into
-     * {@code out}: the mirrored ray's per channel (a glossy lobe is followed along its mirror
-     * direction) and, for one that refracts, eta and the tint of the refracted ray (0 for none). They
-     * depend on the material, the side met and the cosine alone.
-     */
-    void specular(Materials m, Surface s, SingleRays out);
-
-    /** Whether Whitted's ambient light reaches the surface, times its colour (a matte surface's albedo). */
-    default boolean ambientLit() {
-        return false;
-    }
-
     /** Whether the surface sends light of its own ({@link #emitted}). */
     default boolean emits() {
         return false;
@@ -58,10 +45,5 @@ public interface Bsdf {
     /** The radiance the surface sends of its own towards wo, into {@code out}, where it {@link #emits}. */
     default void emitted(Materials m, Surface s, Rgb out) {
         out.set(0, 0, 0);
-    }
-
-    /** Whether light passes through the material (the phong model's shadow rays pass kt of it). */
-    default boolean transmits() {
-        return false;
     }
 }

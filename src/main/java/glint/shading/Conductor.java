@@ -3,20 +3,10 @@ package glint.shading;
 /**
  * A metal (docs/conventions.md, "cook-torrance"): the GGX microfacet lobe with Schlick's Fresnel, F0 =
  * the material's colour, and height-correlated Smith masking; a delta mirror below
- * {@link Microfacet#MIRROR_ALPHA}. Whitted's integrator follows its mirror direction and lights its
- * lobe (the highlight).
+ * {@link Microfacet#MIRROR_ALPHA}. Whitted's integrator follows its mirror direction
+ * ({@link MetalResponse}) and lights its lobe (the highlight).
  */
 public final class Conductor implements Bsdf {
-
-    /** The mirrored ray, weighted by Schlick's Fresnel per channel, whatever the roughness. */
-    @Override
-    public void specular(Materials m, Surface s, SingleRays out) {
-        int material = s.material;
-        double cos = s.cosIncident;
-        out.setReflect(Optics.schlick(m.color(material, 0), cos), Optics.schlick(m.color(material, 1), cos),
-                Optics.schlick(m.color(material, 2), cos));
-        out.setTransmit(0, 0, 0);
-    }
 
     /**
      * f = D(h) G2 F(wo.h) / (4 wo.n wi.n), the GGX lobe, finite while either cosine is at least 1e-300;

@@ -7,7 +7,8 @@ package glint.shading;
  * otherwise rough (frosted), after Walter et al. 2007, "Microfacet Models for Refraction through Rough
  * Surfaces": GGX normals, each reflecting and refracting by its own Fresnel, height-correlated Smith
  * masking, radiance carried unscaled (no eta^2). Whitted's integrator follows its mirrored and
- * refracted rays alike whatever the roughness, and lights a rough one's lobes (its highlight).
+ * refracted rays alike whatever the roughness ({@link GlassResponse}), and lights a rough one's lobes
+ * (its highlight).
  *
  * <p>Throughout, wo is on the side the surface's normal n faces (n.wo > 0), eta = n_o / n_i is the
  * ratio of the index on wo's side to the other's ({@link Optics#eta} of the side met); h is the
@@ -15,24 +16,9 @@ package glint.shading;
  */
 public final class Dielectric implements Bsdf {
 
-    @Override
-    public void specular(Materials m, Surface s, SingleRays out) {
-        int material = s.material;
-        out.eta = Optics.eta(m.ior(material), s.front);
-        double reflectance = reflectance(m, s.cosIncident, out.eta);
-        out.setReflect(reflectance, reflectance, reflectance);
-        out.setTransmit((1 - reflectance) * m.color(material, 0), (1 - reflectance) * m.color(material, 1),
-                (1 - reflectance) * m.color(material, 2));
-    }
-
     /** The Fresnel reflectance at cosine cos and ratio eta: exact, or Schlick's where the scene says. */
-    private static double reflectance(Materials m, double cos, double eta) {
+    static double reflectance(Materials m, double cos, double eta) {
         return m.exactFresnel() ? Optics.fresnelDielectric(cos, eta) : Optics.schlickDielectric(cos, eta);
-    }
-
-    @Override
-    public boolean transmits() {
-        return true;
     }
 
     /**

@@ -5,18 +5,6 @@ public final class Lambert implements Bsdf {
 
     private static final double INV_PI = 1 / Math.PI;
 
-    /** A matte surface sends no single rays on. */
-    @Override
-    public void specular(Materials m, Surface s, SingleRays out) {
-        out.setReflect(0, 0, 0);
-        out.setTransmit(0, 0, 0);
-    }
-
-    @Override
-    public boolean ambientLit() {
-        return true;
-    }
-
     @Override
     public void evaluate(Materials m, Surface s, double woX, double woY, double woZ, double wiX, double wiY,
                          double wiZ, Rgb f) {

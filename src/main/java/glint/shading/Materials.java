@@ -11,6 +11,7 @@ public final class Materials {
     static final double MIN_ALPHA = 1e-4;
 
     private final Bsdf[] bsdf;
+    private final WhittedResponse[] response;
     private final double[] color; // 3 per material, linear RGB
     private final double[] kd, ks, kt, shininess, ior;
     private final double[] alpha; // GGX alpha = roughness^2; 0: no highlight
@@ -25,6 +26,7 @@ public final class Materials {
         this.exactFresnel = exactFresnel;
         int n = materials.size();
         bsdf = new Bsdf[n];
+        response = new WhittedResponse[n];
         color = new double[3 * n];
         kd = new double[n];
         ks = new double[n];
@@ -39,7 +41,8 @@ public final class Materials {
         for (int i = 0; i < n; i++) {
             Parameters m = materials.get(i);
             bsdf[i] = m.bsdf;
-            ambientLit[i] = m.bsdf.ambientLit();
+            response[i] = m.response;
+            ambientLit[i] = m.response.ambientLit();
             emits[i] = m.bsdf.emits();
             color[3 * i] = m.color.x();
             color[3 * i + 1] = m.color.y();
@@ -57,9 +60,9 @@ public final class Materials {
         }
     }
 
-    /** A material as the compiled scene keeps it: its type's BSDF and its values. */
-    public record Parameters(Bsdf bsdf, Vector3d color, double kd, double ks, double kt, double shininess,
-                             double ior, double roughness) {
+    /** A material as the compiled scene keeps it: its type's BSDF and Whitted's response, and its values. */
+    public record Parameters(Bsdf bsdf, WhittedResponse response, Vector3d color, double kd, double ks, double kt,
+                             double shininess, double ior, double roughness) {
     }
 
     /** The materials numbered in the order given. */
@@ -99,7 +102,12 @@ public final class Materials {
         return lobes[m];
     }
 
-    /** Whether Whitted's ambient light reaches material m, times its colour ({@link Bsdf#ambientLit}). */
+    /** What Whitted's shading models ask of material m besides its BSDF: its single rays, ambient, shadows. */
+    public WhittedResponse response(int m) {
+        return response[m];
+    }
+
+    /** Whether Whitted's ambient light reaches material m, times its colour ({@link WhittedResponse#ambientLit}). */
     public boolean ambientLit(int m) {
         return ambientLit[m];
     }

@@ -10,6 +10,7 @@ import glint.registry.MaterialType;
 import glint.registry.Registry;
 import glint.scene.Material;
 import glint.shading.Dielectric;
+import glint.shading.GlassResponse;
 import java.util.List;
 import org.junit.jupiter.api.Test;
 
@@ -70,8 +71,8 @@ class MaterialRecipeTest {
                         + "write type: metal or type: glass, or remove roughness)",
                 Recipes.error(REGISTRY, "materials:\n  m: {type: glow, roughness: 0.5}\n"));
         // a second type reading ior: both are named
-        MaterialType lens = new MaterialType("lens", List.of("ior"), GlassType::read, new Dielectric(), Vector3d.ONE,
-                0, 0, 1, 1);
+        MaterialType lens = new MaterialType("lens", List.of("ior"), GlassType::read, new Dielectric(),
+                new GlassResponse(), Vector3d.ONE, 0, 0, 1, 1);
         assertEquals("recipe.yaml:2:19: a glow material has no ior (ior is a key of glass and lens; write type: glass "
                         + "or type: lens, or remove ior)",
                 Recipes.error(REGISTRY.with(lens), "materials:\n  m: {type: glow, ior: 1.2}\n"));
@@ -80,13 +81,14 @@ class MaterialRecipeTest {
                 Recipes.error(REGISTRY.with(lens), "materials:\n  m: {type: glow, iro: 1.2}\n"));
         assertEquals("material type lamp reads [power], but a material's physical parameters are [ior, roughness]",
                 assertThrows(IllegalArgumentException.class, () -> new MaterialType("lamp", List.of("power"),
-                        (fields, common) -> common, new Glow(), Vector3d.ONE, 0, 0, 0, 1)).getMessage());
+                        (fields, common) -> common, new Glow(), GlowType.NO_RAYS, Vector3d.ONE, 0, 0, 0, 1))
+                        .getMessage());
     }
 
     @Test
     void aTypeReadsItsKeysWithTheReaderItIsGiven() {
-        MaterialType lens = new MaterialType("lens", List.of("ior"), GlassType::read, new Dielectric(), Vector3d.ONE,
-                0, 0, 1, 1);
+        MaterialType lens = new MaterialType("lens", List.of("ior"), GlassType::read, new Dielectric(),
+                new GlassResponse(), Vector3d.ONE, 0, 0, 1, 1);
         Registry registry = REGISTRY.with(lens);
         String yaml = """
                 objects:
@@ -119,15 +121,16 @@ class MaterialRecipeTest {
      */
     @Test
     void aTypeIsSampledAtTheValuesItDeclaresForItsPhysicalKeys() {
-        MaterialType lens = new MaterialType("lens", List.of("ior", "roughness"), GlassType::read, new Dielectric(),
-                Vector3d.ONE, 0, 0, 1, 1);
+        MaterialType lens = new MaterialType("lens", List.of("ior", "roughness"), GlassType::read,
+                new Dielectric(), new GlassResponse(), Vector3d.ONE, 0, 0, 1, 1);
         assertEquals(List.of(), lens.samples());
         MaterialType sampled = lens.sampledAt("ior", 1.2, 2).sampledAt("roughness", 0, 0.5);
         assertEquals(List.of(new Material("lens", Vector3d.ONE, 0, 0, 1, 1, 1.2, 0),
                 new Material("lens", Vector3d.ONE, 0, 0, 1, 1, 1.2, 0.5),
                 new Material("lens", Vector3d.ONE, 0, 0, 1, 1, 2, 0),
                 new Material("lens", Vector3d.ONE, 0, 0, 1, 1, 2, 0.5)), sampled.samples());
-        assertEquals(List.of(GlowType.TYPE.preset()), GlowType.TYPE.samples(), "a type without physical keys: its preset");
+        assertEquals(List.of(GlowType.TYPE.preset()), GlowType.TYPE.samples(),
+                "a type without physical keys: its preset");
         assertThrows(IllegalArgumentException.class, () -> GlowType.TYPE.sampledAt("ior", 1.5));
         assertThrows(IllegalArgumentException.class, () -> lens.sampledAt("kd", 0.5));
     }

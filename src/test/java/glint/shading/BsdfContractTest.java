@@ -87,8 +87,8 @@ class BsdfContractTest {
 
     static Materials materials(Case c, double color) {
         Material m = c.material();
-        return Materials.of(List.of(new Materials.Parameters(c.type().bsdf(), new Vector3d(color, color, color), m.kd(),
-                m.ks(), m.kt(), m.shininess(), m.ior(), m.roughness())));
+        return Materials.of(List.of(new Materials.Parameters(c.type().bsdf(), c.type().response(),
+                new Vector3d(color, color, color), m.kd(), m.ks(), m.kt(), m.shininess(), m.ior(), m.roughness())));
     }
 
     /** The surface met: its normal faces wo; from the back the normal is the outward one reversed. */
