@@ -4,16 +4,21 @@ import glint.input.InputException;
 import glint.math.Vector3d;
 import glint.scene.Material;
 import glint.shading.Dielectric;
+import glint.shading.GlassResponse;
 import java.util.List;
 
 /**
- * {@code {type: glass, ior: n}}: a dielectric, scattered by {@link Dielectric} (index of refraction
- * n); it reads {@code ior} besides the common keys.
+ * {@code {type: glass, ior: n, roughness: r}}: a dielectric, scattered by {@link Dielectric} (index of
+ * refraction n, smooth at roughness 0, frosted above); it reads {@code ior} and {@code roughness}
+ * besides the common keys.
  */
 public final class GlassType {
 
-    public static final MaterialType TYPE = new MaterialType("glass", List.of("ior"), GlassType::read,
-            new Dielectric(), Vector3d.ONE, 0.01, 0.2, 0.79, 125);
+    public static final MaterialType TYPE = new MaterialType("glass", List.of("ior", "roughness"),
+            (fields, common) -> MetalType.read(fields, read(fields, common)), new Dielectric(), new GlassResponse(),
+            Vector3d.ONE, 0.01, 0.2, 0.79, 125)
+            .sampledAt("ior", 0.75, 1.5, 2.4)
+            .sampledAt("roughness", 0, 0.2, 0.5, 1);
 
     /** The range of ior: far wider than that of real media (about 1 to 4) and their ratios. */
     static final double MIN_IOR = 0.1, MAX_IOR = 100;

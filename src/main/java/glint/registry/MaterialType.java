@@ -4,13 +4,17 @@ import glint.input.InputException;
 import glint.math.Vector3d;
 import glint.scene.Material;
 import glint.shading.Bsdf;
+import glint.shading.WhittedResponse;
 import java.util.ArrayList;
+import java.util.LinkedHashMap;
 import java.util.List;
+import java.util.Map;
 
 /**
  * A kind of material, registered once in {@link Registry}: its name in scene files (also the name
  * of its preset material), the keys a material of the type reads and its reader, the preset's
- * values, and its {@link Bsdf}, how the physically based model scatters light at it. Every type
+ * values, its {@link Bsdf}, how the physically based model scatters light at it, and its
+ * {@link WhittedResponse}, what Whitted's shading models ask of it besides. Every type
  * reads the colour and the phong coefficients ({@link #COMMON_KEYS}) over its preset, because the
  * phong model reads kd, ks, kt and shininess of every material whatever its type and refracts any
  * material with kt above 0 (at its ior, the preset's 1.5 unless the type reads {@code ior}); a
@@ -37,7 +41,10 @@ public final class MaterialType {
     private final List<String> keys;
     private final Reader reader;
     private final Bsdf bsdf;
+    private final WhittedResponse response;
     private final Material preset;
+    /** Per physical key: the values the contract tests sample a material of the type at ({@link #samples}). */
+    private final Map<String, double[]> sampleValues;
 
     /** Reads the physical parameters a type reads from a material's mapping. */
     @FunctionalInterface
@@ -54,8 +61,8 @@ public final class MaterialType {
      * with {@code reader}, whose preset has the given colour and phong coefficients, ior 1.5 and
      * roughness 0.
      */
-    public MaterialType(String name, List<String> physicalKeys, Reader reader, Bsdf bsdf, Vector3d color,
-                        double kd, double ks, double kt, double shininess) {
+    public MaterialType(String name, List<String> physicalKeys, Reader reader, Bsdf bsdf, WhittedResponse response,
+                        Vector3d color, double kd, double ks, double kt, double shininess) {
         if (!PHYSICAL_KEYS.containsAll(physicalKeys)) {
             throw new IllegalArgumentException("material type " + name + " reads " + physicalKeys
                     + ", but a material's physical parameters are " + PHYSICAL_KEYS);
@@ -66,12 +73,79 @@ public final class MaterialType {
         this.keys = List.copyOf(all);
         this.reader = reader;
         this.bsdf = bsdf;
+        this.response = response;
         this.preset = new Material(name, color, kd, ks, kt, shininess, 1.5, 0);
+        this.sampleValues = Map.of();
+    }
+
+    private MaterialType(MaterialType type, Map<String, double[]> sampleValues) {
+        name = type.name;
+        keys = type.keys;
+        reader = type.reader;
+        bsdf = type.bsdf;
+        response = type.response;
+        preset = type.preset;
+        this.sampleValues = sampleValues;
     }
 
     /** A type that reads the common keys only. */
-    public MaterialType(String name, Bsdf bsdf, Vector3d color, double kd, double ks, double kt, double shininess) {
-        this(name, List.of(), (fields, common) -> common, bsdf, color, kd, ks, kt, shininess);
+    public MaterialType(String name, Bsdf bsdf, WhittedResponse response, Vector3d color, double kd, double ks,
+                        double kt, double shininess) {
+        this(name, List.of(), (fields, common) -> common, bsdf, response, color, kd, ks, kt, shininess);
+    }
+
+    /**
+     * This type, sampled at {@code values} of its physical key {@code key} (within the key's range: its
+     * ends and values between, where its BSDF changes kind or shape) by the tests every registered type
+     * gets ({@code glint.shading.BsdfContractTest}); a type declares them for each physical key it reads.
+     */
+    public MaterialType sampledAt(String key, double... values) {
+        if (!keys.contains(key) || COMMON_KEYS.contains(key) || values.length == 0) {
+            throw new IllegalArgumentException("material type " + name + " cannot be sampled at " + key
+                    + ": not a physical key it reads, or no values");
+        }
+        Map<String, double[]> all = new LinkedHashMap<>(sampleValues);
+        all.put(key, values.clone());
+        return new MaterialType(this, all);
+    }
+
+    /** The physical keys this type reads ({@link #keys} besides the common ones). */
+    public List<String> physicalKeys() {
+        return keys.subList(COMMON_KEYS.size(), keys.size());
+    }
+
+    /** The values {@link #sampledAt} declared for physical key {@code key}; empty if none. */
+    public double[] sampleValues(String key) {
+        double[] values = sampleValues.get(key);
+        return values == null ? new double[0] : values.clone();
+    }
+
+    /**
+     * The materials the contract tests sample: the preset with every combination of the declared
+     * values of its physical keys (the preset alone for a type that reads none).
+     */
+    public List<Material> samples() {
+        List<Material> samples = List.of(preset);
+        for (String key : physicalKeys()) {
+            List<Material> next = new ArrayList<>();
+            for (Material m : samples) {
+                for (double v : sampleValues(key)) {
+                    next.add(with(m, key, v));
+                }
+            }
+            samples = next;
+        }
+        return samples;
+    }
+
+    private static Material with(Material m, String key, double value) {
+        return switch (key) {
+            case "ior" -> new Material(m.type(), m.color(), m.kd(), m.ks(), m.kt(), m.shininess(), value,
+                    m.roughness());
+            case "roughness" -> new Material(m.type(), m.color(), m.kd(), m.ks(), m.kt(), m.shininess(), m.ior(),
+                    value);
+            default -> throw new IllegalArgumentException("no physical key " + key);
+        };
     }
 
     /** The name used in scene files. */
@@ -86,6 +160,11 @@ public final class MaterialType {
 
     public Bsdf bsdf() {
         return bsdf;
+    }
+
+    /** What Whitted's shading models ask of a material of this type besides its BSDF. */
+    public WhittedResponse response() {
+        return response;
     }
 
     /** The material its name alone means; a material of this type written in a scene starts from it. */

@@ -4,6 +4,7 @@ import glint.input.InputException;
 import glint.math.Vector3d;
 import glint.scene.Material;
 import glint.shading.Conductor;
+import glint.shading.MetalResponse;
 import java.util.List;
 
 /**
@@ -13,7 +14,8 @@ import java.util.List;
 public final class MetalType {
 
     public static final MaterialType TYPE = new MaterialType("metal", List.of("roughness"), MetalType::read,
-            new Conductor(), new Vector3d(0.9, 0.9, 0.9), 0.1, 0.7, 0.0, 50);
+            new Conductor(), new MetalResponse(), new Vector3d(0.9, 0.9, 0.9), 0.1, 0.7, 0.0, 50)
+            .sampledAt("roughness", 0, 0.2, 0.5, 1);
 
     private MetalType() {
     }

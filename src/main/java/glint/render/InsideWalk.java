@@ -127,7 +127,7 @@ final class InsideWalk {
             it.countRay();
             Surface s = v.surface;
             s.setInside(end, cosEnd, it.epsilon(), material, primitive);
-            model.direct(it, s, ux, uy, uz, v.light, v.f, v.sum);
+            it.direct(v, ux, uy, uz, level);
             SingleRays rays = v.rays;
             boolean sameAngle = previous != null && cosEnd == previous.surface.cosIncident;
             if (sameAngle) {

@@ -126,26 +126,40 @@ abstract class Integrator implements LightQuery {
     }
 
     /**
-     * Light i seen from surface s, into {@code out} (with {@code out.cosine} = n.l): the fraction of
-     * it that reaches s, through the shadow pass of whatever its shadow ray meets; 0 where the light
-     * is behind the surface or blocked. A light with a size is sampled by the numbers
-     * {@link #lightNumbers} draws for it.
+     * Light i seen from surface s, into {@code out} (with {@code out.cosine} = |n.l|): the fraction of
+     * it that reaches s, through the shadow pass of whatever its shadow ray meets; 0 where it is
+     * blocked, and where it is behind the surface unless {@code through}, when the shadow ray leaves
+     * from the far side. A light with a size is sampled by the numbers {@link #lightNumbers} draws for
+     * it, seen from the shadow ray's origin, so that the ray's length is the distance to the light.
      */
     @Override
-    public final double lightReaching(Surface s, int i, LightSample out) {
-        boolean found;
-        if (lights.isDelta(i)) {
-            found = lights.sample(i, s.px, s.py, s.pz, 0, 0, out);
-        } else { // seen from the shadow ray's origin, so that the ray's length is the distance to the light
+    public final double lightReaching(Surface s, int i, boolean through, LightSample out) {
+        boolean delta = lights.isDelta(i);
+        double u1 = 0, u2 = 0;
+        if (!delta) {
             PathSamples numbers = lightNumbers(i);
-            found = lights.sample(i, s.nearX(), s.nearY(), s.nearZ(), numbers.u1, numbers.u2, out);
+            u1 = numbers.u1;
+            u2 = numbers.u2;
         }
+        boolean found = delta ? lights.sample(i, s.px, s.py, s.pz, 0, 0, out)
+                : lights.sample(i, s.nearX(), s.nearY(), s.nearZ(), u1, u2, out);
         double cosine = found ? out.dirX * s.nx + out.dirY * s.ny + out.dirZ * s.nz : 0;
-        if (!(cosine > 0)) { // NaN too: no light from an undefined direction
+        if (cosine > 0) {
+            out.cosine = cosine;
+            return transmittance(s, out, i, true);
+        }
+        if (!through || !(cosine < 0)) { // NaN too: no light from an undefined direction
             return 0;
         }
-        out.cosine = cosine;
-        return transmittance(s, out, i);
+        if (!delta && !lights.sample(i, s.farX(), s.farY(), s.farZ(), u1, u2, out)) {
+            return 0;
+        }
+        cosine = out.dirX * s.nx + out.dirY * s.ny + out.dirZ * s.nz;
+        if (!(cosine < 0)) {
+            return 0;
+        }
+        out.cosine = -cosine;
+        return transmittance(s, out, i, false);
     }
 
     /**
@@ -156,18 +170,22 @@ abstract class Integrator implements LightQuery {
 
     /**
      * The fraction of light i, sampled as {@code light}, that reaches surface s: a shadow ray from s
-     * towards the light, up to it, through the scene's shadow pass of each primitive it meets. A ray
+     * (from its {@code near} side, or its far one) towards the light, up to it, through the scene's shadow pass of each primitive it meets. A ray
      * towards a light with a size (sampled from the ray's origin) stops short of the point sampled on
      * it by {@link #SHORT_OF_LIGHT} of its length, so that the light's own body never shadows it.
      */
-    private double transmittance(Surface s, LightSample light, int i) {
+    private double transmittance(Surface s, LightSample light, int i, boolean near) {
         rays++;
         double tMax = light.distance;
         if (!lights.isDelta(i) && tMax < Double.POSITIVE_INFINITY) {
             tMax *= 1 - SHORT_OF_LIGHT;
         }
-        return shadowAggregate[i].transmittance(s.nearX(), s.nearY(), s.nearZ(), light.dirX, light.dirY, light.dirZ,
-                tMax, s.skipNear, scene.shadowPass, stack);
+        if (near) {
+            return shadowAggregate[i].transmittance(s.nearX(), s.nearY(), s.nearZ(), light.dirX, light.dirY,
+                    light.dirZ, tMax, s.skipNear, scene.shadowPass, stack);
+        }
+        return shadowAggregate[i].transmittance(s.farX(), s.farY(), s.farZ(), light.dirX, light.dirY, light.dirZ,
+                tMax, s.skipFar, scene.shadowPass, stack);
     }
 
     /**

@@ -114,7 +114,7 @@ final class PathIntegrator extends Integrator {
             int dimension = (vertex - 1) * DIMENSIONS_PER_VERTEX;
             random.pair(dimension);
             if (!bsdf.sample(materials, s, -dx, -dy, -dz, random.u1, random.u2, random.single(dimension + 1), next)
-                    || vertex >= hitsLeft && next.delta) {
+                    || vertex >= hitsLeft && next.delta()) {
                 break;
             }
             throughputR *= next.weightR;
@@ -129,21 +129,22 @@ final class PathIntegrator extends Integrator {
                 throughputG /= survive;
                 throughputB /= survive;
             }
-            ox = next.transmitted ? s.farX() : s.nearX();
-            oy = next.transmitted ? s.farY() : s.nearY();
-            oz = next.transmitted ? s.farZ() : s.nearZ();
+            ox = next.transmitted() ? s.farX() : s.nearX();
+            oy = next.transmitted() ? s.farY() : s.nearY();
+            oz = next.transmitted() ? s.farZ() : s.nearZ();
             dx = next.wiX;
             dy = next.wiY;
             dz = next.wiZ;
-            if (!nearest(ox, oy, oz, dx, dy, dz, next.transmitted ? s.skipFar : s.skipNear,
-                    next.transmitted ? s.insideFar : s.insideNear, hit)) {
+            if (!nearest(ox, oy, oz, dx, dy, dz, next.transmitted() ? s.skipFar : s.skipNear,
+                    next.transmitted() ? s.insideFar : s.insideNear, hit)) {
                 escapedFrom(s, next, dx, dy, dz, vertex < hitsLeft);
                 sumR += throughputR * lit.r;
                 sumG += throughputG * lit.g;
                 sumB += throughputB * lit.b;
                 break;
             }
-            emittedWeight = next.delta ? 1 : weightOfLightMet(s, next, hit.primitive, dx, dy, dz);
+            emittedWeight = next.delta() || scene.lightsWithSize == 0 ? 1
+                    : weightOfLightMet(s, next, hit.primitive, dx, dy, dz);
         }
         radiance.set(sumR, sumG, sumB);
     }
@@ -177,7 +178,7 @@ final class PathIntegrator extends Integrator {
         for (int k = 0, n = lights.countAtInfinity(); k < n; k++) {
             int i = lights.atInfinity(k);
             lights.arriving(i, dx, dy, dz, f);
-            double w = next.delta ? 1 : Mis.powerHeuristic(next.pdf, lights.pdf(i, s.px, s.py, s.pz, dx, dy, dz));
+            double w = next.delta() ? 1 : Mis.powerHeuristic(next.pdf, lights.pdf(i, s.px, s.py, s.pz, dx, dy, dz));
             r += w * f.r;
             g += w * f.g;
             b += w * f.b;

@@ -5,6 +5,7 @@ import glint.accel.AggregatePolicy;
 import glint.geometry.PrimitiveKind;
 import glint.geometry.Primitives;
 import glint.registry.LightType;
+import glint.registry.MaterialType;
 import glint.registry.Registry;
 import glint.registry.ShapeType;
 import glint.scene.Camera;
@@ -93,8 +94,8 @@ public final class RenderScene {
         for (int i = 0; i < compiledLights.size(); i++) {
             if (compiledLights.get(i).body() != null) {
                 bodyMaterial[i] = parameters.size();
-                parameters.add(new Materials.Parameters(LAMP_BODY, compiledLights.get(i).bodyRadiance(), 0, 0, 0, 0, 1,
-                        0));
+                parameters.add(new Materials.Parameters(LAMP_BODY, LAMP_BODY, compiledLights.get(i).bodyRadiance(), 0, 0,
+                        0, 0, 1, 0));
             }
         }
         for (int p = 0; p < materialOf.length; p++) {
@@ -106,7 +107,7 @@ public final class RenderScene {
         shadowPass = new double[materialOf.length];
         for (int p = 0; p < materialOf.length && settings.shading() == Shading.PHONG; p++) {
             int m = materialOf[p];
-            shadowPass[p] = materials.bsdf(m).transmits() ? materials.kt(m) : 0;
+            shadowPass[p] = materials.response(m).transmits() ? materials.kt(m) : 0;
         }
         lights = Lights.of(compiledLights.stream().map(LightType.Compiled::light).toList());
         int withSize = 0;
@@ -212,8 +213,9 @@ public final class RenderScene {
     }
 
     private static Materials.Parameters parameters(Registry registry, Material m) {
-        return new Materials.Parameters(registry.material(m.type()).bsdf(), m.color(), m.kd(), m.ks(), m.kt(), m.shininess(), m.ior(),
-                m.roughness());
+        MaterialType type = registry.material(m.type());
+        return new Materials.Parameters(type.bsdf(), type.response(), m.color(), m.kd(), m.ks(), m.kt(), m.shininess(),
+                m.ior(), m.roughness());
     }
 
     private static int indexOf(List<Material> materials, Material material) {

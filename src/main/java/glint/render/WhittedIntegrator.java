@@ -33,12 +33,15 @@ final class WhittedIntegrator extends Integrator implements ShadingContext {
     // the camera ray whose path is being traced, which seeds its random decisions, and how many it made
     private int pathPixel, pathFrame, pathSample, pathDraws;
     /**
-     * The numbers of the samples of lights with a size along the path, each stratified over the
-     * pixel's samples: the k-th light sample of the path takes dimension k, so the camera ray's
-     * hit (whose lights are sampled first) sees its lights' cones evenly covered by the pixel's samples.
+     * The numbers of the samples of lights with a size, each stratified over the pixel's samples: light
+     * i at depth k of the path (the camera ray's hit is depth 0) takes dimension k x lights + i, so that
+     * every hit's lights are evenly covered by the pixel's samples, and a hit's numbers do not depend on
+     * which other rays the path traced (a deeper or less pruned image draws the same ones).
      */
     private final PathSamples lightSamples = new PathSamples();
-    private int lightDraws;
+    /** The depth of the vertex being lit, set by {@link #direct}. */
+    private int lightDepth;
+    private int recursionMax;
     /** Scratch: a light at infinity seen by an escaping ray. */
     private final Rgb arriving = new Rgb();
 
@@ -46,6 +49,7 @@ final class WhittedIntegrator extends Integrator implements ShadingContext {
     void prepared(RenderSettings settings) {
         model = settings.shading() == Shading.PHONG ? PHONG : COOK_TORRANCE;
         minWeight = settings.minWeight();
+        recursionMax = settings.recursionMax();
         roulette = settings.pruning() == RenderSettings.Pruning.ROULETTE;
         if (vertices.length <= settings.recursionMax()) {
             PathVertex[] grown = new PathVertex[settings.recursionMax() + 1];
@@ -64,13 +68,14 @@ final class WhittedIntegrator extends Integrator implements ShadingContext {
         pathFrame = frameIndex;
         pathSample = sample;
         pathDraws = 0;
-        lightSamples.begin(pixelIndex, frameIndex, sample, samples);
-        lightDraws = 0;
+        if (scene.lightsWithSize > 0) {
+            lightSamples.begin(pixelIndex, frameIndex, sample, samples);
+        }
     }
 
     @Override
     PathSamples lightNumbers(int light) {
-        lightSamples.pair(lightDraws++);
+        lightSamples.pair(lightDepth * lights.count() + light);
         return lightSamples;
     }
 
@@ -128,7 +133,7 @@ final class WhittedIntegrator extends Integrator implements ShadingContext {
         Surface s = v.surface;
         Rgb sum = v.sum;
         describe(v.hit, ox, oy, oz, dx, dy, dz, s);
-        model.direct(this, s, dx, dy, dz, v.light, v.f, sum);
+        direct(v, dx, dy, dz, hitsLeft);
         if (hitsLeft > 1) {
             SingleRays rays = v.rays;
             model.specular(this, s, rays);
@@ -136,6 +141,16 @@ final class WhittedIntegrator extends Integrator implements ShadingContext {
         }
         v.radiance.set(sum.r, sum.g, sum.b);
         return v.radiance;
+    }
+
+    /**
+     * The light vertex v's surface sends back along d by itself, into its sum: the shading model's
+     * {@code direct}, whose samples of lights with a size take the numbers of the vertex's depth
+     * ({@link #lightNumbers}), {@code hitsLeft} the hits the path may still shade there.
+     */
+    void direct(PathVertex v, double dx, double dy, double dz, int hitsLeft) {
+        lightDepth = recursionMax - hitsLeft;
+        model.direct(this, v.surface, dx, dy, dz, v.light, v.f, v.sum);
     }
 
     /**

@@ -3,20 +3,10 @@ package glint.shading;
 /**
  * A metal (docs/conventions.md, "cook-torrance"): the GGX microfacet lobe with Schlick's Fresnel, F0 =
  * the material's colour, and height-correlated Smith masking; a delta mirror below
- * {@link Microfacet#MIRROR_ALPHA}. Whitted's integrator follows its mirror direction and lights its
- * lobe (the highlight).
+ * {@link Microfacet#MIRROR_ALPHA}. Whitted's integrator follows its mirror direction
+ * ({@link MetalResponse}) and lights its lobe (the highlight).
  */
 public final class Conductor implements Bsdf {
-
-    /** The mirrored ray, weighted by Schlick's Fresnel per channel, whatever the roughness. */
-    @Override
-    public void specular(Materials m, Surface s, SingleRays out) {
-        int material = s.material;
-        double cos = s.cosIncident;
-        out.setReflect(Optics.schlick(m.color(material, 0), cos), Optics.schlick(m.color(material, 1), cos),
-                Optics.schlick(m.color(material, 2), cos));
-        out.setTransmit(0, 0, 0);
-    }
 
     /**
      * f = D(h) G2 F(wo.h) / (4 wo.n wi.n), the GGX lobe, finite while either cosine is at least 1e-300;
@@ -68,13 +58,12 @@ public final class Conductor implements Bsdf {
         int material = s.material;
         double alpha = m.alpha(material);
         double cosOut = s.cosIncident;
-        out.transmitted = false;
         if (alpha < Microfacet.MIRROR_ALPHA) {
             mirror(s, woX, woY, woZ, out);
             out.setWeight(Optics.schlick(m.color(material, 0), cosOut), Optics.schlick(m.color(material, 1), cosOut),
                     Optics.schlick(m.color(material, 2), cosOut));
             out.pdf = 0;
-            out.delta = true;
+            out.lobe = Lobe.SPECULAR_REFLECTION;
             return true;
         }
         if (!(cosOut > 0)) {
@@ -100,13 +89,13 @@ public final class Conductor implements Bsdf {
                 masking * Optics.schlick(m.color(material, 1), cosOutHalf),
                 masking * Optics.schlick(m.color(material, 2), cosOutHalf));
         out.pdf = Microfacet.reflectedPdf(cosOut, h[2], alpha);
-        out.delta = false;
+        out.lobe = Lobe.GLOSSY_REFLECTION;
         return true;
     }
 
     @Override
-    public boolean isDelta(Materials m, int material) {
-        return m.alpha(material) < Microfacet.MIRROR_ALPHA;
+    public int lobes(Materials m, int material) {
+        return m.alpha(material) < Microfacet.MIRROR_ALPHA ? Lobe.SPECULAR_REFLECTION : Lobe.GLOSSY_REFLECTION;
     }
 
     /** Sets out's direction to wo mirrored about s's normal. */

@@ -4,7 +4,7 @@ package glint.shading;
  * The physically based model (docs/conventions.md, "cook-torrance") in Whitted's integrator: each
  * material scatters light by its own {@link Bsdf}. A surface sends back its own light, ambient x its
  * albedo where ambient reaches it, and the lights it sees through its lobes that are not delta; it
- * sends on the single rays of {@link Bsdf#specular}. Shadows are hard; glass blocks light.
+ * sends on the single rays of its {@link WhittedResponse}. Shadows are hard; glass blocks light.
  */
 public final class CookTorrance implements ShadingModel {
 
@@ -35,6 +35,6 @@ public final class CookTorrance implements ShadingModel {
     @Override
     public void specular(ShadingContext c, Surface s, SingleRays out) {
         Materials m = c.materials();
-        m.bsdf(s.material).specular(m, s, out);
+        m.response(s.material).specular(m, s, out);
     }
 }

@@ -5,18 +5,6 @@ public final class Lambert implements Bsdf {
 
     private static final double INV_PI = 1 / Math.PI;
 
-    /** A matte surface sends no single rays on. */
-    @Override
-    public void specular(Materials m, Surface s, SingleRays out) {
-        out.setReflect(0, 0, 0);
-        out.setTransmit(0, 0, 0);
-    }
-
-    @Override
-    public boolean ambientLit() {
-        return true;
-    }
-
     @Override
     public void evaluate(Materials m, Surface s, double woX, double woY, double woZ, double wiX, double wiY,
                          double wiZ, Rgb f) {
@@ -51,13 +39,12 @@ public final class Lambert implements Bsdf {
         out.pdf = z * INV_PI;
         int material = s.material;
         out.setWeight(m.color(material, 0), m.color(material, 1), m.color(material, 2));
-        out.delta = false;
-        out.transmitted = false;
+        out.lobe = Lobe.DIFFUSE_REFLECTION;
         return true;
     }
 
     @Override
-    public boolean isDelta(Materials m, int material) {
-        return false;
+    public int lobes(Materials m, int material) {
+        return Lobe.DIFFUSE_REFLECTION;
     }
 }

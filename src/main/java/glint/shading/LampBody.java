@@ -4,7 +4,7 @@ package glint.shading;
  * The surface of a light with a body (a sphere light): black, it sends back nothing and sends on
  * no ray; it sends only the light's radiance, its material's colour, uniformly outwards. Not a material type a scene names: the scene compiler gives each such light's body one.
  */
-public final class LampBody implements Bsdf {
+public final class LampBody implements Bsdf, WhittedResponse {
 
     @Override
     public void evaluate(Materials m, Surface s, double woX, double woY, double woZ, double wiX, double wiY,
@@ -25,12 +25,13 @@ public final class LampBody implements Bsdf {
         return false;
     }
 
-    /** No light sample could add anything to black: the light loop is skipped. */
+    /** No lobes: no light sample could add anything to black, and the light loop is skipped. */
     @Override
-    public boolean isDelta(Materials m, int material) {
-        return true;
+    public int lobes(Materials m, int material) {
+        return 0;
     }
 
+    /** To Whitted's models: no single rays on. */
     @Override
     public void specular(Materials m, Surface s, SingleRays out) {
         out.setReflect(0, 0, 0);

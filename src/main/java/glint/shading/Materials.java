@@ -11,19 +11,22 @@ public final class Materials {
     static final double MIN_ALPHA = 1e-4;
 
     private final Bsdf[] bsdf;
+    private final WhittedResponse[] response;
     private final double[] color; // 3 per material, linear RGB
     private final double[] kd, ks, kt, shininess, ior;
     private final double[] alpha; // GGX alpha = roughness^2; 0: no highlight
     private final boolean exactFresnel;
     /** Per material: whether Whitted's ambient light reaches it, and whether it sends light of its own. */
     private final boolean[] ambientLit, emits;
-    /** Per material: whether all its lobes are delta ({@link Bsdf#isDelta}), asked once. */
+    /** Per material: the kinds of its lobes ({@link Bsdf#lobes}), asked once, and whether all are delta. */
+    private final int[] lobes;
     private final boolean[] delta;
 
     private Materials(List<Parameters> materials, boolean exactFresnel) {
         this.exactFresnel = exactFresnel;
         int n = materials.size();
         bsdf = new Bsdf[n];
+        response = new WhittedResponse[n];
         color = new double[3 * n];
         kd = new double[n];
         ks = new double[n];
@@ -33,11 +36,13 @@ public final class Materials {
         alpha = new double[n];
         ambientLit = new boolean[n];
         emits = new boolean[n];
+        lobes = new int[n];
         delta = new boolean[n];
         for (int i = 0; i < n; i++) {
             Parameters m = materials.get(i);
             bsdf[i] = m.bsdf;
-            ambientLit[i] = m.bsdf.ambientLit();
+            response[i] = m.response;
+            ambientLit[i] = m.response.ambientLit();
             emits[i] = m.bsdf.emits();
             color[3 * i] = m.color.x();
             color[3 * i + 1] = m.color.y();
@@ -50,13 +55,14 @@ public final class Materials {
             alpha[i] = m.roughness > 0 ? Math.max(m.roughness * m.roughness, MIN_ALPHA) : 0;
         }
         for (int i = 0; i < n; i++) {
-            delta[i] = bsdf[i].isDelta(this, i);
+            lobes[i] = bsdf[i].lobes(this, i);
+            delta[i] = Lobe.allDelta(lobes[i]);
         }
     }
 
-    /** A material as the compiled scene keeps it: its type's BSDF and its values. */
-    public record Parameters(Bsdf bsdf, Vector3d color, double kd, double ks, double kt, double shininess,
-                             double ior, double roughness) {
+    /** A material as the compiled scene keeps it: its type's BSDF and Whitted's response, and its values. */
+    public record Parameters(Bsdf bsdf, WhittedResponse response, Vector3d color, double kd, double ks, double kt,
+                             double shininess, double ior, double roughness) {
     }
 
     /** The materials numbered in the order given. */
@@ -83,12 +89,25 @@ public final class Materials {
         return bsdf[m];
     }
 
-    /** Whether all of material m's lobes are delta: no light sample sees them ({@link Bsdf#isDelta}). */
+    /** Whether all of material m's lobes are delta (or it has none): no light sample sees them. */
     public boolean isDelta(int m) {
         return delta[m];
     }
 
-    /** Whether Whitted's ambient light reaches material m, times its colour ({@link Bsdf#ambientLit}). */
+    /**
+     * The kinds of material m's lobes ({@link Bsdf#lobes}, {@link Lobe}'s bits): {@code
+     * Lobe.transmitsNonDelta(lobes(m))} asks whether light samples reach it through the surface.
+     */
+    public int lobes(int m) {
+        return lobes[m];
+    }
+
+    /** What Whitted's shading models ask of material m besides its BSDF: its single rays, ambient, shadows. */
+    public WhittedResponse response(int m) {
+        return response[m];
+    }
+
+    /** Whether Whitted's ambient light reaches material m, times its colour ({@link WhittedResponse#ambientLit}). */
     public boolean ambientLit(int m) {
         return ambientLit[m];
     }

@@ -1,8 +1,8 @@
 package glint.shading;
 
 /**
- * The GGX (Trowbridge-Reitz) microfacet distribution of docs/conventions.md ("cook-torrance", metal)
- * as a full lobe: Smith's masking (height-correlated for the pair of directions) and the sampling of
+ * The GGX (Trowbridge-Reitz) microfacet distribution of docs/conventions.md ("cook-torrance", metal
+ * and rough glass) as a full lobe: Smith's masking (height-correlated for the pair of directions) and the sampling of
  * the normals visible from a direction (Heitz 2018, "Sampling the GGX Distribution of Visible
  * Normals"). Directions are in the local space of the surface (normal +z), unit length, alpha =
  * roughness^2.
@@ -10,7 +10,7 @@ package glint.shading;
 public final class Microfacet {
 
     /**
-     * Below this alpha a conductor is a delta mirror to the path integrator: the lobe's width (about
+     * Below this alpha a conductor is a delta mirror (and glass smooth) to the path integrator: the lobe's width (about
      * alpha radians) is then under 0.06 degrees, less than a pixel of the default view (60 degrees
      * over 800 pixels, 0.075 degrees a pixel), and sampling it only adds fireflies from point
      * lights. Chosen from that geometry, not measured.
@@ -94,5 +94,18 @@ public final class Microfacet {
      */
     static double reflectedPdf(double cosOut, double cosHalf, double alpha) {
         return g1(cosOut, alpha) * Optics.ggx(cosHalf, alpha) / (4 * cosOut);
+    }
+
+    /**
+     * The density per solid angle of wi = wo refracted through a visible normal h sampled as
+     * {@link #sampleVisibleNormal}, at eta = n_o / n_i: G1(wo) D(h) (wo.h) / wo.z, the normal's
+     * density, times the Jacobian of the refraction |d h / d wi| = |wi.h| / (eta wo.h + wi.h)^2
+     * (Walter et al. 2007, eq. 17, with the indices' ratio eta).
+     */
+    static double refractedPdf(double cosOut, double cosHalf, double cosOutHalf, double cosInHalf, double eta,
+                               double alpha) {
+        double denominator = eta * cosOutHalf + cosInHalf;
+        return g1(cosOut, alpha) * Optics.ggx(cosHalf, alpha) * cosOutHalf / cosOut * Math.abs(cosInHalf)
+                / (denominator * denominator);
     }
 }

@@ -18,7 +18,7 @@ public final class Phong implements ShadingModel {
         double specR = 0, specG = 0, specB = 0;
         Lights lights = c.lights();
         for (int i = 0; i < lights.count(); i++) {
-            double pass = c.lightReaching(s, i, light);
+            double pass = c.lightReaching(s, i, false, light);
             if (!(pass > 0)) {
                 continue;
             }

@@ -2,7 +2,7 @@ package glint.shading;
 
 /**
  * Scratch value: the factors of the single rays Whitted's integrator follows from a surface in
- * place of its lobes ({@link Bsdf#specular}): the mirrored ray's per channel and, where the surface
+ * place of its lobes ({@link WhittedResponse#specular}): the mirrored ray's per channel and, where the surface
  * refracts, eta = n_incident / n_transmitted and the tint of the refracted ray (0 for none).
  */
 public final class SingleRays {

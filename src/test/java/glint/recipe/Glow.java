@@ -5,7 +5,6 @@ import glint.shading.BsdfSample;
 import glint.shading.Materials;
 import glint.shading.Rgb;
 import glint.shading.Surface;
-import glint.shading.SingleRays;
 
 /**
  * The BSDF of a material type added by the recipe of docs/architecture.md, in test sources only: a
@@ -23,13 +22,6 @@ final class Glow implements Bsdf {
     @Override
     public void emitted(Materials m, Surface s, Rgb out) {
         out.set(m.color(s.material, 0), m.color(s.material, 1), m.color(s.material, 2));
-    }
-
-    /** It sends no single rays on. */
-    @Override
-    public void specular(Materials m, Surface s, SingleRays out) {
-        out.setReflect(0, 0, 0);
-        out.setTransmit(0, 0, 0);
     }
 
     /** It reflects nothing: no lobe to evaluate or sample. */
@@ -51,8 +43,9 @@ final class Glow implements Bsdf {
         return false;
     }
 
+    /** No lobe at all: no light sample sees it. */
     @Override
-    public boolean isDelta(Materials m, int material) {
-        return true;
+    public int lobes(Materials m, int material) {
+        return 0;
     }
 }

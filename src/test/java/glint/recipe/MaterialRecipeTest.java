@@ -10,6 +10,7 @@ import glint.registry.MaterialType;
 import glint.registry.Registry;
 import glint.scene.Material;
 import glint.shading.Dielectric;
+import glint.shading.GlassResponse;
 import java.util.List;
 import org.junit.jupiter.api.Test;
 
@@ -66,12 +67,12 @@ class MaterialRecipeTest {
 
     @Test
     void theNewTypeReadsItsOwnKeysAndAKeyOfAnotherTypeIsRefusedNamingItAndTheFix() {
-        assertEquals("recipe.yaml:2:19: a glow material has no roughness (roughness is a key of metal; write type: "
-                        + "metal, or remove roughness)",
+        assertEquals("recipe.yaml:2:19: a glow material has no roughness (roughness is a key of metal and glass; "
+                        + "write type: metal or type: glass, or remove roughness)",
                 Recipes.error(REGISTRY, "materials:\n  m: {type: glow, roughness: 0.5}\n"));
         // a second type reading ior: both are named
-        MaterialType lens = new MaterialType("lens", List.of("ior"), GlassType::read, new Dielectric(), Vector3d.ONE,
-                0, 0, 1, 1);
+        MaterialType lens = new MaterialType("lens", List.of("ior"), GlassType::read, new Dielectric(),
+                new GlassResponse(), Vector3d.ONE, 0, 0, 1, 1);
         assertEquals("recipe.yaml:2:19: a glow material has no ior (ior is a key of glass and lens; write type: glass "
                         + "or type: lens, or remove ior)",
                 Recipes.error(REGISTRY.with(lens), "materials:\n  m: {type: glow, ior: 1.2}\n"));
@@ -80,13 +81,14 @@ class MaterialRecipeTest {
                 Recipes.error(REGISTRY.with(lens), "materials:\n  m: {type: glow, iro: 1.2}\n"));
         assertEquals("material type lamp reads [power], but a material's physical parameters are [ior, roughness]",
                 assertThrows(IllegalArgumentException.class, () -> new MaterialType("lamp", List.of("power"),
-                        (fields, common) -> common, new Glow(), Vector3d.ONE, 0, 0, 0, 1)).getMessage());
+                        (fields, common) -> common, new Glow(), GlowType.NO_RAYS, Vector3d.ONE, 0, 0, 0, 1))
+                        .getMessage());
     }
 
     @Test
     void aTypeReadsItsKeysWithTheReaderItIsGiven() {
-        MaterialType lens = new MaterialType("lens", List.of("ior"), GlassType::read, new Dielectric(), Vector3d.ONE,
-                0, 0, 1, 1);
+        MaterialType lens = new MaterialType("lens", List.of("ior"), GlassType::read, new Dielectric(),
+                new GlassResponse(), Vector3d.ONE, 0, 0, 1, 1);
         Registry registry = REGISTRY.with(lens);
         String yaml = """
                 objects:
@@ -110,5 +112,26 @@ class MaterialRecipeTest {
         assertEquals(GlowType.TYPE.preset(), Recipes.scene(glowFirst, yaml).objects().get(0).material());
         assertEquals(Registry.STANDARD.materials().get(0).preset(),
                 Recipes.scene(REGISTRY, yaml).objects().get(0).material());
+    }
+
+    /**
+     * A type reading a physical key is sampled by the contract tests at the values it declares, every
+     * combination over its preset; without them it has no sample, which fails
+     * {@code BsdfContractTest} once the type is registered.
+     */
+    @Test
+    void aTypeIsSampledAtTheValuesItDeclaresForItsPhysicalKeys() {
+        MaterialType lens = new MaterialType("lens", List.of("ior", "roughness"), GlassType::read,
+                new Dielectric(), new GlassResponse(), Vector3d.ONE, 0, 0, 1, 1);
+        assertEquals(List.of(), lens.samples());
+        MaterialType sampled = lens.sampledAt("ior", 1.2, 2).sampledAt("roughness", 0, 0.5);
+        assertEquals(List.of(new Material("lens", Vector3d.ONE, 0, 0, 1, 1, 1.2, 0),
+                new Material("lens", Vector3d.ONE, 0, 0, 1, 1, 1.2, 0.5),
+                new Material("lens", Vector3d.ONE, 0, 0, 1, 1, 2, 0),
+                new Material("lens", Vector3d.ONE, 0, 0, 1, 1, 2, 0.5)), sampled.samples());
+        assertEquals(List.of(GlowType.TYPE.preset()), GlowType.TYPE.samples(),
+                "a type without physical keys: its preset");
+        assertThrows(IllegalArgumentException.class, () -> GlowType.TYPE.sampledAt("ior", 1.5));
+        assertThrows(IllegalArgumentException.class, () -> lens.sampledAt("kd", 0.5));
     }
 }

@@ -68,6 +68,36 @@ class AnalyticRadianceTest {
         assertEquals(0, direct.get(4, 4, 0), "depth 1 follows no reflection: the mirror is black");
     }
 
+    /**
+     * Rough glass seen head-on, lit from behind the eye: Whitted's light loop lights its reflection lobe,
+     * f = D(n) F0 G2 / 4 with D(n) = 1 / (pi alpha^2), G2 = 1 and F0 = 0.04 (ior 1.5), untinted by the
+     * colour, times the irradiance 2. Smooth glass has no highlight; phong reads no roughness.
+     */
+    @Test
+    void roughGlassHeadOnShowsItsReflectionLobesHighlightByHand() {
+        String yaml = """
+                camera: {position: [0, 0, 0], look_at: [0, 0, 1], fov: 10}
+                lights:
+                  - {type: directional, direction: [0, 0, 1], intensity: 2}
+                objects:
+                  - {type: sphere, center: [0, 0, 5], radius: 1, material: {type: glass, color: [1, 0.5, 0.25], roughness: %s}}
+                """;
+        FrameBuffer rough = Renders.render(yaml.formatted("0.5"), 9, 9, 1, 1, Shading.COOK_TORRANCE);
+        double alpha = 0.25, expected = 0.04 / (Math.PI * alpha * alpha) / 4 * 2;
+        for (int channel = 0; channel < 3; channel++) {
+            assertEquals(expected, rough.get(4, 4, channel), 1e-6, "channel " + channel);
+        }
+        FrameBuffer smooth = Renders.render(yaml.formatted("0"), 9, 9, 1, 1, Shading.COOK_TORRANCE);
+        assertEquals(0, smooth.get(4, 4, 0));
+        FrameBuffer roughPhong = Renders.render(yaml.formatted("0.5"), 9, 9, 1, 3, Shading.PHONG);
+        FrameBuffer smoothPhong = Renders.render(yaml.formatted("0"), 9, 9, 1, 3, Shading.PHONG);
+        for (int y = 0; y < 9; y++) {
+            for (int x = 0; x < 9; x++) {
+                assertEquals(smoothPhong.get(x, y, 1), roughPhong.get(x, y, 1));
+            }
+        }
+    }
+
     @Test
     void cameraRaysOfAKnownFovHitKnownPoints() {
         // fov 90 -> the image plane at z = 1 spans x in [-1, 1]. A small sphere placed on the ray

@@ -17,24 +17,24 @@ import org.junit.jupiter.params.provider.CsvSource;
 
 /**
  * The path integrator against images of an independent path tracer (src/test/resources/reference-pt,
- * see its README): at its stated settings (400 x 300, 256 samples, depth 64, cook-torrance) the
+ * see its README): at its stated settings (the reference's size, 256 samples, depth 64, cook-torrance) the
  * relative MSE and the mean 8-bit error stay within the stated bounds. (The README's third bound,
  * FLIP, is not computed here.)
  */
 class PathReferenceTest {
 
     @ParameterizedTest
-    @CsvSource({"bounce-box, 3.3e-4, 1.24", "sky-and-sun, 1.1e-4, 0.55"})
+    @CsvSource({"bounce-box, 3.3e-4, 1.24", "sky-and-sun, 1.1e-4, 0.55", "lamp-and-frost, 0.041, 8.9"})
     void matchesThePhysicallyBasedReferenceWithinTheBound(String name, double relMseBound, double levelsBound)
             throws Exception {
         Path folder = Path.of("src/test/resources/reference-pt");
         FrameBuffer reference = PfmReader.read(folder.resolve(name + ".pfm"));
-        assertEquals(400, reference.width());
-        assertEquals(300, reference.height());
+        int width = reference.width(), height = reference.height(); // 400 x 300, or 200 x 150 (the README)
+        assertEquals(width * 3, height * 4);
         Config defaults = Config.defaults();
         RenderSettings settings = new RenderSettings(Shading.COOK_TORRANCE, 64, defaults.minWeight(),
                 defaults.epsilon()).withTransport(LightTransport.PATH);
-        FrameBuffer frame = new FrameBuffer(400, 300);
+        FrameBuffer frame = new FrameBuffer(width, height);
         try (Tracer tracer = new Tracer(2)) {
             tracer.render(RenderScene.compile(SceneLoader.load(folder.resolve(name + ".yaml")), settings), frame, 256, 0,
                     defaults.screenDivider());

@@ -160,11 +160,17 @@ class SceneLoaderErrorTest {
                 materials:
                   gold: {type: metal, ior: 1.5}
                 """);
-        // "  pane: {" 1-9, "kt: 0.5, " 10-18, "roughness" at 19: before the type, still the glass's key check
-        assertError("scenes/x.yaml:2:19: a glass material has no roughness (roughness is a key of metal; write "
-                + "type: metal, or remove roughness)", """
+        // "  pane: {" 1-9, "kt: 0.5, " 10-18, "ior" at 19: before the type, still the metal's key check
+        assertError("scenes/x.yaml:2:19: a metal material has no ior (ior is a key of glass; write type: glass, "
+                + "or remove ior)", """
                 materials:
-                  pane: {kt: 0.5, roughness: 0.2, type: glass}
+                  pane: {kt: 0.5, ior: 1.2, type: metal}
+                """);
+        // roughness is read by two types: both are named
+        assertError("scenes/x.yaml:2:20: a matte material has no roughness (roughness is a key of metal and glass; "
+                + "write type: metal or type: glass, or remove roughness)", """
+                materials:
+                  m: {type: matte, roughness: 0.2}
                 """);
     }
 
@@ -185,8 +191,8 @@ class SceneLoaderErrorTest {
     @Test
     void aKeyOfAnotherMaterialTypeIsCheckedBeforeItsValue() {
         // a matte material's roughness is refused as a key, not as a value out of [0, 1]
-        assertError("scenes/x.yaml:2:20: a matte material has no roughness (roughness is a key of metal; write "
-                + "type: metal, or remove roughness)", """
+        assertError("scenes/x.yaml:2:20: a matte material has no roughness (roughness is a key of metal and glass; "
+                + "write type: metal or type: glass, or remove roughness)", """
                 materials:
                   m: {type: matte, roughness: 7}
                 """);
@@ -232,7 +238,7 @@ class SceneLoaderErrorTest {
                   m: {type: matte, albedo: [1, 1, 1]}
                 """);
         assertError("scenes/x.yaml:2:20: unknown key 'albedo' in material 'm' (expected one of: type, color, kd, ks, kt,"
-                + " shininess, ior)", """
+                + " shininess, ior, roughness)", """
                 materials:
                   m: {type: glass, albedo: [1, 1, 1]}
                 """);
@@ -540,6 +546,19 @@ class SceneLoaderErrorTest {
                 camera:
                   position: [0, 1, -5]
                   fov: 180
+                """);
+    }
+
+    @Test
+    void glassRoughnessOutOfRange() {
+        // "  frost: {type: glass, " is 23 characters: roughness at 24, its value at 35
+        assertError("scenes/x.yaml:2:35: roughness must lie in [0, 1], got 1.5", """
+                materials:
+                  frost: {type: glass, roughness: 1.5}
+                """);
+        assertError("scenes/x.yaml:2:35: roughness must lie in [0, 1], got -0.25", """
+                materials:
+                  frost: {type: glass, roughness: -0.25, ior: 1.5}
                 """);
     }
 

@@ -311,6 +311,22 @@ class SceneLoaderTest {
     }
 
     @Test
+    void glassReadsRoughnessBesidesIor() throws InputException {
+        Scene scene = parse("""
+                materials:
+                  frost: {type: glass, roughness: 0.25, ior: 1.33}
+                  edge: {type: glass, roughness: 1}
+                objects:
+                  - {type: sphere, center: [0, 0, 0], radius: 1, material: frost}
+                  - {type: sphere, center: [0, 0, 0], radius: 1, material: edge}
+                """);
+        assertEquals(0.25, material(scene, 0).roughness());
+        assertEquals(1.33, material(scene, 0).ior());
+        assertEquals(1, material(scene, 1).roughness());
+        assertEquals(1.5, material(scene, 1).ior());
+    }
+
+    @Test
     void namedMaterialsAreSharedByName() throws InputException {
         Scene scene = parse("""
                 objects:
