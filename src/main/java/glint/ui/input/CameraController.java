@@ -47,6 +47,8 @@ public final class CameraController {
     private Vector3d position;
     private Quaternion orientation;
     private double fovDegrees;
+    /** The lens: its radius and the distance of the plane in focus, scene units (Camera's). */
+    private double aperture, focus;
     private double moveSpeed;
     private double turnSpeedDegrees;
     private double speedFactor = 1;
@@ -68,6 +70,8 @@ public final class CameraController {
         this.position = camera.position();
         this.orientation = camera.orientation().normalize();
         this.fovDegrees = camera.fovDegrees();
+        this.aperture = camera.aperture();
+        this.focus = camera.focus();
     }
 
     public void setSpeeds(double newMoveSpeed, double newTurnSpeedDegrees) {
@@ -125,7 +129,7 @@ public final class CameraController {
 
     /** The camera now. */
     public Camera camera() {
-        return new Camera(position, orientation, fovDegrees);
+        return new Camera(position, orientation, fovDegrees, aperture, focus);
     }
 
     /** The flying speed now (config move_speed times the wheel's factor), without Shift. */
