@@ -16,8 +16,12 @@ import java.util.Optional;
  * primitives searched from it once, a box narrowed to the rays between its corners' screen x), which reads
  * the pinhole's screen; a camera whose rays leave different points has each ray of a row searched in the
  * aggregate from its own origin. Implementations are immutable and shared by the render threads.
+ *
+ * <p>A new camera is a class of its own, named in {@code permits} and chosen by {@link #of}; the contract
+ * test ({@code CameraModelContractTest}) holds every permitted class to this interface and fails while one
+ * has no case.
  */
-public interface CameraModel {
+public sealed interface CameraModel permits PinholeCamera, ThinLensCamera {
 
     /** The camera model of a scene's camera: the pinhole at aperture 0 (its rays bit for bit), else a thin lens. */
     static CameraModel of(Camera camera) {
