@@ -98,16 +98,22 @@ public final class SceneView {
 
     /**
      * A click: the lens focused on {@code point}, the point under the mouse, or left as it is when there is
-     * none (the sky); returns what the overlay says.
+     * none (the sky); returns what the overlay says. A pinhole keeps the focus for when its aperture opens,
+     * silently and without drawing anew, as its picture does not depend on it: returns null.
      */
     public String focusOn(Vector3d point) {
+        boolean lens = cameraNow.aperture() > 0;
         if (point == null) {
-            return "nothing under the mouse to focus on; " + controller.lensNote();
+            return lens ? "nothing under the mouse to focus on; " + controller.lensNote() : null;
         }
         if (controller.focusOn(point)) {
-            cameraMoved();
+            if (lens) {
+                cameraMoved();
+            } else {
+                cameraNow = controller.camera();
+            }
         }
-        return controller.lensNote();
+        return lens ? controller.lensNote() : null;
     }
 
     /** M or Tab: the other shading model (phong brings Whitted's integrator); returns what the overlay says. */
