@@ -8,25 +8,33 @@ import glint.shading.Rgb;
 
 /**
  * The camera rays of one tile row, per worker: their unit directions (world space), made by the
- * scene's {@link PinholeCamera} for the whole row before any is traced so that the square roots and
+ * scene's {@link CameraModel} for the whole row before any is traced so that the square roots and
  * divisions of many rays overlap, and the radiance each ray brings back, averaged into the row's
  * pixels once it is traced. Ray i of a row is sample {@code i % sampleCount} of pixel
  * {@code x0 + i / sampleCount}. The arrays grow, never shrink, so a frame allocates nothing once the
  * widest tile has been seen. The row's search (its {@link #frustum}, {@link #narrow} and the hits of
- * {@link #trace}) relies on what the camera promises: every ray leaves its eye.
+ * {@link #trace} among candidates) relies on what a camera of {@link #oneOrigin()} promises: every ray
+ * leaves its eye, through the pinhole's screen. A camera with a lens has each ray's own origin (from
+ * its lens sample, {@link PathSamples#LENS}), and its rows' rays are searched one by one.
  */
 final class CameraRows {
 
     // per frame: the camera's screen per pixel and screen at the image's left and top edges
     private double scaleX, offsetX, scaleY, offsetY;
 
-    // the tile being traced: its camera, image width, pixel columns [x0, x1), and the samples
-    // [firstSample, firstSample + sampleCount) of each pixel's side x side pattern for frame frameIndex
-    private PinholeCamera camera;
-    private int width, x0, x1, side, firstSample, sampleCount, frameIndex;
+    // the tile being traced: its camera (the pinhole, when every ray leaves its eye, else null), image
+    // width and height, pixel columns [x0, x1), and the samples [firstSample, firstSample + sampleCount)
+    // of each pixel's side x side pattern for frame frameIndex
+    private CameraModel camera;
+    private PinholeCamera pinhole;
+    private int width, height, x0, x1, side, firstSample, sampleCount, frameIndex;
 
     /** The row's ray directions, one coordinate an array; written only here, read by tests. */
     double[] dirX = new double[0], dirY = new double[0], dirZ = new double[0];
+    /** The row's ray origins, each ray's own, for a camera whose rays do not all leave one point. */
+    double[] originX = new double[0], originY = new double[0], originZ = new double[0];
+    /** The lens sample of a ray: its two numbers, stratified over the pixel's samples. */
+    private final PathSamples lens = new PathSamples();
     private double[] radianceR = new double[0], radianceG = new double[0], radianceB = new double[0];
     /** Each ray's nearest hit, found for the whole row before any is shaded: distance and primitive. */
     private double[] hitT = new double[0];
@@ -39,14 +47,18 @@ final class CameraRows {
      * [x0, x1), each pixel's samples [firstSample, firstSample + sampleCount) of its
      * {@code samples}-sample stratified pattern for frame {@code frameIndex}.
      */
-    void prepare(PinholeCamera camera, int width, int height, int x0, int x1, int samples, int firstSample,
+    void prepare(CameraModel camera, int width, int height, int x0, int x1, int samples, int firstSample,
                  int sampleCount, int frameIndex) {
-        scaleX = camera.screenPerPixelX(width);
-        offsetX = camera.screenLeft();
-        scaleY = camera.screenPerPixelY(width, height);
-        offsetY = camera.screenTop(width, height);
         this.camera = camera;
+        this.pinhole = camera.oneOrigin() ? (PinholeCamera) camera : null;
+        if (pinhole != null) {
+            scaleX = pinhole.screenPerPixelX(width);
+            offsetX = pinhole.screenLeft();
+            scaleY = pinhole.screenPerPixelY(width, height);
+            offsetY = pinhole.screenTop(width, height);
+        }
         this.width = width;
+        this.height = height;
         this.x0 = x0;
         this.x1 = x1;
         this.side = (int) Math.round(Math.sqrt(samples));
@@ -65,6 +77,14 @@ final class CameraRows {
             hitT = new double[rays];
             hitPrimitive = new int[rays];
         }
+        if (pinhole == null) {
+            if (originX.length < rays) {
+                originX = new double[rays];
+                originY = new double[rays];
+                originZ = new double[rays];
+            }
+            return;
+        }
         for (int ray = 0, n = x1 - x0; ray < n; ray++) {
             centreX[ray] = screenX(x0 + ray + 0.5);
         }
@@ -82,7 +102,7 @@ final class CameraRows {
     void frustum(int y, Frustum out) {
         double left = screenX(x0 - FRUSTUM_MARGIN), right = screenX(x1 + FRUSTUM_MARGIN);
         double top = screenY(y - FRUSTUM_MARGIN), bottom = screenY(y + 1 + FRUSTUM_MARGIN);
-        PinholeCamera c = camera;
+        PinholeCamera c = pinhole;
         c.through(left, top, edges, 0);
         c.through(right, top, edges, 3);
         c.through(right, bottom, edges, 6);
@@ -101,7 +121,7 @@ final class CameraRows {
      * every row of the tile, as screen x does not depend on the row.
      */
     void narrow(Candidates candidates, Primitives primitives) {
-        PinholeCamera c = camera;
+        PinholeCamera c = pinhole;
         double eyeX = c.eyeX(), eyeY = c.eyeY(), eyeZ = c.eyeZ();
         double forwardX = c.forwardX(), forwardY = c.forwardY(), forwardZ = c.forwardZ();
         double rightX = c.rightX(), rightY = c.rightY(), rightZ = c.rightZ();
@@ -142,14 +162,24 @@ final class CameraRows {
         return PinholeCamera.screen(py, scaleY, offsetY);
     }
 
+    /** Whether every ray of the tile leaves one point, the camera's eye: the row search applies. */
+    boolean oneOrigin() {
+        return pinhole != null;
+    }
+
     /**
      * Aims the camera rays of the tile's row y: each pixel's samples of its stratified pattern, or,
      * when the pattern has one sample, its centre. The centres are aimed along the row as single
      * points are ({@link PinholeCamera#aimRow}), from the tile's screen x of each pixel centre worked out once.
+     * A camera with a lens gives each ray its origin too, from the sample's lens point.
      */
     void aim(int y) {
+        if (pinhole == null) {
+            aimThroughLens(y);
+            return;
+        }
         if (side == 1) {
-            camera.aimRow(centreX, x1 - x0, screenY(y + 0.5), dirX, dirY, dirZ);
+            pinhole.aimRow(centreX, x1 - x0, screenY(y + 0.5), dirX, dirY, dirZ);
             return;
         }
         int ray = 0;
@@ -166,7 +196,31 @@ final class CameraRows {
 
     /** Stores the unit direction of camera ray i through image point (px, py), in pixels from the top-left. */
     void aimThrough(int ray, double px, double py) {
-        camera.aim(screenX(px), screenY(py), dirX, dirY, dirZ, ray);
+        pinhole.aim(screenX(px), screenY(py), dirX, dirY, dirZ, ray);
+    }
+
+    /**
+     * Aims row y's rays through the lens: each sample's film point as {@link #aim} places it, and its lens
+     * point, the pair {@link PathSamples#LENS} of (pixel, frame, sample): one in each cell of the pixel's
+     * side x side grid, shuffled apart from the film's cells.
+     */
+    private void aimThroughLens(int y) {
+        int ray = 0, samples = side * side;
+        for (int x = x0; x < x1; x++) {
+            int pixelIndex = y * width + x;
+            for (int sample = firstSample, end = firstSample + sampleCount; sample < end; sample++) {
+                double px = x + 0.5, py = y + 0.5;
+                if (side > 1) {
+                    long h = SamplePattern.hash(pixelIndex, frameIndex, sample);
+                    px = x + (sample % side + SamplePattern.jitterU(h)) / side;
+                    py = y + (sample / side + SamplePattern.jitterV(h)) / side;
+                }
+                lens.begin(pixelIndex, frameIndex, sample, samples);
+                lens.pair(PathSamples.LENS);
+                camera.ray(px, py, lens.u1, lens.u2, width, height, originX, originY, originZ, dirX, dirY, dirZ,
+                        ray++);
+            }
+        }
     }
 
     /**
@@ -176,7 +230,11 @@ final class CameraRows {
      * {@code x0 + i / sampleCount}, and its (pixel, frame, sample) seeds its path's random decisions.
      */
     void trace(Integrator integrator, Candidates candidates, int y, int hitsLeft) {
-        double eyeX = camera.eyeX(), eyeY = camera.eyeY(), eyeZ = camera.eyeZ(); // every ray's origin
+        if (pinhole == null) {
+            traceFromLens(integrator, y, hitsLeft);
+            return;
+        }
+        double eyeX = pinhole.eyeX(), eyeY = pinhole.eyeY(), eyeZ = pinhole.eyeZ(); // every ray's origin
         int rays = (x1 - x0) * sampleCount;
         integrator.findCameraHits(candidates, eyeX, eyeY, eyeZ, dirX, dirY, dirZ, rays, hitT,
                 hitPrimitive);
@@ -185,6 +243,25 @@ final class CameraRows {
             integrator.beginPath(pixel, frameIndex, sample, side * side);
             Rgb radiance = integrator.shadeCamera(hitPrimitive[ray], hitT[ray], eyeX, eyeY, eyeZ,
                     dirX[ray], dirY[ray], dirZ[ray], hitsLeft);
+            radianceR[ray] = radiance.r;
+            radianceG[ray] = radiance.g;
+            radianceB[ray] = radiance.b;
+            if (++sample == end) {
+                sample = firstSample;
+                pixel++;
+            }
+        }
+    }
+
+    /** {@link #trace} for rays of their own origins: each ray's hit found in the aggregate, then shaded. */
+    private void traceFromLens(Integrator integrator, int y, int hitsLeft) {
+        int rays = (x1 - x0) * sampleCount;
+        integrator.findCameraHits(originX, originY, originZ, dirX, dirY, dirZ, rays, hitT, hitPrimitive);
+        int pixel = y * width + x0, sample = firstSample, end = firstSample + sampleCount;
+        for (int ray = 0; ray < rays; ray++) {
+            integrator.beginPath(pixel, frameIndex, sample, side * side);
+            Rgb radiance = integrator.shadeCamera(hitPrimitive[ray], hitT[ray], originX[ray], originY[ray],
+                    originZ[ray], dirX[ray], dirY[ray], dirZ[ray], hitsLeft);
             radianceR[ray] = radiance.r;
             radianceG[ray] = radiance.g;
             radianceB[ray] = radiance.b;

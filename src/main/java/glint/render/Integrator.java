@@ -104,6 +104,23 @@ abstract class Integrator implements LightQuery {
         }
     }
 
+    /**
+     * The nearest hits of camera rays r in [0, n), each from its own origin (ox[r], oy[r], oz[r]) along
+     * (dx[r], dy[r], dz[r]), found ray by ray in the aggregate, into nearestT and nearestPrimitive
+     * ({@link Intersect#MISS} and {@link Hit#NONE} for none): the rays of a lens.
+     */
+    final void findCameraHits(double[] ox, double[] oy, double[] oz, double[] dx, double[] dy, double[] dz, int n,
+                              double[] nearestT, int[] nearestPrimitive) {
+        rays += n;
+        Hit hit = cameraHit;
+        for (int r = 0; r < n; r++) {
+            boolean found = aggregate.nearest(ox[r], oy[r], oz[r], dx[r], dy[r], dz[r], Intersect.MISS, Hit.NONE,
+                    Hit.NONE, hit, stack);
+            nearestT[r] = found ? hit.t : Intersect.MISS;
+            nearestPrimitive[r] = found ? hit.primitive : Hit.NONE;
+        }
+    }
+
     /** Gathers into {@code out} the primitives the camera rays inside the frustum may meet. */
     final void gather(Frustum frustum, Candidates out) {
         aggregate.gather(frustum, out, stack);

@@ -11,6 +11,12 @@ package glint.render;
  */
 final class PathSamples {
 
+    /**
+     * The pair of dimensions of a camera ray's lens point ({@link CameraRows}); the path's own dimensions
+     * count up from 0, so no path number shares its permutation.
+     */
+    static final int LENS = -1;
+
     private static final double INV_2_26 = 1.0 / (1 << 26);
     private static final long GOLDEN = 0x9E3779B97F4A7C15L;
 

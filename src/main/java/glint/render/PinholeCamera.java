@@ -6,7 +6,7 @@ import glint.scene.Camera;
 import java.util.Optional;
 
 /**
- * The camera that makes every camera ray: a pinhole at the eye, compiled from the scene's
+ * The pinhole camera (aperture 0; {@link CameraModel}): every ray from the eye, compiled from the scene's
  * {@link Camera} (world space). A ray goes from the eye through a point of the screen, the image
  * plane one unit ahead: screen (sx, sy) is the direction forward + sx right + sy up, made unit.
  * A width x height image covers the screen from sx = -tan(fov / 2) on its left to +tan(fov / 2) on
@@ -15,14 +15,13 @@ import java.util.Optional;
  * from the image's top-left corner; the centre of pixel (i, j) is (i + 0.5, j + 0.5). The ray through
  * an image point is {@link #direction}; the image point a world point is seen at, {@link #imagePoint}.
  *
- * <p>Every ray leaves the same point, the {@link #eye()}. The row search relies on it
- * ({@link CameraRows}): a tile row's rays lie in one frustum from the eye, the primitives it may
+ * <p>Every ray leaves the same point, the {@link #eye()} ({@link #oneOrigin}). The row search relies on
+ * it ({@link CameraRows}): a tile row's rays lie in one frustum from the eye, the primitives it may
  * hold are searched from that one origin ({@code PrimitiveKind.nearestFromOrigin}), and a box is
- * narrowed to the rays between the screen x of its corners as seen from the eye. A camera whose
- * rays leave different points (a lens with an aperture) would have to say so, and its rows be
- * searched ray by ray.
+ * narrowed to the rays between the screen x of its corners as seen from the eye. Its film points map
+ * onto the screen as {@link ThinLensCamera}'s do; its lens point is ignored.
  */
-public final class PinholeCamera {
+public final class PinholeCamera implements CameraModel {
 
     private final double eyeX, eyeY, eyeZ;
     private final double rightX, rightY, rightZ;
@@ -49,7 +48,14 @@ public final class PinholeCamera {
         tanHalfFov = Math.tan(Math.toRadians(camera.fovDegrees()) / 2);
     }
 
+    /** True: every ray leaves the eye. */
+    @Override
+    public boolean oneOrigin() {
+        return true;
+    }
+
     /** The point every ray of this camera leaves. */
+    @Override
     public Vector3d eye() {
         return new Vector3d(eyeX, eyeY, eyeZ);
     }
@@ -73,6 +79,7 @@ public final class PinholeCamera {
      * the eye (facing the way the camera looks), which no camera ray meets; a point outside the field of view
      * has a point outside [0, width] x [0, height]. Allocates: for tests and tools, not the per-pixel path.
      */
+    @Override
     public Optional<ImagePoint> imagePoint(Vector3d p, int width, int height) {
         double dx = p.x() - eyeX, dy = p.y() - eyeY, dz = p.z() - eyeZ;
         double ahead = dx * forwardX + dy * forwardY + dz * forwardZ;
@@ -85,21 +92,15 @@ public final class PinholeCamera {
                 (sy - screenTop(width, height)) / screenPerPixelY(width, height)));
     }
 
-    /**
-     * A point of an image in pixels from its top-left corner, {@code px} to the right and {@code py} down;
-     * it lies in pixel ({@link #column()}, {@link #row()}).
-     */
-    public record ImagePoint(double px, double py) {
-
-        /** The column of the pixel the point lies in. */
-        public int column() {
-            return (int) Math.floor(px);
-        }
-
-        /** The row of the pixel the point lies in. */
-        public int row() {
-            return (int) Math.floor(py);
-        }
+    /** The ray from the eye through film point (px, py), whatever the lens point: {@link #direction}'s arithmetic. */
+    @Override
+    public void ray(double px, double py, double lensU, double lensV, int width, int height, double[] ox,
+                    double[] oy, double[] oz, double[] dx, double[] dy, double[] dz, int i) {
+        ox[i] = eyeX;
+        oy[i] = eyeY;
+        oz[i] = eyeZ;
+        aim(screen(px, screenPerPixelX(width), screenLeft()),
+                screen(py, screenPerPixelY(width, height), screenTop(width, height)), dx, dy, dz, i);
     }
 
     // ---------------------------------------------------------------- the image on the screen
@@ -209,5 +210,17 @@ public final class PinholeCamera {
 
     double rightZ() {
         return rightZ;
+    }
+
+    double upX() {
+        return upX;
+    }
+
+    double upY() {
+        return upY;
+    }
+
+    double upZ() {
+        return upZ;
     }
 }

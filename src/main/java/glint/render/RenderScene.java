@@ -56,8 +56,8 @@ public final class RenderScene {
     final double[] shadowPass;
     final double backgroundR, backgroundG, backgroundB;
     final double ambientR, ambientG, ambientB;
-    /** The camera that makes the camera rays, world space. */
-    final PinholeCamera camera;
+    /** The camera that makes the camera rays, world space: a pinhole, or a thin lens. */
+    final CameraModel camera;
 
     private RenderScene(Scene scene, RenderSettings settings, Registry registry,
                         Function<Primitives, Aggregate> aggregateOf, boolean lightCells) {
@@ -126,7 +126,7 @@ public final class RenderScene {
         ambientR = scene.ambient().x();
         ambientG = scene.ambient().y();
         ambientB = scene.ambient().z();
-        camera = new PinholeCamera(scene.camera());
+        camera = CameraModel.of(scene.camera());
     }
 
     /** The same compiled scene seen from another camera: shares everything else. */
@@ -147,7 +147,7 @@ public final class RenderScene {
         ambientR = base.ambientR;
         ambientG = base.ambientG;
         ambientB = base.ambientB;
-        this.camera = new PinholeCamera(camera);
+        this.camera = CameraModel.of(camera);
     }
 
     /** Compiles an immutable scene with the given settings. */

@@ -7,7 +7,8 @@ import glint.image.FrameBuffer;
 
 /**
  * One render thread's share of a frame: traces the pixels of the tiles it is handed, a tile row
- * at a time: the row's camera rays aimed ({@link CameraRows}), each traced by the thread's
+ * at a time: the row's camera rays aimed ({@link CameraRows}; searched together when they all leave one
+ * point, else one by one), each traced by the thread's
  * {@link Integrator} of the scene's light transport, and the row's pixels written. Allocates nothing per pixel.
  */
 final class TracerWorker {
@@ -37,6 +38,11 @@ final class TracerWorker {
         int hitsLeft = scene.settings.recursionMax();
         for (int y = y0; y < y1; y++) {
             rows.aim(y);
+            if (!rows.oneOrigin()) { // a lens: each ray searched from its own origin
+                rows.trace(integrator, null, y, hitsLeft);
+                rows.writeRow(frame, y);
+                continue;
+            }
             rows.frustum(y, rowFrustum);
             integrator.gather(rowFrustum, rowCandidates);
             boolean searchCandidates = rowCandidates.count() <= AggregatePolicy.MOST_ROW_CANDIDATES;

@@ -14,8 +14,10 @@ import org.snakeyaml.engine.v2.nodes.Node;
 /** The cameras of a scene file: its {@code camera} and its named {@code views}. */
 final class CameraReader {
 
-    private static final Set<String> CAMERA_KEYS = new LinkedHashSet<>(List.of("position", "look_at", "up", "fov"));
-    private static final Set<String> VIEW_KEYS = new LinkedHashSet<>(List.of("name", "position", "look_at", "up", "fov"));
+    private static final Set<String> CAMERA_KEYS = new LinkedHashSet<>(List.of("position", "look_at", "up", "fov", "aperture",
+            "focus"));
+    private static final Set<String> VIEW_KEYS = new LinkedHashSet<>(List.of("name", "position", "look_at", "up", "fov",
+            "aperture", "focus"));
 
     private final YamlTree yaml;
 
@@ -76,7 +78,36 @@ final class CameraReader {
             throw yaml.error(m.getOrDefault("up", node),
                     "up must not be zero or parallel to the viewing direction (look_at - position)");
         }
-        return Camera.lookAt(position, lookAt, upChecked, fov);
+        Camera camera = Camera.lookAt(position, lookAt, upChecked, fov);
+        double aperture = m.containsKey("aperture") ? aperture(m.get("aperture")) : 0;
+        double focus = m.containsKey("focus") ? focus(m.get("focus"))
+                : m.containsKey("look_at") ? camera.focus() : Camera.DEFAULT_FOCUS;
+        return camera.withLens(aperture, focus);
+    }
+
+    /** {@code aperture}: the lens radius, from 0 (a pinhole) to the longest length a scene has. */
+    private double aperture(Node node) throws InputException {
+        double aperture = yaml.number(node, "aperture");
+        if (aperture < 0) {
+            throw yaml.error(node, "aperture must be >= 0, got " + YamlTree.source(node, aperture));
+        }
+        if (aperture > SceneLoader.LONGEST) {
+            throw yaml.error(node, "aperture must be at most 1e150, got " + YamlTree.source(node, aperture));
+        }
+        return aperture + 0.0; // -0 is 0
+    }
+
+    /** {@code focus}: the distance of the plane in focus, a length as a radius is. */
+    private double focus(Node node) throws InputException {
+        double focus = yaml.number(node, "focus");
+        if (!(focus > 0)) {
+            throw yaml.error(node, "focus must be > 0, got " + YamlTree.source(node, focus));
+        }
+        if (!(focus >= SceneLoader.SHORTEST && focus <= SceneLoader.LONGEST)) {
+            throw yaml.error(node, "focus must lie between 1e-150 and 1e150 (its square must be a"
+                    + " normal double), got " + YamlTree.source(node, focus));
+        }
+        return focus;
     }
 
     /** The distance between two points for a message, without overflow: "3.0e+160". */

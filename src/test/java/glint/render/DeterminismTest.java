@@ -68,6 +68,29 @@ class DeterminismTest {
     }
 
     @Test
+    void aLensGivesTheSameBytesForAnyThreadAndTileCount() throws Exception {
+        // a thin lens (aperture 0.1): each ray's lens point is a function of its pixel, frame and sample
+        Scene scene = SceneLoader.load(Path.of("src/test/resources/reference-pt/lens.yaml"));
+        for (LightTransport transport : LightTransport.values()) {
+            RenderScene compiled = RenderScene.compile(scene,
+                    new RenderSettings(Shading.COOK_TORRANCE, 5, 0.01, 1e-9).withTransport(transport));
+            float[] reference = null;
+            for (int threads : new int[] {1, 2, 7}) {
+                for (int divider : new int[] {1, 8, 13}) {
+                    FrameBuffer frame = new FrameBuffer(96, 72);
+                    try (Tracer tracer = new Tracer(threads)) {
+                        tracer.render(compiled, frame, 4, 2, divider);
+                    }
+                    if (reference == null) {
+                        reference = frame.rgb().clone();
+                    }
+                    assertArrayEquals(reference, frame.rgb(), transport + ", " + threads + " threads, divider " + divider);
+                }
+            }
+        }
+    }
+
+    @Test
     void rouletteDrawsDoNotDependOnThreadsOrTiles() throws Exception {
         // glass on a mirror pruned at 0.2: most reflections off glass and many refractions go by roulette
         Scene scene = SceneLoader.load(Path.of("src/test/resources/scenes/glass-on-mirror.yaml"));

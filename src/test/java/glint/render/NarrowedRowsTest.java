@@ -70,14 +70,14 @@ class NarrowedRowsTest {
     }
 
     private static double eyeX(RenderScene scene) {
-        return scene.camera.eyeX();
+        return ((PinholeCamera) scene.camera).eyeX();
     }
 
     private static double eyeY(RenderScene scene) {
-        return scene.camera.eyeY();
+        return ((PinholeCamera) scene.camera).eyeY();
     }
 
     private static double eyeZ(RenderScene scene) {
-        return scene.camera.eyeZ();
+        return ((PinholeCamera) scene.camera).eyeZ();
     }
 }

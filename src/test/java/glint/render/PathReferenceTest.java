@@ -24,7 +24,8 @@ import org.junit.jupiter.params.provider.CsvSource;
 class PathReferenceTest {
 
     @ParameterizedTest
-    @CsvSource({"bounce-box, 3.3e-4, 1.24", "sky-and-sun, 1.1e-4, 0.55", "lamp-and-frost, 0.041, 8.9"})
+    @CsvSource({"bounce-box, 3.3e-4, 1.24", "sky-and-sun, 1.1e-4, 0.55", "lamp-and-frost, 0.041, 8.9",
+            "lens, 0.0123, 0.88"})
     void matchesThePhysicallyBasedReferenceWithinTheBound(String name, double relMseBound, double levelsBound)
             throws Exception {
         Path folder = Path.of("src/test/resources/reference-pt");

@@ -563,6 +563,68 @@ class SceneLoaderErrorTest {
     }
 
     @Test
+    void negativeAperture() {
+        assertError("scenes/x.yaml:2:13: aperture must be >= 0, got -0.1", """
+                camera:
+                  aperture: -0.1
+                """);
+    }
+
+    @Test
+    void apertureBeyondTheLongestLength() {
+        assertError("scenes/x.yaml:2:13: aperture must be at most 1e150, got 2e150", """
+                camera:
+                  aperture: 2e150
+                """);
+    }
+
+    @Test
+    void nonFiniteApertureAndFocus() {
+        assertError("scenes/x.yaml:2:13: expected a finite number for aperture, got '.inf'", """
+                camera:
+                  aperture: .inf
+                """);
+        assertError("scenes/x.yaml:2:10: expected a finite number for focus, got '.nan'", """
+                camera:
+                  focus: .nan
+                """);
+    }
+
+    @Test
+    void focusZeroOrNegative() {
+        assertError("scenes/x.yaml:3:10: focus must be > 0, got 0", """
+                camera:
+                  aperture: 0.1
+                  focus: 0
+                """);
+        assertError("scenes/x.yaml:2:10: focus must be > 0, got -2", """
+                camera:
+                  focus: -2
+                """);
+    }
+
+    @Test
+    void focusOutsideTheLengthsASceneMayHave() {
+        assertError("scenes/x.yaml:2:10: focus must lie between 1e-150 and 1e150 (its square must be a normal"
+                + " double), got 1e-200", """
+                camera:
+                  focus: 1e-200
+                """);
+    }
+
+    @Test
+    void aViewsLensIsCheckedAsTheCamerasIs() {
+        assertError("scenes/x.yaml:2:50: aperture must be >= 0, got -1", """
+                views:
+                  - {name: near, position: [0, 1, -5], aperture: -1}
+                """);
+        assertError("scenes/x.yaml:2:25: focus must be > 0, got 0", """
+                views:
+                  - {name: near, focus: 0}
+                """);
+    }
+
+    @Test
     void negativeRoughness() {
         assertError("scenes/x.yaml:2:52: roughness must lie in [0, 1], got -0.1", """
                 materials:

@@ -381,7 +381,7 @@ class SceneLoaderTest {
                 """);
         assertEquals(2, scene.lights().size());
         assertEquals(4, scene.objects().size());
-        assertEquals(Camera.defaults(), scene.camera());
+        assertEquals(Camera.defaults().withLens(0, 5), scene.camera()); // the default pose, focused on its look_at
         Light.Directional sun = (Light.Directional) scene.lights().get(1);
         assertVector(v(0, -1, 0.2).normalize(), sun.direction());
         assertEquals(GlassType.TYPE.preset(), material(scene, 1));

@@ -37,6 +37,28 @@ class SceneViewsTest {
     }
 
     @Test
+    void aCameraAndEachViewHaveTheirOwnLens() throws InputException {
+        Scene s = SceneLoader.parse(FILE, """
+                camera: {position: [0, 1, -5], look_at: [0, 1, 0], aperture: 0.1, focus: 4.5}
+                views:
+                  - {name: near, position: [0, 1, -2], look_at: [0, 1, 1], aperture: 0.25}
+                  - {name: far, position: [0, 1, -9], focus: 12}
+                  - {name: pinhole, position: [0, 1, -9], look_at: [0, 1, -6]}
+                """);
+        assertEquals(0.1, s.camera().aperture());
+        assertEquals(4.5, s.camera().focus());
+        // focus defaults to the distance from position to look_at, or one unit without a look_at
+        assertEquals(0.25, s.views().get(0).camera().aperture());
+        assertEquals(3, s.views().get(0).camera().focus());
+        assertEquals(0, s.views().get(1).camera().aperture());
+        assertEquals(12, s.views().get(1).camera().focus());
+        assertEquals(0, s.views().get(2).camera().aperture());
+        assertEquals(3, s.views().get(2).camera().focus());
+        assertEquals(1, SceneLoader.parse(FILE, "camera: {position: [0, 1, -5]}\n").camera().focus());
+        assertEquals(Camera.DEFAULT_FOCUS, Camera.defaults().focus());
+    }
+
+    @Test
     void noViewsOrAnEmptyKeyIsNoViews() throws InputException {
         assertTrue(SceneLoader.parse(FILE, "ambient: [0, 0, 0]\n").views().isEmpty());
         assertTrue(SceneLoader.parse(FILE, "views:\n").views().isEmpty());

@@ -9,7 +9,9 @@ import java.math.RoundingMode;
 
 /**
  * A camera written as the {@code camera:} block of a scene file (key C): position, a look_at one unit
- * ahead, the camera's up and its field of view. Pasted into a scene, or under {@code views:}, it gives the
+ * ahead, the camera's up and its field of view, and, for a lens (an aperture above 0), its aperture and
+ * focus (a pinhole's block has neither: its picture does not depend on the focus, and a pinhole's scene
+ * stays as it was written). Pasted into a scene, or under {@code views:}, it gives the
  * same picture: the numbers keep six decimals, a hundred-thousandth of a degree of the view. A scene far
  * smaller or larger than a unit (a position of 5e-20, or 1e20) keeps its numbers whole instead, and a
  * camera far from the origin looks at a point as much farther ahead as six decimals need.
@@ -44,8 +46,10 @@ public final class CameraBlock {
     /** The camera as an item of a scene's {@code views:} list, indented as under the key: {@code - {...}}. */
     static String viewItem(Camera camera) {
         Vector3d p = camera.position();
+        String lens = camera.aperture() > 0
+                ? ", aperture: " + length(camera.aperture()) + ", focus: " + length(camera.focus()) : "";
         return "  - {position: " + vector(p) + ", look_at: " + vector(lookAt(camera))
-                + ", up: " + vector(camera.orientation().up()) + ", fov: " + number(camera.fovDegrees()) + "}";
+                + ", up: " + vector(camera.orientation().up()) + ", fov: " + number(camera.fovDegrees()) + lens + "}";
     }
 
     /** The camera a scene holding the printed block has: the block read back as the scene loader reads it. */
@@ -57,14 +61,22 @@ public final class CameraBlock {
         }
     }
 
-    /** The block, four lines under {@code camera:}, each ending in a newline. */
+    /** The block, four lines under {@code camera:} (six with a lens), each ending in a newline. */
     static String yaml(Camera camera) {
         Vector3d p = camera.position();
+        String lens = camera.aperture() > 0
+                ? "  aperture: " + length(camera.aperture()) + "\n" + "  focus: " + length(camera.focus()) + "\n" : "";
         return "camera:\n"
                 + "  position: " + vector(p) + "\n"
                 + "  look_at: " + vector(lookAt(camera)) + "\n"
                 + "  up: " + vector(camera.orientation().up()) + "\n"
-                + "  fov: " + number(camera.fovDegrees()) + "\n";
+                + "  fov: " + number(camera.fovDegrees()) + "\n"
+                + lens;
+    }
+
+    /** A length (above 0): six decimals when they keep it (1e-3 to 1e15), else whole, as {@link #vector}. */
+    private static String length(double x) {
+        return x >= 1e-3 && x < 1e15 ? number(x) : whole(x);
     }
 
     /**

@@ -50,6 +50,8 @@ final class Commands {
             case TOGGLE_INTEGRATOR -> status.note(view.toggleTransport());
             case DEPTH_UP -> status.note(view.stepDepth(1));
             case DEPTH_DOWN -> status.note(view.stepDepth(-1));
+            case APERTURE_WIDER -> status.note(view.stepAperture(1));
+            case APERTURE_NARROWER -> status.note(view.stepAperture(-1));
             case SCREENSHOT -> status.note(captures.screenshot());
             case RELOAD -> reloads.reload();
             case LEVEL -> {

@@ -258,6 +258,13 @@ public final class Engine implements Runnable, SceneWatcher.Listener {
             controller.orbitAround(OrbitPivot.pick(view.compiled(), controller.camera(), in, size.width(),
                     size.height()));
         }
+        if (in.focusClicked()) { // the point under the mouse, with the camera the user saw it from
+            String note = view.focusOn(OrbitPivot.under(view.compiled(), controller.camera(), in.focusX(),
+                    in.focusY(), size.width(), size.height()));
+            if (note != null) {
+                status.note(note);
+            }
+        }
         boolean moved = view.fly(in);
         if (in.seconds(Action.ZOOM_IN) > 0 || in.seconds(Action.ZOOM_OUT) > 0) { // Z or X held: the fov as it changes
             status.note(controller.fovNote());

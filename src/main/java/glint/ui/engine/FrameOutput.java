@@ -109,7 +109,7 @@ final class FrameOutput {
                 samplesDone, Refinement.passes(seen.still()), moving, renderer.threads(), seen.shading(),
                 seen.transport(), noise, seen.depth(),
                 view.controller().speed(), source.scenePath().toString(), status.message(), status.error(),
-                size.sizeLimit(), faults.overlayLine());
+                size.sizeLimit(), faults.overlayLine(), view.camera().aperture() > 0 ? view.controller().lensNote() : "");
     }
 
     private void publish() {

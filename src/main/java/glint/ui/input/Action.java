@@ -19,6 +19,10 @@ public enum Action {
     ORBIT(Kind.POINTER),
     /** Not a key: the mouse wheel changes the flying speed. */
     SPEED(Kind.POINTER),
+    /** Not a key: a click (no drag, no Ctrl) focuses the lens on the point under the mouse. */
+    FOCUS(Kind.POINTER),
+    /** Widen / narrow the lens's aperture a step. */
+    APERTURE_WIDER(Kind.COMMAND), APERTURE_NARROWER(Kind.COMMAND),
     TOGGLE_SHADING(Kind.COMMAND), TOGGLE_INTEGRATOR(Kind.COMMAND), DEPTH_UP(Kind.COMMAND), DEPTH_DOWN(Kind.COMMAND),
     SCREENSHOT(Kind.COMMAND), RELOAD(Kind.COMMAND), QUIT(Kind.COMMAND),
     TOGGLE_OVERLAY(Kind.COMMAND), TOGGLE_HELP(Kind.COMMAND),

@@ -18,10 +18,12 @@ import java.util.List;
  * @param orbitFromY    where it started (pixels from the top), or NaN
  * @param orbitX        orbit drag to the right since the last update, in pixels
  * @param orbitY        orbit drag downwards since the last update, in pixels
+ * @param focusX        where the last click of the interval was (pixels from the left), or NaN for none
+ * @param focusY        where it was (pixels from the top), or NaN
  */
 public record InputFrame(double[] heldSeconds, boolean fast, boolean motionHeld, double dragX, double dragY,
                          int wheelNotches, List<Action> commands, int view, double orbitFromX, double orbitFromY,
-                         double orbitX, double orbitY) {
+                         double orbitX, double orbitY, double focusX, double focusY) {
 
     public InputFrame {
         heldSeconds = heldSeconds.clone();
@@ -31,7 +33,12 @@ public record InputFrame(double[] heldSeconds, boolean fast, boolean motionHeld,
     /** Nothing happened. */
     public static InputFrame none() {
         return new InputFrame(new double[Action.values().length], false, false, 0, 0, 0, List.of(), -1,
-                Double.NaN, Double.NaN, 0, 0);
+                Double.NaN, Double.NaN, 0, 0, Double.NaN, Double.NaN);
+    }
+
+    /** Whether the user clicked in the interval (the lens is then focused on the point there). */
+    public boolean focusClicked() {
+        return !Double.isNaN(focusX);
     }
 
     /** Whether an orbit drag started in the interval (its point is then picked). */
@@ -58,6 +65,8 @@ public record InputFrame(double[] heldSeconds, boolean fast, boolean motionHeld,
         private double orbitFromY = Double.NaN;
         private double orbitX;
         private double orbitY;
+        private double focusX = Double.NaN;
+        private double focusY = Double.NaN;
 
         public Builder hold(Action action, double seconds) {
             held[action.ordinal()] += seconds;
@@ -96,6 +105,13 @@ public record InputFrame(double[] heldSeconds, boolean fast, boolean motionHeld,
             return this;
         }
 
+        /** A click at pixel (x, y). */
+        public Builder click(double x, double y) {
+            focusX = x;
+            focusY = y;
+            return this;
+        }
+
         public Builder wheel(int notches) {
             wheel += notches;
             return this;
@@ -115,7 +131,7 @@ public record InputFrame(double[] heldSeconds, boolean fast, boolean motionHeld,
 
         public InputFrame build() {
             return new InputFrame(held, fast, motionHeld, dragX, dragY, wheel, commands, view, orbitFromX, orbitFromY,
-                    orbitX, orbitY);
+                    orbitX, orbitY, focusX, focusY);
         }
     }
 }

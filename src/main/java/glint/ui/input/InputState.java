@@ -31,6 +31,8 @@ public final class InputState {
     private double orbitFromY = Double.NaN;
     private double orbitX;
     private double orbitY;
+    private double focusX = Double.NaN;
+    private double focusY = Double.NaN;
     private int viewWidth;
     private int viewHeight;
     private boolean signalled;
@@ -131,6 +133,18 @@ public final class InputState {
         }
     }
 
+    /** A click (no drag) at pixel (x, y) of the view: the engine focuses the lens on the point there. */
+    public void focusAt(double x, double y) {
+        lock.lock();
+        try {
+            focusX = x;
+            focusY = y;
+            signalLocked();
+        } finally {
+            lock.unlock();
+        }
+    }
+
     /** The mouse was dragged by (dx, dy) pixels while orbiting, y downwards. */
     public void orbit(double dx, double dy) {
         lock.lock();
@@ -208,7 +222,7 @@ public final class InputState {
             }
             lastDrain = now;
             InputFrame frame = new InputFrame(heldSeconds, down[Action.FAST.ordinal()], motionHeld,
-                    dragX, dragY, wheel, commands, view, orbitFromX, orbitFromY, orbitX, orbitY);
+                    dragX, dragY, wheel, commands, view, orbitFromX, orbitFromY, orbitX, orbitY, focusX, focusY);
             Arrays.fill(heldSeconds, 0);
             commands.clear();
             dragX = 0;
@@ -219,6 +233,8 @@ public final class InputState {
             orbitFromY = Double.NaN;
             orbitX = 0;
             orbitY = 0;
+            focusX = Double.NaN;
+            focusY = Double.NaN;
             return frame;
         } finally {
             lock.unlock();

@@ -50,12 +50,17 @@ public final class KeyBindings {
             pointer(Action.ORBIT, "Ctrl + drag", "orbit round the point under the mouse (also: middle drag)"),
             pointer(Action.SPEED, "Mouse wheel", "flying speed: x" + fmt(CameraController.WHEEL_FACTOR)
                     + " a notch up, / " + fmt(CameraController.WHEEL_FACTOR) + " a notch down"),
+            pointer(Action.FOCUS, "Click", "focus the lens on the point under the mouse (not on the sky)"),
             key(Action.TOGGLE_SHADING, "M or Tab", "switch shading: cook-torrance / phong",
                     KeyEvent.VK_M, KeyEvent.VK_TAB),
             key(Action.TOGGLE_INTEGRATOR, "I", "switch integrator: whitted / path (light that bounces)",
                     KeyEvent.VK_I),
             typed(Action.DEPTH_UP, "+ (or =)", "recursion depth + 1", "+="),
             typed(Action.DEPTH_DOWN, "-", "recursion depth - 1", "-_"),
+            typed(Action.APERTURE_WIDER, "]", "widen the aperture: a pinhole to 1/"
+                    + fmt(1 / CameraController.FIRST_APERTURE) + " of the focus, x"
+                    + String.format(java.util.Locale.ROOT, "%.2f", CameraController.APERTURE_STEP), "]"),
+            typed(Action.APERTURE_NARROWER, "[", "narrow the aperture; the narrowest, 0, is a pinhole", "["),
             key(Action.SCREENSHOT, "F12 or P", "save the view as a PNG: glint-YYYYMMDD-HHMMSS-mmm.png",
                     KeyEvent.VK_F12, KeyEvent.VK_P),
             key(Action.LEVEL, "L", "level the camera: take the roll out", KeyEvent.VK_L),

@@ -7,7 +7,10 @@ import glint.render.PinholeCamera;
 import glint.render.RenderScene;
 import glint.scene.Camera;
 
-/** The point an orbit drag turns around: where the ray through the pixel under the mouse meets the scene. */
+/**
+ * The point under the mouse: where the ray through its pixel meets the scene; what an orbit drag turns
+ * around, and what a click focuses the lens on.
+ */
 public final class OrbitPivot {
 
     private OrbitPivot() {
@@ -24,9 +27,18 @@ public final class OrbitPivot {
      * {@link CameraController#ORBIT_MISS_DISTANCE} ahead of the camera, in the view's centre.
      */
     public static Vector3d pick(RenderScene scene, Camera camera, double x, double y, int width, int height) {
+        Vector3d point = under(scene, camera, x, y, width, height);
+        return point != null ? point
+                : camera.position().add(camera.orientation().forward().scale(CameraController.ORBIT_MISS_DISTANCE));
+    }
+
+    /**
+     * The nearest point of the scene on the ray through the centre of pixel (x, y) of a width x height view
+     * from the camera's centre (a lens's central ray, the pinhole's), or null where it meets nothing (the sky).
+     */
+    public static Vector3d under(RenderScene scene, Camera camera, double x, double y, int width, int height) {
         PinholeCamera pinhole = new PinholeCamera(camera);
         Vector3d eye = pinhole.eye();
-        Vector3d forward = camera.orientation().forward();
         Vector3d d = pinhole.direction(x + 0.5, y + 0.5, width, height);
         Aggregate aggregate = scene.aggregate();
         Hit hit = new Hit();
@@ -34,6 +46,6 @@ public final class OrbitPivot {
                 Hit.NONE, hit, aggregate.newStack()) && Double.isFinite(hit.t)) {
             return eye.add(d.scale(hit.t));
         }
-        return eye.add(forward.scale(CameraController.ORBIT_MISS_DISTANCE));
+        return null;
     }
 }

@@ -27,20 +27,22 @@ import glint.render.Shading;
  * @param sizeLimit     why the render size is smaller than the window's ({@code max_image_pixels ...}), or
  *                      empty when the window is within the limits
  * @param renderError   why the last frame could not be rendered (the engine tries again), or empty
+ * @param lens          the camera's lens, {@code aperture 0.1  focus 5.3}, or empty for a pinhole
  */
 public record FrameStats(double fps, double msPerFrame, int renderWidth, int renderHeight, int viewWidth,
                          int viewHeight, int samplesDone, int samplesTotal, boolean moving, int threads,
                          Shading shading, LightTransport transport, double noise, int depth, double speed,
-                         String scene, String message, String error, String sizeLimit, String renderError) {
+                         String scene, String message, String error, String sizeLimit, String renderError,
+                         String lens) {
 
-    /** Figures of a Whitted frame, whose noise is not estimated. */
+    /** Figures of a Whitted frame through a pinhole, whose noise is not estimated. */
     public FrameStats(double fps, double msPerFrame, int renderWidth, int renderHeight, int viewWidth,
                       int viewHeight, int samplesDone, int samplesTotal, boolean moving, int threads,
                       Shading shading, int depth, double speed, String scene, String message, String error,
                       String sizeLimit, String renderError) {
         this(fps, msPerFrame, renderWidth, renderHeight, viewWidth, viewHeight, samplesDone, samplesTotal, moving,
                 threads, shading, LightTransport.WHITTED, Double.NaN, depth, speed, scene, message, error, sizeLimit,
-                renderError);
+                renderError, "");
     }
 
     /** Whether the image is final: still and every sample accumulated. */

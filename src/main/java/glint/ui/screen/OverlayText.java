@@ -42,8 +42,9 @@ public final class OverlayText {
             lines.add(normal(String.format(Locale.ROOT, "samples %d/%d   threads %d", s.samplesDone(),
                     s.samplesTotal(), s.threads())));
         }
-        lines.add(normal(String.format(Locale.ROOT, "shading %s   %sdepth %d   speed %s/s", s.shading().key(),
-                s.transport() == LightTransport.PATH ? "integrator path   " : "", s.depth(), number(s.speed()))));
+        lines.add(normal(String.format(Locale.ROOT, "shading %s   %sdepth %d   %sspeed %s/s", s.shading().key(),
+                s.transport() == LightTransport.PATH ? "integrator path   " : "", s.depth(),
+                s.lens().isEmpty() ? "" : s.lens() + "   ", number(s.speed()))));
         lines.add(normal(s.scene()));
         if (!s.message().isEmpty()) {
             for (String line : s.message().split("\n")) { // a camera block (key C) is several lines

@@ -124,6 +124,14 @@ final class InputListener {
                 }
             }
 
+            /** A plain left click, without a drag between press and release: focus there (Ctrl + drag orbits). */
+            @Override
+            public void mouseClicked(MouseEvent e) {
+                if (SwingUtilities.isLeftMouseButton(e) && !e.isControlDown()) {
+                    input.focusAt(e.getX(), e.getY());
+                }
+            }
+
             @Override
             public void mouseDragged(MouseEvent e) {
                 if (orbiting) {

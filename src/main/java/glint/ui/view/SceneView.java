@@ -1,5 +1,6 @@
 package glint.ui.view;
 
+import glint.math.Vector3d;
 import glint.config.Config;
 import glint.render.RenderScene;
 import glint.scene.Camera;
@@ -85,6 +86,34 @@ public final class SceneView {
             cameraMoved();
         }
         return moved;
+    }
+
+    /** ] (+1) or [ (-1): the lens's aperture a step wider or narrower; returns what the overlay says. */
+    public String stepAperture(int step) {
+        if (controller.stepAperture(step)) {
+            cameraMoved();
+        }
+        return controller.lensNote();
+    }
+
+    /**
+     * A click: the lens focused on {@code point}, the point under the mouse, or left as it is when there is
+     * none (the sky); returns what the overlay says. A pinhole keeps the focus for when its aperture opens,
+     * silently and without drawing anew, as its picture does not depend on it: returns null.
+     */
+    public String focusOn(Vector3d point) {
+        boolean lens = cameraNow.aperture() > 0;
+        if (point == null) {
+            return lens ? "nothing under the mouse to focus on; " + controller.lensNote() : null;
+        }
+        if (controller.focusOn(point)) {
+            if (lens) {
+                cameraMoved();
+            } else {
+                cameraNow = controller.camera();
+            }
+        }
+        return lens ? controller.lensNote() : null;
     }
 
     /** M or Tab: the other shading model (phong brings Whitted's integrator); returns what the overlay says. */

@@ -39,6 +39,43 @@ class CameraBlockTest {
     }
 
     @Test
+    void aLensRoundTripsThroughTheSceneLoaderAndAPinholeKeepsItsFourKeys() throws InputException {
+        Random random = new Random(8);
+        for (int i = 0; i < 500; i++) {
+            Vector3d position = new Vector3d(random.nextGaussian() * 50, random.nextGaussian() * 50,
+                    random.nextGaussian() * 50);
+            Quaternion q = new Quaternion(random.nextGaussian(), random.nextGaussian(), random.nextGaussian(),
+                    random.nextGaussian()).normalize();
+            double aperture = Math.exp(random.nextDouble() * 20 - 14), focus = Math.exp(random.nextDouble() * 16 - 8);
+            Camera camera = new Camera(position, q, 1 + random.nextDouble() * 150, aperture, focus);
+            for (String printed : new String[] {CameraBlock.yaml(camera), CameraBlock.blocks(camera)}) {
+                Scene read = SceneLoader.parse("pasted.yaml", printed);
+                for (Camera c : printed.contains("views:") ? new Camera[] {read.camera(), read.views().get(0).camera()}
+                        : new Camera[] {read.camera()}) {
+                    // six decimals above 1e-3, the shortest decimal that reads back below it
+                    assertEquals(aperture, c.aperture(), aperture < 1e-3 ? 0 : 5e-7, printed);
+                    assertEquals(focus, c.focus(), focus < 1e-3 ? 0 : 5e-7, printed);
+                    assertNear(q.forward(), c.orientation().forward(), 2e-6, "forward");
+                }
+            }
+        }
+        Camera pinhole = Camera.lookAt(new Vector3d(0, 1.6, -6), new Vector3d(0, 1.6, 0), Vector3d.UNIT_Y, 60);
+        assertEquals(0, SceneLoader.parse("pasted.yaml", CameraBlock.blocks(pinhole)).camera().aperture());
+        assertTrue(!CameraBlock.blocks(pinhole).contains("aperture"), "a pinhole's block is as it was");
+        assertEquals("""
+                camera:
+                  position: [0, 1.6, -6]
+                  look_at: [0, 1.6, -5]
+                  up: [0, 1, 0]
+                  fov: 60
+                  aperture: 0.05
+                  focus: 6
+                views:
+                  - {position: [0, 1.6, -6], look_at: [0, 1.6, -5], up: [0, 1, 0], fov: 60, aperture: 0.05, focus: 6}
+                """, CameraBlock.blocks(pinhole.withLens(0.05, 6)));
+    }
+
+    @Test
     void theBlockIsFourKeysUnderCamera() {
         Camera camera = Camera.lookAt(new Vector3d(0, 1.6, -6), new Vector3d(0, 1.6, 0), Vector3d.UNIT_Y, 60);
         assertEquals("""

@@ -44,7 +44,7 @@ class CommandsTest {
 
     private static final String VIEWS = """
             views:
-              - {name: from above, position: [0, 9, -3], look_at: [0, 0, 0], fov: 50}
+              - {name: from above, position: [0, 9, -3], look_at: [0, 0, 0], fov: 50, aperture: 0.2, focus: 7}
               - {position: [2, 1, -2], look_at: [0, 1, 0]}
             """;
 
@@ -128,6 +128,37 @@ class CommandsTest {
         run(Action.DEPTH_DOWN);
         assertEquals(1, view.settings().depth());
         assertEquals("depth stays 1 (from 1 to 3, max_recursion)", status.message());
+    }
+
+    @Test
+    void theLensKeysStepTheApertureAndEachViewBringsItsOwnLens() {
+        assertEquals(0, view.camera().aperture(), "the file's camera: a pinhole focused 4 ahead, on its look_at");
+        view.movingFrameShown();
+        run(Action.APERTURE_WIDER);
+        assertEquals(4.0 / 64, view.camera().aperture(), 1e-15);
+        assertEquals("aperture 0.0625  focus 4", status.message());
+        assertTrue(view.needFrame());
+        run(Action.APERTURE_WIDER);
+        assertEquals(4.0 / 64 * Math.sqrt(2), view.camera().aperture(), 1e-15);
+        run(Action.APERTURE_NARROWER);
+        assertEquals(4.0 / 64, view.camera().aperture(), 1e-15);
+        run(Action.APERTURE_NARROWER);
+        assertEquals(0, view.camera().aperture());
+        assertEquals("aperture 0: a pinhole, all in focus", status.message());
+        view.movingFrameShown();
+        run(Action.APERTURE_NARROWER);
+        assertFalse(view.needFrame(), "a pinhole stays one");
+        goTo(0);
+        assertEquals(0.2, view.camera().aperture());
+        assertEquals(7, view.camera().focus());
+        run(Action.APERTURE_WIDER);
+        goTo(1);
+        assertEquals(0, view.camera().aperture());
+        assertEquals(Math.sqrt(8), view.camera().focus(), 1e-12, "focused on its look_at");
+        goTo(0);
+        assertEquals(0.2, view.camera().aperture(), "the view's own lens, whatever the keys did to the last");
+        run(Action.PRINT_CAMERA);
+        assertTrue(printed.toString().contains("  aperture: 0.2\n  focus: 7\n"), printed.toString());
     }
 
     @Test

@@ -128,6 +128,34 @@ class EngineTest {
         assertTrue(differing < W * H / 100, "codes off by one: " + differing);
     }
 
+    /**
+     * A click focuses the lens on the point under the mouse, its distance along the view direction: the
+     * view's centre meets the ball (radius 1, 4 ahead) 3 ahead; a click on the sky leaves the focus. A
+     * pinhole keeps the focus silently, without drawing anew.
+     */
+    @Test
+    void aClickFocusesOnThePointUnderTheMouseAndTheOverlayShowsTheLens() {
+        refine();
+        assertEquals(4, engine.camera().focus(), 1e-12, "the file's camera: focused on its look_at");
+        String before = lastStats().message();
+        int frames = presenter.frames().size();
+        input.focusAt(W / 2.0 - 0.5, H / 2.0 - 0.5); // the pixel whose centre is the view's centre
+        assertEquals(Engine.IDLE, engine.step(), "a pinhole's picture does not depend on its focus");
+        assertEquals(3, engine.camera().focus(), 1e-9);
+        assertEquals(frames, presenter.frames().size());
+        assertEquals(before, lastStats().message());
+        assertEquals("", lastStats().lens(), "a pinhole: no lens on the overlay");
+        input.command(Action.APERTURE_WIDER);
+        engine.step();
+        assertEquals(3.0 / 64, engine.camera().aperture(), 1e-15);
+        assertEquals("aperture 0.0469  focus 3", lastStats().lens());
+        refine();
+        input.focusAt(0, 0); // above the horizon, beside the ball: the sky
+        engine.step();
+        assertEquals(3, engine.camera().focus(), 1e-9, "the sky leaves the focus");
+        assertEquals("nothing under the mouse to focus on; aperture 0.0469  focus 3", lastStats().message());
+    }
+
     @Test
     void movingRendersCheapFramesAndMovesBySpeedTimesTime() {
         refine();

@@ -158,6 +158,32 @@ class WindowStudioTest {
         assertTrue(message().endsWith(png + " and " + written.get(0)), message());
     }
 
+    /** A plain click focuses the lens on the ball under the mouse (3 ahead); ] widens the aperture a step. */
+    @Test
+    void aClickFocusesTheLensAndABracketWidensIt() throws Exception {
+        String lens = TestScenes.sphere(0.1, 0.2, 0.3).replace("look_at: [0, 1, 0]}", "look_at: [0, 1, 0], aperture: 0.1}");
+        assertTrue(lens.contains("aperture"), lens);
+        open(Config.defaults().withSize(W, H).withSamples(1).withThreads(2), lens);
+        click(onScreen(W / 2, H - 2)); // the floor, nearer than the ball: 2.35 ahead
+        Poll.until(() -> window.engine().camera().focus() < 2.6, 10_000,
+                () -> "focused on the floor: " + window.engine().camera() + "; err: " + err);
+        click(onScreen(W / 2, H / 2));
+        Poll.until(() -> Math.abs(window.engine().camera().focus() - 3) < 0.01, 10_000,
+                () -> "focused on the ball's front: " + window.engine().camera() + "; err: " + err);
+        awaitMessage("aperture 0.1  focus 3", 10_000);
+        tap(KeyEvent.VK_CLOSE_BRACKET);
+        Poll.until(() -> Math.abs(window.engine().camera().aperture() - 0.1 * Math.sqrt(2)) < 1e-12, 10_000,
+                () -> "] widened the aperture: " + window.engine().camera() + "; err: " + err);
+        assertEquals(0, window.engine().camera().position().sub(new glint.math.Vector3d(0, 1, -4)).length(), 1e-12,
+                "a click does not move the camera");
+    }
+
+    private void click(Point at) {
+        robot.mouseMove(at.x, at.y);
+        robot.mousePress(InputEvent.BUTTON1_DOWN_MASK);
+        robot.mouseRelease(InputEvent.BUTTON1_DOWN_MASK);
+    }
+
     @Test
     void aMiddleButtonDragOrbitsToo() throws Exception {
         open(1);
