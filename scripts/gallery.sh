@@ -21,4 +21,8 @@ done
 java -jar target/glint.jar --config "$config" --scene scenes/default.yaml --integrator path --spp 256 \
     --output docs/images/gallery/default-path.png
 count=$((count + 1))
+# the lamp, its soft shadows, the frosted ball and the lens with light that bounces, at 256 samples per pixel
+java -jar target/glint.jar --config "$config" --scene scenes/lamplight.yaml --integrator path --spp 256 \
+    --output docs/images/gallery/lamplight-path.png
+count=$((count + 1))
 echo "gallery: $count pictures in $(($(date +%s) - start)) s"
