@@ -28,6 +28,25 @@ public final class DirectionalLightSampler implements LightSampler {
         return 0;
     }
 
+    /**
+     * Along the light's direction, from a point of the disc of the scene's radius facing it, outside the
+     * scene: the flux E pi R^2.
+     */
+    @Override
+    public void leaving(double[] data, int at, double cx, double cy, double cz, double sceneRadius, double u1,
+                        double u2, double u3, double u4, LightRay out) {
+        double tx = data[at], ty = data[at + 1], tz = data[at + 2]; // towards the light
+        double[] p = out.scratch;
+        Directions.onDisc(cx + tx * sceneRadius, cy + ty * sceneRadius, cz + tz * sceneRadius, tx, ty, tz,
+                sceneRadius, u1, u2, p);
+        out.setOrigin(p[0], p[1], p[2]);
+        out.setDirection(-tx, -ty, -tz);
+        double area = Math.PI * sceneRadius * sceneRadius;
+        out.setFlux(data[at + 3] * area, data[at + 4] * area, data[at + 5] * area);
+        out.pdfOrigin = 1 / area;
+        out.pdfDirection = 1;
+    }
+
     @Override
     public boolean isDelta() {
         return true;

@@ -36,6 +36,15 @@ public interface LightSampler {
     double power(double[] data, int at, double sceneRadius);
 
     /**
+     * Light leaving the light, sampled by the uniform numbers u1 to u4, into {@code out}: its origin,
+     * direction, flux and densities ({@link LightRay}). A light at infinity sends its rays across a
+     * disc of radius {@code sceneRadius} around the scene's centre c, facing them, from outside it.
+     * Over many samples the flux's mean channel is {@link #power}.
+     */
+    void leaving(double[] data, int at, double cx, double cy, double cz, double sceneRadius, double u1, double u2,
+                 double u3, double u4, LightRay out);
+
+    /**
      * The radiance arriving along unit direction d from a light at infinity, for a ray that escapes
      * the scene, into {@code out}; 0 for a light that is not seen that way.
      */

@@ -99,6 +99,15 @@ public final class Lights {
         return sampler[i].pdf(data, start[i], px, py, pz, wx, wy, wz);
     }
 
+    /**
+     * Light leaving light i, sampled by u1 to u4, into {@code out} ({@link LightSampler#leaving}); a light
+     * at infinity sends it across the disc of radius {@code sceneRadius} around c.
+     */
+    public void leaving(int i, double cx, double cy, double cz, double sceneRadius, double u1, double u2, double u3,
+                        double u4, LightRay out) {
+        sampler[i].leaving(data, start[i], cx, cy, cz, sceneRadius, u1, u2, u3, u4, out);
+    }
+
     /** Light i's power, the mean of its channels ({@link LightSampler#power}). */
     public double power(int i, double sceneRadius) {
         return sampler[i].power(data, start[i], sceneRadius);

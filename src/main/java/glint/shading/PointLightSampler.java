@@ -41,6 +41,20 @@ public final class PointLightSampler implements LightSampler {
         return 0;
     }
 
+    /** From the position, a direction uniform over the sphere: the flux 4 pi I. */
+    @Override
+    public void leaving(double[] data, int at, double cx, double cy, double cz, double sceneRadius, double u1,
+                        double u2, double u3, double u4, LightRay out) {
+        double[] w = out.scratch;
+        Directions.uniform(u1, u2, w);
+        out.setOrigin(data[at], data[at + 1], data[at + 2]);
+        out.setDirection(w[0], w[1], w[2]);
+        double k = 4 * Math.PI;
+        out.setFlux(data[at + 3] * k, data[at + 4] * k, data[at + 5] * k);
+        out.pdfOrigin = 1;
+        out.pdfDirection = 1 / k;
+    }
+
     @Override
     public boolean isDelta() {
         return true;

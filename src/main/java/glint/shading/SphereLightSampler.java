@@ -58,6 +58,27 @@ public final class SphereLightSampler implements LightSampler {
         return within ? Cone.pdf(oneMinusCos) : 0;
     }
 
+    /**
+     * From a point uniform over the sphere (density 1 / (4 pi r^2)), a direction about its outward
+     * normal with density cos / pi: the flux L pi 4 pi r^2, the power.
+     */
+    @Override
+    public void leaving(double[] data, int at, double cx, double cy, double cz, double sceneRadius, double u1,
+                        double u2, double u3, double u4, LightRay out) {
+        double radius = data[at + 3];
+        double[] v = out.scratch;
+        Directions.uniform(u1, u2, v);
+        double nx = v[0], ny = v[1], nz = v[2];
+        out.setOrigin(data[at] + radius * nx, data[at + 1] + radius * ny, data[at + 2] + radius * nz);
+        double cos = Directions.cosineAbout(nx, ny, nz, u3, u4, v);
+        out.setDirection(v[0], v[1], v[2]);
+        double area = 4 * Math.PI * radius * radius;
+        double k = Math.PI * area; // L cos / ((1 / area) (cos / pi))
+        out.setFlux(data[at + 4] * k, data[at + 5] * k, data[at + 6] * k);
+        out.pdfOrigin = 1 / area;
+        out.pdfDirection = cos / Math.PI;
+    }
+
     @Override
     public boolean isDelta() {
         return false;

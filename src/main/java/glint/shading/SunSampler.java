@@ -42,6 +42,29 @@ public final class SunSampler implements LightSampler {
         return within(data, at, wx, wy, wz) ? Cone.pdf(data[at + 3]) : 0;
     }
 
+    /**
+     * A direction uniform over the sun's cone, then a point of the disc of the scene's radius facing
+     * it, outside the scene: the flux L x solid angle x pi R^2, the power.
+     */
+    @Override
+    public void leaving(double[] data, int at, double cx, double cy, double cz, double sceneRadius, double u1,
+                        double u2, double u3, double u4, LightRay out) {
+        double oneMinusCos = data[at + 3];
+        LightSample towards = out.towards;
+        Cone.sample(data[at], data[at + 1], data[at + 2], oneMinusCos, u1, u2, towards);
+        double tx = towards.dirX, ty = towards.dirY, tz = towards.dirZ;
+        double[] p = out.scratch;
+        Directions.onDisc(cx + tx * sceneRadius, cy + ty * sceneRadius, cz + tz * sceneRadius, tx, ty, tz,
+                sceneRadius, u3, u4, p);
+        out.setOrigin(p[0], p[1], p[2]);
+        out.setDirection(-tx, -ty, -tz);
+        double area = Math.PI * sceneRadius * sceneRadius;
+        double k = Cone.solidAngle(oneMinusCos) * area;
+        out.setFlux(data[at + 5] * k, data[at + 6] * k, data[at + 7] * k);
+        out.pdfOrigin = 1 / area;
+        out.pdfDirection = Cone.pdf(oneMinusCos);
+    }
+
     @Override
     public boolean isDelta() {
         return false;

@@ -1,5 +1,6 @@
 package glint.recipe;
 
+import glint.shading.LightRay;
 import glint.shading.LightSample;
 import glint.shading.LightSampler;
 
@@ -31,6 +32,25 @@ final class LampSampler implements LightSampler {
     @Override
     public double pdf(double[] data, int at, double px, double py, double pz, double wx, double wy, double wz) {
         return 0;
+    }
+
+    /** From the position, a direction uniform over the sphere, carrying the power. */
+    @Override
+    public void leaving(double[] data, int at, double cx, double cy, double cz, double sceneRadius, double u1,
+                        double u2, double u3, double u4, LightRay out) {
+        double z = 1 - 2 * u1, r = Math.sqrt(Math.max(0, 1 - z * z)), phi = 2 * Math.PI * u2;
+        out.originX = data[at];
+        out.originY = data[at + 1];
+        out.originZ = data[at + 2];
+        out.dirX = r * Math.cos(phi);
+        out.dirY = r * Math.sin(phi);
+        out.dirZ = z;
+        double area = Math.PI * sceneRadius * sceneRadius;
+        out.fluxR = data[at + 3] * area;
+        out.fluxG = data[at + 4] * area;
+        out.fluxB = data[at + 5] * area;
+        out.pdfOrigin = 1;
+        out.pdfDirection = 1 / (4 * Math.PI);
     }
 
     @Override

@@ -8,6 +8,7 @@ import static org.junit.jupiter.api.Assertions.fail;
 import glint.input.InputException;
 import glint.scene.Light;
 import glint.scenefile.SceneLoader;
+import glint.shading.LightRay;
 import glint.shading.LightSample;
 import glint.shading.Lights;
 import java.util.ArrayList;
@@ -24,7 +25,8 @@ import org.junit.jupiter.params.provider.MethodSource;
  * that has none fails, so a new type cannot go untested), compiled, and its sampler checked on
  * seeded random points: a sampled direction's density is what {@code pdf} answers for it; the
  * density integrates to 1 over the directions it covers and is 0 off them; the irradiance its
- * samples stand for, summed over a sphere around the light, is its power.
+ * samples stand for, summed over a sphere around the light, is its power, and so is the mean flux of
+ * the light leaving it.
  */
 class LightTypeContractTest {
 
@@ -172,6 +174,42 @@ class LightTypeContractTest {
         flux *= 4 * Math.PI * SPHERE * SPHERE / n;
         double power = lights.power(0, SPHERE);
         assertEquals(power, flux, 0.02 * power, c + ": flux through the sphere against the power");
+    }
+
+    /**
+     * Light leaving it: the flux its rays stand for averages to its power, and each ray, followed back
+     * from a point on it, comes from the light as its sample from that point sees it (the direction a
+     * delta light's sample gives; a direction of non-zero density for a light with a size).
+     */
+    @ParameterizedTest
+    @MethodSource("lights")
+    void theFluxOfTheLightLeavingItIsItsPowerAlongDirectionsItsSampleSees(Case c) {
+        Lights lights = c.lights();
+        Random random = new Random(5);
+        LightRay ray = new LightRay();
+        LightSample seen = new LightSample();
+        int n = 100_000;
+        double flux = 0;
+        for (int k = 0; k < n; k++) {
+            lights.leaving(0, 0, 0, 0, SPHERE, random.nextDouble(), random.nextDouble(), random.nextDouble(),
+                    random.nextDouble(), ray);
+            flux += (ray.fluxR + ray.fluxG + ray.fluxB) / 3;
+            assertEquals(1, ray.dirX * ray.dirX + ray.dirY * ray.dirY + ray.dirZ * ray.dirZ, 1e-12);
+            assertTrue(ray.pdfOrigin > 0 && ray.pdfDirection > 0);
+            if (k % 100 == 0) {
+                double px = ray.originX + 2 * ray.dirX, py = ray.originY + 2 * ray.dirY, pz = ray.originZ + 2 * ray.dirZ;
+                if (lights.isDelta(0)) {
+                    assertTrue(lights.sample(0, px, py, pz, 0.5, 0.5, seen));
+                    assertEquals(-1, seen.dirX * ray.dirX + seen.dirY * ray.dirY + seen.dirZ * ray.dirZ, 1e-9);
+                } else {
+                    assertTrue(lights.pdf(0, px, py, pz, -ray.dirX, -ray.dirY, -ray.dirZ) > 0,
+                            c + ": a ray leaving it, seen from along it");
+                }
+            }
+        }
+        flux /= n;
+        double power = lights.power(0, SPHERE);
+        assertEquals(power, flux, 0.02 * power, c + ": mean flux of the light leaving it against its power");
     }
 
     /** A light with a size whose size goes to 0 lights a point as the delta light it becomes. */
