@@ -21,6 +21,17 @@ final class Cone {
         return 1 / (2 * Math.PI * oneMinusCos);
     }
 
+    /**
+     * Sets what a direction sampled uniformly in the cone stands for when the light covering it sends
+     * radiance l per channel: irradiance l x the cone's solid angle (radiance over the density), and the
+     * density.
+     */
+    static void setLight(double oneMinusCos, double r, double g, double b, LightSample out) {
+        double solidAngle = solidAngle(oneMinusCos);
+        out.setIrradiance(r * solidAngle, g * solidAngle, b * solidAngle);
+        out.pdf = 1 / solidAngle;
+    }
+
     /** The cone's solid angle, 2 pi (1 - cos theta_max). */
     static double solidAngle(double oneMinusCos) {
         return 2 * Math.PI * oneMinusCos;

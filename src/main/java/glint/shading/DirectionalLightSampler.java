@@ -4,7 +4,7 @@ package glint.shading;
  * A directional light of size 0, its numbers [x, y, z, R, G, B]: the unit direction towards it and
  * the irradiance on a surface facing it; the same from everywhere. A delta light.
  */
-public final class DirectionalLightSampler implements LightSampler {
+public final class DirectionalLightSampler implements DeltaLightSampler {
 
     /** How many numbers a directional light keeps. */
     public static final int SIZE = 6;

@@ -4,7 +4,7 @@ package glint.shading;
  * A point light, its numbers [x, y, z, R, G, B]: the position and the radiant intensity (colour x
  * intensity); inverse-square irradiance along the direction to it. A delta light.
  */
-public final class PointLightSampler implements LightSampler {
+public final class PointLightSampler implements DeltaLightSampler {
 
     /** How many numbers a point light keeps. */
     public static final int SIZE = 6;

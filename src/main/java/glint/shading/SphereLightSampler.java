@@ -37,9 +37,7 @@ public final class SphereLightSampler implements LightSampler {
         double cos = Math.sqrt(Math.max(0, 1 - sin2));
         // the nearer of the two points where the direction meets the sphere
         out.distance = distance * cos - Math.sqrt(Math.max(0, radius * radius - distance2 * sin2));
-        double solidAngle = Cone.solidAngle(oneMinusCos);
-        out.setIrradiance(data[at + 4] * solidAngle, data[at + 5] * solidAngle, data[at + 6] * solidAngle);
-        out.pdf = 1 / solidAngle;
+        Cone.setLight(oneMinusCos, data[at + 4], data[at + 5], data[at + 6], out);
         return true;
     }
 

@@ -31,9 +31,7 @@ public final class SunSampler implements LightSampler {
         double oneMinusCos = data[at + 3];
         Cone.sample(data[at], data[at + 1], data[at + 2], oneMinusCos, u1, u2, out);
         out.distance = Double.POSITIVE_INFINITY;
-        double solidAngle = Cone.solidAngle(oneMinusCos);
-        out.setIrradiance(data[at + 5] * solidAngle, data[at + 6] * solidAngle, data[at + 7] * solidAngle);
-        out.pdf = 1 / solidAngle;
+        Cone.setLight(oneMinusCos, data[at + 5], data[at + 6], data[at + 7], out);
         return true;
     }
 

@@ -2,13 +2,13 @@ package glint.recipe;
 
 import glint.shading.LightRay;
 import glint.shading.LightSample;
-import glint.shading.LightSampler;
+import glint.shading.DeltaLightSampler;
 
 /**
  * How shading samples a {@link Lamp}, its numbers [x, y, z, R, G, B]: the direction towards its
  * position, and its power as irradiance at any distance. A delta light.
  */
-final class LampSampler implements LightSampler {
+final class LampSampler implements DeltaLightSampler {
 
     @Override
     public boolean sample(double[] data, int at, double px, double py, double pz, double u1, double u2,
@@ -29,11 +29,6 @@ final class LampSampler implements LightSampler {
         return true;
     }
 
-    @Override
-    public double pdf(double[] data, int at, double px, double py, double pz, double wx, double wy, double wz) {
-        return 0;
-    }
-
     /** From the position, a direction uniform over the sphere, carrying the power. */
     @Override
     public void leaving(double[] data, int at, double cx, double cy, double cz, double sceneRadius, double u1,
@@ -51,11 +46,6 @@ final class LampSampler implements LightSampler {
         out.fluxB = data[at + 5] * area;
         out.pdfOrigin = 1;
         out.pdfDirection = 1 / (4 * Math.PI);
-    }
-
-    @Override
-    public boolean isDelta() {
-        return true;
     }
 
     /** The irradiance over a disc of the scene's radius, as a directional light's. */
