@@ -17,18 +17,21 @@ import java.util.Optional;
  * the pinhole's screen; a camera whose rays leave different points has each ray of a row searched in the
  * aggregate from its own origin. Implementations are immutable and shared by the render threads.
  *
- * <p>A new camera is a class of its own, named in {@code permits} and chosen by {@link #of}; the contract
- * test ({@code CameraModelContractTest}) holds every permitted class to this interface and fails while one
- * has no case.
+ * <p>A new camera is a class of its own, chosen from the scene's camera by {@link #of}; the contract test
+ * ({@code CameraModelContractTest}) holds every class {@code of} gives to this interface and fails while
+ * one has no case. A tool or test renders through any model with {@link RenderScene#withCamera(CameraModel)}.
  */
-public sealed interface CameraModel permits PinholeCamera, ThinLensCamera {
+public interface CameraModel {
 
     /** The camera model of a scene's camera: the pinhole at aperture 0 (its rays bit for bit), else a thin lens. */
     static CameraModel of(Camera camera) {
         return camera.aperture() > 0 ? new ThinLensCamera(camera) : new PinholeCamera(camera);
     }
 
-    /** Whether every ray leaves the same point, {@link #eye()}; true only of a {@link PinholeCamera}. */
+    /**
+     * Whether every ray leaves the same point, {@link #eye()}: true only of a {@link PinholeCamera}, whose
+     * screen the row search reads; any other camera answers false and its rows are searched ray by ray.
+     */
     boolean oneOrigin();
 
     /** The camera's centre: the point every ray of a pinhole leaves, the centre of a lens. */

@@ -130,7 +130,7 @@ public final class RenderScene {
     }
 
     /** The same compiled scene seen from another camera: shares everything else. */
-    private RenderScene(RenderScene base, Camera camera) {
+    private RenderScene(RenderScene base, CameraModel camera) {
         settings = base.settings;
         primitives = base.primitives;
         aggregate = base.aggregate;
@@ -147,7 +147,7 @@ public final class RenderScene {
         ambientR = base.ambientR;
         ambientG = base.ambientG;
         ambientB = base.ambientB;
-        this.camera = CameraModel.of(camera);
+        this.camera = camera;
     }
 
     /** Compiles an immutable scene with the given settings. */
@@ -173,7 +173,12 @@ public final class RenderScene {
      * rebuilt): what a window needs for every frame of a moving camera.
      */
     public RenderScene withCamera(Camera camera) {
-        return new RenderScene(this, camera);
+        return new RenderScene(this, CameraModel.of(camera));
+    }
+
+    /** This scene through a camera model of the caller's (one no scene camera compiles to), without recompiling it. */
+    public RenderScene withCamera(CameraModel model) {
+        return new RenderScene(this, model);
     }
 
     public RenderSettings settings() {
