@@ -7,9 +7,11 @@ import java.time.LocalDate;
 import java.util.ArrayList;
 import java.util.EnumMap;
 import java.util.LinkedHashMap;
+import java.util.LinkedHashSet;
 import java.util.List;
 import java.util.Locale;
 import java.util.Map;
+import java.util.Set;
 
 /**
  * The stability study: for each known failure of a textbook method, the textbook method beside
@@ -17,7 +19,9 @@ import java.util.Map;
  * target/study/ by default, docs/ itself with --docs, or --out DIR. Run from the repository root, with the
  * lab jar built (docs/benchmarks.md; about half a minute on 2 cores):
  *
- * <pre>java -cp target/benchmarks.jar glint.study.Stability [--docs | --out DIR]</pre>
+ * <pre>java -cp target/benchmarks.jar glint.study.Stability [--docs | --out DIR] [--only SECTION,...]</pre>
+ *
+ * With {@code --only}, just the named sections ({@link #SECTIONS}) are written.
  */
 public final class Stability {
 
@@ -26,10 +30,18 @@ public final class Stability {
     private Stability() {
     }
 
+    /** The generated sections, by the name of their markers less "stability-", in the page's order. */
+    static final List<String> SECTIONS = List.of("sphere", "offset", "fresnel", "microfacet", "quaternion",
+            "ggx-sampling", "fireflies", "glass-sky", "cone", "sized-fireflies");
+
+    static final String USAGE = "usage: Stability [--docs | --out DIR] [--only SECTION,...]";
+
     public static void main(String[] args) throws Exception {
         Path out;
+        Set<String> only;
         try {
             out = output(args);
+            only = only(args);
         } catch (IllegalArgumentException e) {
             System.err.println("Stability: " + e.getMessage());
             System.exit(2);
@@ -37,21 +49,36 @@ public final class Stability {
         }
         Path images = out.resolve("images");
         Path doc = out.resolve("stability.md");
-        String command = COMMAND + (args.length > 0 ? " " + String.join(" ", args) : "");
-        String stamp = "Generated " + LocalDate.now() + " by `" + command + "` (" + Runtime.getRuntime().availableProcessors()
-                + " cores, shared; the results do not depend on the machine: they are counts, not times).";
-        GeneratedSection.write(doc, "stability-stamp", stamp);
-        GeneratedSection.write(doc, "stability-sphere", spheres(images));
-        GeneratedSection.write(doc, "stability-offset", offsets(images));
-        GeneratedSection.write(doc, "stability-fresnel", fresnel(images));
-        GeneratedSection.write(doc, "stability-microfacet", microfacet(images));
-        GeneratedSection.write(doc, "stability-quaternion", quaternion(images));
-        GeneratedSection.write(doc, "stability-ggx-sampling", PathStability.ggx(images));
+        if (only.isEmpty()) {
+            String command = COMMAND + (args.length > 0 ? " " + String.join(" ", args) : "");
+            String stamp = "Generated " + LocalDate.now() + " by `" + command + "` (" + Runtime.getRuntime().availableProcessors()
+                    + " cores, shared; the results do not depend on the machine: they are counts, not times).";
+            GeneratedSection.write(doc, "stability-stamp", stamp);
+        }
         try (Tracer tracer = new Tracer(Runtime.getRuntime().availableProcessors())) {
-            GeneratedSection.write(doc, "stability-fireflies", PathStability.fireflies(images, tracer));
-            GeneratedSection.write(doc, "stability-glass-sky", PathStability.glass(images, tracer));
+            for (String name : SECTIONS) {
+                if (only.isEmpty() || only.contains(name)) {
+                    GeneratedSection.write(doc, "stability-" + name, section(name, images, tracer));
+                }
+            }
         }
         System.out.println("wrote " + images.resolve("stability-*.png") + " and " + doc);
+    }
+
+    private static String section(String name, Path images, Tracer tracer) throws IOException {
+        return switch (name) {
+            case "sphere" -> spheres(images);
+            case "offset" -> offsets(images);
+            case "fresnel" -> fresnel(images);
+            case "microfacet" -> microfacet(images);
+            case "quaternion" -> quaternion(images);
+            case "ggx-sampling" -> PathStability.ggx(images);
+            case "fireflies" -> PathStability.fireflies(images, tracer);
+            case "glass-sky" -> PathStability.glass(images, tracer);
+            case "cone" -> LightStability.cone(images);
+            case "sized-fireflies" -> LightStability.fireflies(images, tracer);
+            default -> throw new IllegalArgumentException(name);
+        };
     }
 
     /** The output folder the arguments choose: target/study, docs/ with --docs, or --out DIR. */
@@ -63,8 +90,11 @@ public final class Stability {
                 out = Path.of(args[++i]);
             } else if (args[i].equals("--docs")) {
                 out = Path.of("docs");
+            } else if (args[i].equals("--only") && i + 1 < args.length) {
+                i++;
+                continue;
             } else {
-                throw new IllegalArgumentException("unexpected '" + args[i] + "'; usage: Stability [--docs | --out DIR]");
+                throw new IllegalArgumentException("unexpected '" + args[i] + "'; " + USAGE);
             }
             choices++;
         }
@@ -72,6 +102,28 @@ public final class Stability {
             throw new IllegalArgumentException("--docs and --out both choose the output folder; give one");
         }
         return out;
+    }
+
+    /**
+     * The sections {@code --only} names (empty: all, with the page's date stamp; a run of some sections
+     * leaves the stamp and the others as they were).
+     */
+    static Set<String> only(String... args) {
+        Set<String> names = new LinkedHashSet<>();
+        for (int i = 0; i + 1 < args.length; i++) {
+            if (args[i].equals("--only")) {
+                for (String name : args[++i].split(",")) {
+                    if (!SECTIONS.contains(name.strip())) {
+                        throw new IllegalArgumentException("no section '" + name.strip() + "'; sections: "
+                                + String.join(", ", SECTIONS));
+                    }
+                    names.add(name.strip());
+                }
+            } else if (args[i].equals("--out")) {
+                i++;
+            }
+        }
+        return names;
     }
 
     // ---- ray-sphere -----------------------------------------------------------------------------
