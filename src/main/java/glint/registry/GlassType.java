@@ -10,13 +10,14 @@ import java.util.List;
 /**
  * {@code {type: glass, ior: n, roughness: r}}: a dielectric, scattered by {@link Dielectric} (index of
  * refraction n, smooth at roughness 0, frosted above); it reads {@code ior} and {@code roughness}
- * besides the common keys.
+ * besides the common keys, and compiles to its ior and GGX alpha.
  */
 public final class GlassType {
 
     public static final MaterialType TYPE = new MaterialType("glass", List.of("ior", "roughness"),
             (fields, common) -> MetalType.read(fields, read(fields, common)), new Dielectric(), new GlassResponse(),
             Vector3d.ONE, 0.01, 0.2, 0.79, 125)
+            .compiledBy(m -> Dielectric.parameters(m.ior(), m.roughness()))
             .sampledAt("ior", 0.75, 1.5, 2.4)
             .sampledAt("roughness", 0, 0.2, 0.5, 1);
 

@@ -4,6 +4,7 @@ import glint.input.InputException;
 import glint.math.Vector3d;
 import glint.scene.Material;
 import glint.shading.Bsdf;
+import glint.shading.Materials;
 import glint.shading.WhittedResponse;
 import java.util.ArrayList;
 import java.util.LinkedHashMap;
@@ -18,7 +19,8 @@ import java.util.Map;
  * reads the colour and the phong coefficients ({@link #COMMON_KEYS}) over its preset, because the
  * phong model reads kd, ks, kt and shininess of every material whatever its type and refracts any
  * material with kt above 0 (at its ior, the preset's 1.5 unless the type reads {@code ior}); a
- * type's reader reads besides the physical parameters its BSDF uses, each checked against its range.
+ * type's reader reads besides the physical parameters its BSDF uses, each checked against its range,
+ * and the type compiles a material into the numbers its BSDF reads ({@link #compiledBy}, {@link #compile}).
  */
 public final class MaterialType {
 
@@ -40,6 +42,8 @@ public final class MaterialType {
     private final String name;
     private final List<String> keys;
     private final Reader reader;
+    /** The numbers its BSDF reads of a material; null: none. */
+    private final Compiler compiler;
     private final Bsdf bsdf;
     private final WhittedResponse response;
     private final Material preset;
@@ -54,6 +58,12 @@ public final class MaterialType {
          * keys read over it; a key the mapping leaves out keeps its value.
          */
         Material read(Fields fields, Material common) throws InputException;
+    }
+
+    /** Compiles a material of a type into the numbers its BSDF reads ({@link Materials#parameter}). */
+    @FunctionalInterface
+    public interface Compiler {
+        double[] compile(Material material);
     }
 
     /**
@@ -76,12 +86,14 @@ public final class MaterialType {
         this.response = response;
         this.preset = new Material(name, color, kd, ks, kt, shininess, 1.5, 0);
         this.sampleValues = Map.of();
+        this.compiler = null;
     }
 
-    private MaterialType(MaterialType type, Map<String, double[]> sampleValues) {
+    private MaterialType(MaterialType type, Map<String, double[]> sampleValues, Compiler compiler) {
         name = type.name;
         keys = type.keys;
         reader = type.reader;
+        this.compiler = compiler;
         bsdf = type.bsdf;
         response = type.response;
         preset = type.preset;
@@ -106,7 +118,25 @@ public final class MaterialType {
         }
         Map<String, double[]> all = new LinkedHashMap<>(sampleValues);
         all.put(key, values.clone());
-        return new MaterialType(this, all);
+        return new MaterialType(this, all, compiler);
+    }
+
+    /** This type, compiling a material into the numbers its BSDF reads with {@code compiler} (a metal: its alpha). */
+    public MaterialType compiledBy(Compiler compiler) {
+        return new MaterialType(this, sampleValues, compiler);
+    }
+
+    /**
+     * A material of this type as the compiled scene keeps it: the type's BSDF and response, the
+     * colour and phong's coefficients, and the numbers its BSDF reads.
+     */
+    public Materials.Material compile(Material m) {
+        if (!m.type().equals(name)) {
+            throw new IllegalArgumentException("a " + m.type() + " material is not of type " + name);
+        }
+        double[] numbers = compiler == null ? new double[0] : compiler.compile(m);
+        return new Materials.Material(bsdf, response, m.color(), m.kd(), m.ks(), m.kt(), m.shininess(), m.ior(),
+                numbers);
     }
 
     /** The physical keys this type reads ({@link #keys} besides the common ones). */

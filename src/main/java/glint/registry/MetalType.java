@@ -9,12 +9,13 @@ import java.util.List;
 
 /**
  * {@code {type: metal, roughness: r}}: a conductor, scattered by {@link Conductor} (GGX of
- * roughness r); it reads {@code roughness} besides the common keys.
+ * roughness r); it reads {@code roughness} besides the common keys, and compiles to its GGX alpha.
  */
 public final class MetalType {
 
     public static final MaterialType TYPE = new MaterialType("metal", List.of("roughness"), MetalType::read,
             new Conductor(), new MetalResponse(), new Vector3d(0.9, 0.9, 0.9), 0.1, 0.7, 0.0, 50)
+            .compiledBy(m -> Conductor.parameters(m.roughness()))
             .sampledAt("roughness", 0, 0.2, 0.5, 1);
 
     private MetalType() {

@@ -85,10 +85,11 @@ class BsdfContractTest {
         }
     }
 
+    /** The case's material, of grey {@code color}, compiled by its type. */
     static Materials materials(Case c, double color) {
         Material m = c.material();
-        return Materials.of(List.of(new Materials.Parameters(c.type().bsdf(), c.type().response(),
-                new Vector3d(color, color, color), m.kd(), m.ks(), m.kt(), m.shininess(), m.ior(), m.roughness())));
+        return Materials.of(List.of(c.type().compile(new Material(m.type(), new Vector3d(color, color, color), m.kd(),
+                m.ks(), m.kt(), m.shininess(), m.ior(), m.roughness()))));
     }
 
     /** The surface met: its normal faces wo; from the back the normal is the outward one reversed. */
