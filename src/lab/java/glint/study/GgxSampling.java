@@ -28,8 +28,8 @@ final class GgxSampling {
     /** Glint's sampling through the renderer's conductor. */
     static Stats glint(double roughness, double mu, int n) {
         Conductor conductor = new Conductor();
-        Materials m = Materials.of(List.of(new Materials.Parameters(conductor, new MetalResponse(),
-                new Vector3d(1, 1, 1), 0, 0, 0, 0, 1.5, roughness)));
+        Materials m = Materials.of(List.of(new Materials.Material(conductor, new MetalResponse(),
+                new Vector3d(1, 1, 1), 0, 0, 0, 0, 1.5, Conductor.parameters(roughness))));
         Surface s = new Surface();
         s.nz = 1;
         s.cosIncident = mu;

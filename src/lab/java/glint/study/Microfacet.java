@@ -7,7 +7,7 @@ import glint.shading.Optics;
  * cosines a renderer has at hand, plus its directional albedo (the fraction of light from one
  * direction that the lobe reflects, with Fresnel = 1): at most 1 for an energy-conserving lobe.
  *
- * <p>Glint: GGX with alpha = roughness^2 clamped to at least 1e-4 (Materials.MIN_ALPHA), no lobe at
+ * <p>Glint: GGX with alpha = roughness^2 clamped to at least 1e-4 (glint.shading.Microfacet.alpha), no lobe at
  * roughness 0 (a pure mirror), height-correlated Smith visibility. (The renderer's Conductor takes
  * alpha below Microfacet.MIRROR_ALPHA, 1e-3, for a mirror and has no lobe there.) Textbook (Cook and Torrance 1982,
  * as in the 2020 report): Beckmann distribution with m = roughness, the V-groove masking
@@ -15,7 +15,7 @@ import glint.shading.Optics;
  */
 public final class Microfacet {
 
-    /** Glint's smallest GGX alpha (Materials.MIN_ALPHA is package-private; this mirrors it). */
+    /** Glint's smallest GGX alpha (glint.shading.Microfacet.MIN_ALPHA is package-private; this mirrors it). */
     public static final double GLINT_MIN_ALPHA = 1e-4;
 
     private Microfacet() {

@@ -67,7 +67,7 @@ public record ShadowScene(List<double[]> spheres, boolean hasFloor, double floor
 
     /** As a Glint scene: white matte everywhere, black background, no ambient light. */
     public Scene toScene() {
-        Material white = new Material(MatteType.TYPE.name(), Vector3d.ONE, 0.99, 0.01, 0, 10, 1.5, 0);
+        Material white = new Material(MatteType.TYPE.name(), Vector3d.ONE, 0.99, 0.01, 0, 10);
         List<SceneObject> objects = new ArrayList<>();
         for (double[] sp : spheres) {
             objects.add(new SceneObject(new Sphere(new Vector3d(sp[0], sp[1], sp[2]), sp[3]), white));

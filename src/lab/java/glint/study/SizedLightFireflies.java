@@ -76,9 +76,10 @@ final class SizedLightFireflies {
         lights = Lights.of(List.of(new Lights.Light(new SphereLightSampler(),
                 SphereLightSampler.data(c.x(), c.y(), c.z(), radius, radiance, radiance, radiance), null)));
         materials = Materials.of(List.of(
-                new Materials.Parameters(lambert, new MatteResponse(), new Vector3d(Fireflies.ALBEDO, Fireflies.ALBEDO,
-                        Fireflies.ALBEDO), 1, 0, 0, 1, 1.5, 0),
-                new Materials.Parameters(conductor, new MetalResponse(), Vector3d.ONE, 0, 1, 0, 1, 1.5, roughness)));
+                new Materials.Material(lambert, new MatteResponse(), new Vector3d(Fireflies.ALBEDO, Fireflies.ALBEDO,
+                        Fireflies.ALBEDO), 1, 0, 0, 1, 1.5, new double[0]),
+                new Materials.Material(conductor, new MetalResponse(), Vector3d.ONE, 0, 1, 0, 1, 1.5,
+                        Conductor.parameters(roughness))));
         Vector3d wo = EYE.sub(POINT).normalize();
         woX = wo.x();
         woY = wo.y();

@@ -5,7 +5,6 @@ import glint.accel.AggregatePolicy;
 import glint.geometry.PrimitiveKind;
 import glint.geometry.Primitives;
 import glint.registry.LightType;
-import glint.registry.MaterialType;
 import glint.registry.Registry;
 import glint.registry.ShapeType;
 import glint.scene.Camera;
@@ -29,9 +28,6 @@ import java.util.function.Function;
  * Immutable; shared by all render threads.
  */
 public final class RenderScene {
-
-    /** The surface of every light's body. */
-    private static final LampBody LAMP_BODY = new LampBody();
 
     final RenderSettings settings;
     final Primitives primitives;
@@ -88,14 +84,13 @@ public final class RenderScene {
             lightOf[p] = light == null ? -1 : light;
             materialOf[p] = light == null ? indexOf(materialList, inOrder.get(p).material()) : -1;
         }
-        List<Materials.Parameters> parameters = new ArrayList<>(materialList.stream()
-                .map(m -> parameters(registry, m)).toList());
+        List<Materials.Material> compiledMaterials = new ArrayList<>(materialList.stream()
+                .map(m -> registry.material(m.type()).compile(m)).toList());
         int[] bodyMaterial = new int[compiledLights.size()];
         for (int i = 0; i < compiledLights.size(); i++) {
             if (compiledLights.get(i).body() != null) {
-                bodyMaterial[i] = parameters.size();
-                parameters.add(new Materials.Parameters(LAMP_BODY, LAMP_BODY, compiledLights.get(i).bodyRadiance(), 0, 0,
-                        0, 0, 1, 0));
+                bodyMaterial[i] = compiledMaterials.size();
+                compiledMaterials.add(LampBody.material(compiledLights.get(i).bodyRadiance()));
             }
         }
         for (int p = 0; p < materialOf.length; p++) {
@@ -103,7 +98,7 @@ public final class RenderScene {
                 materialOf[p] = bodyMaterial[lightOf[p]];
             }
         }
-        materials = Materials.of(parameters, settings.glassFresnel() == RenderSettings.GlassFresnel.EXACT);
+        materials = Materials.of(compiledMaterials, settings.glassFresnel() == RenderSettings.GlassFresnel.EXACT);
         shadowPass = new double[materialOf.length];
         for (int p = 0; p < materialOf.length && settings.shading() == Shading.PHONG; p++) {
             int m = materialOf[p];
@@ -215,12 +210,6 @@ public final class RenderScene {
             }
         }
         return kinds;
-    }
-
-    private static Materials.Parameters parameters(Registry registry, Material m) {
-        MaterialType type = registry.material(m.type());
-        return new Materials.Parameters(type.bsdf(), type.response(), m.color(), m.kd(), m.ks(), m.kt(), m.shininess(),
-                m.ior(), m.roughness());
     }
 
     private static int indexOf(List<Material> materials, Material material) {

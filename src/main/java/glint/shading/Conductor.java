@@ -8,6 +8,14 @@ package glint.shading;
  */
 public final class Conductor implements Bsdf {
 
+    /** Where its material's GGX alpha stands among its numbers ({@link Materials#parameter}). */
+    private static final int ALPHA = 0;
+
+    /** The numbers a conductor reads of its material, in order: its GGX alpha ({@link Microfacet#alpha}). */
+    public static double[] parameters(double roughness) {
+        return new double[] {Microfacet.alpha(roughness)};
+    }
+
     /**
      * f = D(h) G2 F(wo.h) / (4 wo.n wi.n), the GGX lobe, finite while either cosine is at least 1e-300;
      * none below {@link Microfacet#MIRROR_ALPHA}, a mirror.
@@ -16,7 +24,7 @@ public final class Conductor implements Bsdf {
     public void evaluate(Materials m, Surface s, double woX, double woY, double woZ, double wiX, double wiY,
                          double wiZ, Rgb f) {
         int material = s.material;
-        double alpha = m.alpha(material);
+        double alpha = m.parameter(material, ALPHA);
         double cosOut = woX * s.nx + woY * s.ny + woZ * s.nz, cosIn = wiX * s.nx + wiY * s.ny + wiZ * s.nz;
         if (alpha < Microfacet.MIRROR_ALPHA || !(cosOut > 0) || !(cosIn > 0)) {
             f.set(0, 0, 0);
@@ -37,7 +45,7 @@ public final class Conductor implements Bsdf {
     @Override
     public double pdf(Materials m, Surface s, double woX, double woY, double woZ, double wiX, double wiY,
                       double wiZ) {
-        double alpha = m.alpha(s.material);
+        double alpha = m.parameter(s.material, ALPHA);
         double cosOut = woX * s.nx + woY * s.ny + woZ * s.nz, cosIn = wiX * s.nx + wiY * s.ny + wiZ * s.nz;
         if (alpha < Microfacet.MIRROR_ALPHA || !(cosOut > 0) || !(cosIn > 0)) {
             return 0;
@@ -56,7 +64,7 @@ public final class Conductor implements Bsdf {
     public boolean sample(Materials m, Surface s, double woX, double woY, double woZ, double u1, double u2,
                           double uLobe, BsdfSample out) {
         int material = s.material;
-        double alpha = m.alpha(material);
+        double alpha = m.parameter(material, ALPHA);
         double cosOut = s.cosIncident;
         if (alpha < Microfacet.MIRROR_ALPHA) {
             mirror(s, woX, woY, woZ, out);
@@ -95,7 +103,7 @@ public final class Conductor implements Bsdf {
 
     @Override
     public int lobes(Materials m, int material) {
-        return m.alpha(material) < Microfacet.MIRROR_ALPHA ? Lobe.SPECULAR_REFLECTION : Lobe.GLOSSY_REFLECTION;
+        return m.parameter(material, ALPHA) < Microfacet.MIRROR_ALPHA ? Lobe.SPECULAR_REFLECTION : Lobe.GLOSSY_REFLECTION;
     }
 
     /** Sets out's direction to wo mirrored about s's normal. */

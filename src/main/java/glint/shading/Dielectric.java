@@ -16,6 +16,19 @@ package glint.shading;
  */
 public final class Dielectric implements Bsdf {
 
+    /** Where its material's ior and GGX alpha stand among its numbers ({@link Materials#parameter}). */
+    private static final int IOR = 0, ALPHA = 1;
+
+    /** The numbers glass reads of its material, in order: its ior and GGX alpha ({@link Microfacet#alpha}). */
+    public static double[] parameters(double ior, double roughness) {
+        return new double[] {ior, Microfacet.alpha(roughness)};
+    }
+
+    /** The index of refraction of material {@code material}, a glass. */
+    static double ior(Materials m, int material) {
+        return m.parameter(material, IOR);
+    }
+
     /** The Fresnel reflectance at cosine cos and ratio eta: exact, or Schlick's where the scene says. */
     static double reflectance(Materials m, double cos, double eta) {
         return m.exactFresnel() ? Optics.fresnelDielectric(cos, eta) : Optics.schlickDielectric(cos, eta);
@@ -27,7 +40,7 @@ public final class Dielectric implements Bsdf {
      * through, the smooth glass's delta, however rough).
      */
     static boolean rough(Materials m, int material) {
-        return m.alpha(material) >= Microfacet.MIRROR_ALPHA && m.ior(material) != 1;
+        return m.parameter(material, ALPHA) >= Microfacet.MIRROR_ALPHA && ior(m, material) != 1;
     }
 
     @Override
@@ -50,7 +63,7 @@ public final class Dielectric implements Bsdf {
             f.set(0, 0, 0);
             return;
         }
-        double alpha = m.alpha(material), eta = Optics.eta(m.ior(material), s.front);
+        double alpha = m.parameter(material, ALPHA), eta = Optics.eta(ior(m, material), s.front);
         if (cosIn > 0) {
             double scale = Microfacet.halfScale(woX + wiX, woY + wiY, woZ + wiZ);
             double hx = (woX + wiX) * scale, hy = (woY + wiY) * scale, hz = (woZ + wiZ) * scale;
@@ -92,7 +105,7 @@ public final class Dielectric implements Bsdf {
         if (!rough(m, material) || !(cosOut > 0) || !(cosIn != 0)) {
             return 0;
         }
-        double alpha = m.alpha(material), eta = Optics.eta(m.ior(material), s.front);
+        double alpha = m.parameter(material, ALPHA), eta = Optics.eta(ior(m, material), s.front);
         if (cosIn > 0) {
             double scale = Microfacet.halfScale(woX + wiX, woY + wiY, woZ + wiZ);
             double hx = (woX + wiX) * scale, hy = (woY + wiY) * scale, hz = (woZ + wiZ) * scale;
@@ -126,7 +139,7 @@ public final class Dielectric implements Bsdf {
     public boolean sample(Materials m, Surface s, double woX, double woY, double woZ, double u1, double u2,
                           double uLobe, BsdfSample out) {
         int material = s.material;
-        double eta = Optics.eta(m.ior(material), s.front);
+        double eta = Optics.eta(ior(m, material), s.front);
         if (rough(m, material)) {
             return sampleRough(m, s, woX, woY, woZ, eta, u1, u2, uLobe, out);
         }
@@ -151,7 +164,7 @@ public final class Dielectric implements Bsdf {
     private static boolean sampleRough(Materials m, Surface s, double woX, double woY, double woZ, double eta,
                                        double u1, double u2, double uLobe, BsdfSample out) {
         int material = s.material;
-        double alpha = m.alpha(material);
+        double alpha = m.parameter(material, ALPHA);
         double cosOut = woX * s.nx + woY * s.ny + woZ * s.nz;
         if (!(cosOut > 0)) {
             return false;

@@ -11,7 +11,7 @@ public final class GlassResponse implements WhittedResponse {
     @Override
     public void specular(Materials m, Surface s, SingleRays out) {
         int material = s.material;
-        out.eta = Optics.eta(m.ior(material), s.front);
+        out.eta = Optics.eta(Dielectric.ior(m, material), s.front);
         double reflectance = Dielectric.reflectance(m, s.cosIncident, out.eta);
         out.setReflect(reflectance, reflectance, reflectance);
         out.setTransmit((1 - reflectance) * m.color(material, 0), (1 - reflectance) * m.color(material, 1),

@@ -1,10 +1,26 @@
 package glint.shading;
 
+import glint.math.Vector3d;
+
 /**
  * The surface of a light with a body (a sphere light): black, it sends back nothing and sends on
- * no ray; it sends only the light's radiance, its material's colour, uniformly outwards. Not a material type a scene names: the scene compiler gives each such light's body one.
+ * no ray; it sends only the light's radiance, its material's colour, uniformly outwards. Not a
+ * material type a scene names: the scene compiler gives each such light's body one ({@link #material}).
  */
 public final class LampBody implements Bsdf, WhittedResponse {
+
+    private static final LampBody BODY = new LampBody();
+
+    private LampBody() {
+    }
+
+    /**
+     * The material of a light's body sending {@code radiance}: its colour, no phong coefficient (ior
+     * 1) and no numbers of its own.
+     */
+    public static Materials.Material material(Vector3d radiance) {
+        return new Materials.Material(BODY, BODY, radiance, 0, 0, 0, 0, 1, new double[0]);
+    }
 
     @Override
     public void evaluate(Materials m, Surface s, double woX, double woY, double woZ, double wiX, double wiY,

@@ -1,20 +1,22 @@
 package glint.shading;
 
 import glint.math.Vector3d;
-import java.util.ArrayList;
 import java.util.List;
 
-/** A scene's materials in flat arrays, indexed by material number. */
+/**
+ * A scene's materials in flat arrays, indexed by material number: what every material has (its BSDF,
+ * Whitted's response, the colour and the phong model's coefficients), and each material's own numbers,
+ * the ones its type compiled for its BSDF to read, one run in one flat array ({@link #parameter}).
+ */
 public final class Materials {
-
-    /** Smallest GGX alpha used for a highlight; keeps D(h) finite as roughness goes to 0. */
-    static final double MIN_ALPHA = 1e-4;
 
     private final Bsdf[] bsdf;
     private final WhittedResponse[] response;
     private final double[] color; // 3 per material, linear RGB
     private final double[] kd, ks, kt, shininess, ior;
-    private final double[] alpha; // GGX alpha = roughness^2; 0: no highlight
+    /** Where material m's own numbers start in {@link #data}. */
+    private final int[] start;
+    private final double[] data;
     private final boolean exactFresnel;
     /** Per material: whether Whitted's ambient light reaches it, and whether it sends light of its own. */
     private final boolean[] ambientLit, emits;
@@ -22,7 +24,7 @@ public final class Materials {
     private final int[] lobes;
     private final boolean[] delta;
 
-    private Materials(List<Parameters> materials, boolean exactFresnel) {
+    private Materials(List<Material> materials, boolean exactFresnel) {
         this.exactFresnel = exactFresnel;
         int n = materials.size();
         bsdf = new Bsdf[n];
@@ -33,13 +35,18 @@ public final class Materials {
         kt = new double[n];
         shininess = new double[n];
         ior = new double[n];
-        alpha = new double[n];
+        start = new int[n];
         ambientLit = new boolean[n];
         emits = new boolean[n];
         lobes = new int[n];
         delta = new boolean[n];
-        for (int i = 0; i < n; i++) {
-            Parameters m = materials.get(i);
+        int size = 0;
+        for (Material m : materials) {
+            size += m.parameters.length;
+        }
+        data = new double[size];
+        for (int i = 0, at = 0; i < n; i++) {
+            Material m = materials.get(i);
             bsdf[i] = m.bsdf;
             response[i] = m.response;
             ambientLit[i] = m.response.ambientLit();
@@ -52,7 +59,9 @@ public final class Materials {
             kt[i] = m.kt;
             shininess[i] = m.shininess;
             ior[i] = m.ior;
-            alpha[i] = m.roughness > 0 ? Math.max(m.roughness * m.roughness, MIN_ALPHA) : 0;
+            start[i] = at;
+            System.arraycopy(m.parameters, 0, data, at, m.parameters.length);
+            at += m.parameters.length;
         }
         for (int i = 0; i < n; i++) {
             lobes[i] = bsdf[i].lobes(this, i);
@@ -60,19 +69,27 @@ public final class Materials {
         }
     }
 
-    /** A material as the compiled scene keeps it: its type's BSDF and Whitted's response, and its values. */
-    public record Parameters(Bsdf bsdf, WhittedResponse response, Vector3d color, double kd, double ks, double kt,
-                             double shininess, double ior, double roughness) {
+    /**
+     * A material as the compiled scene keeps it: its type's BSDF and Whitted's response, the colour and
+     * the phong model's coefficients (kd, ks, kt, shininess and the ior it refracts at), and the numbers
+     * its BSDF reads ({@link #parameter}), in the order the BSDF reads them.
+     */
+    public record Material(Bsdf bsdf, WhittedResponse response, Vector3d color, double kd, double ks, double kt,
+                           double shininess, double ior, double[] parameters) {
+
+        public Material {
+            parameters = parameters.clone();
+        }
     }
 
     /** The materials numbered in the order given. */
-    public static Materials of(List<Parameters> materials) {
+    public static Materials of(List<Material> materials) {
         return of(materials, true);
     }
 
     /** The materials numbered in the order given; glass reflects by the exact Fresnel equations or by Schlick's. */
-    public static Materials of(List<Parameters> materials, boolean exactFresnel) {
-        return new Materials(new ArrayList<>(materials), exactFresnel);
+    public static Materials of(List<Material> materials, boolean exactFresnel) {
+        return new Materials(List.copyOf(materials), exactFresnel);
     }
 
     /** Whether a glass boundary reflects by the exact Fresnel equations (else by Schlick's). */
@@ -138,11 +155,16 @@ public final class Materials {
         return shininess[m];
     }
 
+    /** The index the phong model refracts material m's kt at (a glass's BSDF reads its own). */
     public double ior(int m) {
         return ior[m];
     }
 
-    public double alpha(int m) {
-        return alpha[m];
+    /**
+     * Number k of material m's own numbers, the ones its type compiled for its BSDF
+     * ({@code glint.registry.MaterialType}): the BSDF knows what each k means.
+     */
+    public double parameter(int m, int k) {
+        return data[start[m] + k];
     }
 }

@@ -17,7 +17,18 @@ public final class Microfacet {
      */
     public static final double MIRROR_ALPHA = 1e-3;
 
+    /** Smallest GGX alpha used for a highlight; keeps D(h) finite as roughness goes to 0. */
+    static final double MIN_ALPHA = 1e-4;
+
     private Microfacet() {
+    }
+
+    /**
+     * The GGX alpha of a roughness from 0 to 1: roughness^2, at least {@link #MIN_ALPHA} above 0; 0 (a
+     * mirror, no highlight) at 0.
+     */
+    public static double alpha(double roughness) {
+        return roughness > 0 ? Math.max(roughness * roughness, MIN_ALPHA) : 0;
     }
 
     /**

@@ -8,20 +8,25 @@ import glint.shading.Surface;
 
 /**
  * The BSDF of a material type added by the recipe of docs/architecture.md, in test sources only: a
- * surface that sends back its colour as radiance, whatever lights it, and sends no rays on.
- * {@link GlowType} registers it.
+ * surface that sends back its colour times its strength as radiance, whatever lights it, and sends no
+ * rays on. {@link GlowType} registers it and compiles a material's strength, the one number it reads.
  */
 final class Glow implements Bsdf {
+
+    /** Where its material's strength stands among its numbers ({@link Materials#parameter}). */
+    private static final int STRENGTH = 0;
 
     @Override
     public boolean emits() {
         return true;
     }
 
-    /** Its colour, whatever lights it. */
+    /** Its colour times its strength, whatever lights it. */
     @Override
     public void emitted(Materials m, Surface s, Rgb out) {
-        out.set(m.color(s.material, 0), m.color(s.material, 1), m.color(s.material, 2));
+        double strength = m.parameter(s.material, STRENGTH);
+        out.set(strength * m.color(s.material, 0), strength * m.color(s.material, 1),
+                strength * m.color(s.material, 2));
     }
 
     /** It reflects nothing: no lobe to evaluate or sample. */

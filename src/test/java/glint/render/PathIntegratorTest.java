@@ -69,8 +69,8 @@ class PathIntegratorTest {
         int pixels = rgb.length / 3;
         double mean = sum / pixels;
         // the directional albedo at normal view, by quadrature of f cos over the hemisphere
-        Materials m = Materials.of(List.of(new Materials.Parameters(new Conductor(), new MetalResponse(),
-                Vector3d.ONE, 1, 0, 0, 1, 1.5, roughness)));
+        Materials m = Materials.of(List.of(new Materials.Material(new Conductor(), new MetalResponse(),
+                Vector3d.ONE, 1, 0, 0, 1, 1.5, Conductor.parameters(roughness))));
         Surface s = new Surface();
         s.nz = 1;
         s.cosIncident = 1;

@@ -184,8 +184,8 @@ class SceneLoaderErrorTest {
                   - {type: sphere, center: [0, 0, 0], radius: 1, material: m}
                   - {type: sphere, center: [0, 0, 3], radius: 1, material: n}
                 """);
-        assertEquals(0.5, scene.objects().get(0).material().roughness());
-        assertEquals(0.0, scene.objects().get(1).material().roughness());
+        assertEquals(0.5, scene.objects().get(0).material().parameter("roughness"));
+        assertEquals(java.util.Map.of(), scene.objects().get(1).material().parameters());
     }
 
     @Test

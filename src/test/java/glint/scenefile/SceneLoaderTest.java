@@ -9,6 +9,7 @@ import glint.input.InputException;
 import glint.math.Vector3d;
 import glint.registry.GlassType;
 import glint.registry.MatteType;
+import glint.registry.MetalType;
 import glint.scene.Camera;
 import glint.scene.Light;
 import glint.scene.Material;
@@ -19,6 +20,7 @@ import java.io.IOException;
 import java.nio.file.Files;
 import java.nio.file.Path;
 import java.util.List;
+import java.util.Map;
 import java.util.stream.Stream;
 import org.junit.jupiter.api.Test;
 
@@ -99,11 +101,11 @@ class SceneLoaderTest {
                   - {type: sphere, center: [0, 0, 0], radius: 1, material: metal}
                   - {type: sphere, center: [0, 0, 0], radius: 1, material: glass}
                 """);
-        assertEquals(new Material("matte", v(0.8, 0.8, 0.8), 0.99, 0.01, 0, 10, 1.5, 0),
+        assertEquals(new Material("matte", v(0.8, 0.8, 0.8), 0.99, 0.01, 0, 10),
                 material(scene, 0));
-        assertEquals(new Material("metal", v(0.9, 0.9, 0.9), 0.1, 0.7, 0, 50, 1.5, 0),
+        assertEquals(new Material("metal", v(0.9, 0.9, 0.9), 0.1, 0.7, 0, 50, Map.of("roughness", 0.0)),
                 material(scene, 1));
-        assertEquals(new Material("glass", v(1, 1, 1), 0.01, 0.2, 0.79, 125, 1.5, 0),
+        assertEquals(new Material("glass", v(1, 1, 1), 0.01, 0.2, 0.79, 125, Map.of("ior", 1.5, "roughness", 0.0)),
                 material(scene, 2));
     }
 
@@ -274,10 +276,11 @@ class SceneLoaderTest {
                     radius: 1
                     material: {type: glass, color: [0.4, 0.5, 0.6], kd: 0.2, ks: 0.3, kt: 0.4, shininess: 30, ior: 1.2}
                 """);
-        // a metal keeps the preset's ior 1.5 (phong refracts its kt at it), a glass its roughness 0
-        assertEquals(new Material("metal", v(0.1, 0.2, 0.3), 0.3, 0.5, 0.1, 20, 1.5, 0.5),
+        // a metal has no ior (phong refracts its kt at 1.5), a glass keeps its preset's roughness 0
+        assertEquals(new Material("metal", v(0.1, 0.2, 0.3), 0.3, 0.5, 0.1, 20, Map.of("roughness", 0.5)),
                 material(scene, 0));
-        assertEquals(new Material("glass", v(0.4, 0.5, 0.6), 0.2, 0.3, 0.4, 30, 1.2, 0),
+        assertEquals(1.5, MetalType.TYPE.compile(material(scene, 0)).ior());
+        assertEquals(new Material("glass", v(0.4, 0.5, 0.6), 0.2, 0.3, 0.4, 30, Map.of("ior", 1.2, "roughness", 0.0)),
                 material(scene, 1));
     }
 
@@ -290,10 +293,10 @@ class SceneLoaderTest {
                 """);
         Material glass = GlassType.TYPE.preset();
         assertEquals(new Material("glass", glass.color(), glass.kd(), glass.ks(), 0.5, glass.shininess(),
-                glass.ior(), glass.roughness()), material(scene, 0));
+                glass.parameters()), material(scene, 0));
         Material matte = MatteType.TYPE.preset();
         assertEquals(new Material("matte", v(0.5, 0.5, 0.5), matte.kd(), matte.ks(), matte.kt(),
-                matte.shininess(), matte.ior(), matte.roughness()), material(scene, 1));
+                matte.shininess(), matte.parameters()), material(scene, 1));
     }
 
     @Test
@@ -306,8 +309,8 @@ class SceneLoaderTest {
                   - {type: sphere, center: [0, 0, 0], radius: 1, material: mirror}
                   - {type: sphere, center: [0, 0, 0], radius: 1, material: rough}
                 """);
-        assertEquals(0, material(scene, 0).roughness());
-        assertEquals(1, material(scene, 1).roughness());
+        assertEquals(0, material(scene, 0).parameter("roughness"));
+        assertEquals(1, material(scene, 1).parameter("roughness"));
     }
 
     @Test
@@ -320,10 +323,10 @@ class SceneLoaderTest {
                   - {type: sphere, center: [0, 0, 0], radius: 1, material: frost}
                   - {type: sphere, center: [0, 0, 0], radius: 1, material: edge}
                 """);
-        assertEquals(0.25, material(scene, 0).roughness());
-        assertEquals(1.33, material(scene, 0).ior());
-        assertEquals(1, material(scene, 1).roughness());
-        assertEquals(1.5, material(scene, 1).ior());
+        assertEquals(0.25, material(scene, 0).parameter("roughness"));
+        assertEquals(1.33, material(scene, 0).parameter("ior"));
+        assertEquals(1, material(scene, 1).parameter("roughness"));
+        assertEquals(1.5, material(scene, 1).parameter("ior"));
     }
 
     @Test
@@ -342,7 +345,7 @@ class SceneLoaderTest {
         assertEquals(v(0.8, 0.1, 0.1), red.color());
         assertEquals(0.99, red.kd());
         Material gold = material(scene, 1);
-        assertEquals(new Material("metal", v(1.0, 0.77, 0.34), 0.1, 0.7, 0, 50, 1.5, 0.05), gold);
+        assertEquals(new Material("metal", v(1.0, 0.77, 0.34), 0.1, 0.7, 0, 50, Map.of("roughness", 0.05)), gold);
         assertSame(red, material(scene, 2));
     }
 

@@ -6,6 +6,7 @@ import static org.junit.jupiter.api.Assertions.assertTrue;
 import static org.junit.jupiter.api.Assertions.fail;
 
 import glint.math.Vector3d;
+import glint.recipe.GlowType;
 import glint.registry.MaterialType;
 import glint.registry.Registry;
 import glint.scene.Material;
@@ -21,14 +22,19 @@ import org.junit.jupiter.params.provider.MethodSource;
 
 /**
  * The contract every registered material type's {@link Bsdf} keeps, checked on every type of
- * {@link Registry#STANDARD} at the values it declares for its physical keys ({@link MaterialType#samples}),
+ * {@link Registry#STANDARD} and the test recipe's glow ({@link GlowType}, whose key {@code strength} no
+ * shipped type reads) at the values each declares for its own keys ({@link MaterialType#samples}),
  * from both sides of the surface and two view angles, without a list of types here (as Mitsuba 3's BSDF
  * tests): its non-delta samples distributed as its pdf over the whole sphere (a chi-square test), the pdf
  * integrating to the chance of such a sample (at most 1), the weight equal to f |cos| / pdf, f reciprocal
  * (through the surface in the form Glint's unscaled radiance gives it, below), and a white surface giving
- * back no more light than it receives. Seeded, so every run draws the same numbers.
+ * back no more light than it receives, and light of its own only where it says it emits. Seeded, so every
+ * run draws the same numbers.
  */
 class BsdfContractTest {
+
+    /** The types tested: the shipped ones and the recipe's, added as a scene file's reader would add it. */
+    static final Registry REGISTRY = Registry.STANDARD.with(GlowType.TYPE);
 
     /** The views tested: the cosine of wo to the normal, near the normal and towards the horizon. */
     static final double[] VIEWS = {0.85, 0.3};
@@ -52,14 +58,13 @@ class BsdfContractTest {
     record Case(MaterialType type, Material material, boolean front, double cosOut) {
         @Override
         public String toString() {
-            return type.name() + " ior " + material.ior() + " roughness " + material.roughness() + (front ? " front"
-                    : " back") + " cos " + cosOut;
+            return type.name() + " " + material.parameters() + (front ? " front" : " back") + " cos " + cosOut;
         }
     }
 
     static Stream<Arguments> cases() {
         List<Arguments> cases = new ArrayList<>();
-        for (MaterialType type : Registry.STANDARD.materials()) {
+        for (MaterialType type : REGISTRY.materials()) {
             for (Material material : type.samples()) {
                 for (boolean front : new boolean[] {true, false}) {
                     for (double cos : VIEWS) {
@@ -71,11 +76,11 @@ class BsdfContractTest {
         return cases.stream();
     }
 
-    /** A type that reads a physical key must say which values to sample it at: none is left untested. */
+    /** A type that reads a key of its own must say which values to sample it at: none is left untested. */
     @Test
-    void everyRegisteredTypeDeclaresValuesForEachPhysicalKeyItReads() {
-        for (MaterialType type : Registry.STANDARD.materials()) {
-            for (String key : type.physicalKeys()) {
+    void everyRegisteredTypeDeclaresValuesForEachKeyOfItsOwn() {
+        for (MaterialType type : REGISTRY.materials()) {
+            for (String key : type.ownKeys()) {
                 if (type.sampleValues(key).length == 0) {
                     fail("material type " + type.name() + " reads " + key + " but declares no values to sample it at "
                             + "(MaterialType.sampledAt)");
@@ -85,10 +90,11 @@ class BsdfContractTest {
         }
     }
 
+    /** The case's material, of grey {@code color}, compiled by its type. */
     static Materials materials(Case c, double color) {
         Material m = c.material();
-        return Materials.of(List.of(new Materials.Parameters(c.type().bsdf(), c.type().response(),
-                new Vector3d(color, color, color), m.kd(), m.ks(), m.kt(), m.shininess(), m.ior(), m.roughness())));
+        return Materials.of(List.of(c.type().compile(new Material(m.type(), new Vector3d(color, color, color), m.kd(),
+                m.ks(), m.kt(), m.shininess(), m.parameters()))));
     }
 
     /** The surface met: its normal faces wo; from the back the normal is the outward one reversed. */
@@ -309,6 +315,22 @@ class BsdfContractTest {
         int lobes = m.lobes(0);
         if (lobes != 0 && (lobes & (Lobe.GLOSSY_REFLECTION | Lobe.GLOSSY_TRANSMISSION)) == 0) {
             assertEquals(1, mean, 4 * error + 1e-12, "nothing is lost: " + c);
+        }
+    }
+
+    /** Light of its own, finite and not negative, where it {@link Bsdf#emits}; none where it does not. */
+    @ParameterizedTest(name = "{0}")
+    @MethodSource("cases")
+    void aSurfaceSendsLightOfItsOwnOnlyWhereItSaysItEmits(Case c) {
+        Materials m = materials(c, 0.8);
+        Rgb out = new Rgb();
+        out.set(-1, -1, -1);
+        m.bsdf(0).emitted(m, surface(c), out);
+        if (m.emits(0)) {
+            assertTrue(out.r >= 0 && out.g >= 0 && out.b >= 0 && Double.isFinite(out.r + out.g + out.b),
+                    "emitted " + out.r + ", " + out.g + ", " + out.b);
+        } else {
+            assertTrue(out.r == 0 && out.g == 0 && out.b == 0, "a surface that does not emit sends nothing");
         }
     }
 

@@ -58,6 +58,7 @@ class GgxGrazingTest {
         Rgb f = new Rgb();
         for (double roughness : ROUGHNESS) {
             Materials m = white(roughness);
+            double alpha = Microfacet.alpha(roughness);
             for (double cosOut : COSINES) {
                 for (double cosIn : COSINES) {
                     if (cosOut < 1e-300 && cosIn < 1e-300) {
@@ -71,7 +72,7 @@ class GgxGrazingTest {
                         String at = "roughness " + roughness + ", cos out " + cosOut + ", in " + cosIn + ", azimuth "
                                 + azimuth;
                         assertTrue(f.r >= 0 && Double.isFinite(f.r), "f " + f.r + " at " + at);
-                        assertTrue(f.r * cosIn <= Optics.ggx(1, m.alpha(0)) / (2 * m.alpha(0)) * (1 + 1e-12),
+                        assertTrue(f.r * cosIn <= Optics.ggx(1, alpha) / (2 * alpha) * (1 + 1e-12),
                                 "f cos " + f.r * cosIn + " above D(n) / (2 alpha) at " + at);
                         assertTrue(pdf >= 0 && Double.isFinite(pdf), "pdf " + pdf + " at " + at);
                     }
@@ -101,9 +102,12 @@ class GgxGrazingTest {
             Bsdf bsdf = bsdfs[n % 3];
             // roughness log-uniform over [sqrt(MIRROR_ALPHA) / 2, 1]: both sides of the delta mirror
             double roughness = Math.exp(Math.log(Math.sqrt(Microfacet.MIRROR_ALPHA) / 2) * random.nextDouble());
-            Materials m = Materials.of(List.of(new Materials.Parameters(bsdf, new MetalResponse(),
-                    new Vector3d(random.nextDouble(), random.nextDouble(), random.nextDouble()), 0, 0, 0, 0,
-                    1 + 2 * random.nextDouble(), roughness)));
+            Vector3d color = new Vector3d(random.nextDouble(), random.nextDouble(), random.nextDouble());
+            double ior = 1 + 2 * random.nextDouble();
+            double[] numbers = bsdf instanceof Dielectric ? Dielectric.parameters(ior, roughness)
+                    : Conductor.parameters(roughness);
+            Materials m = Materials.of(List.of(new Materials.Material(bsdf, new MetalResponse(), color, 0, 0, 0, 0,
+                    ior, numbers)));
             // cosines log-uniform down to 1e-300, half of them grazing below 1e-3
             double cosOut = Math.pow(10, -300 * Math.pow(random.nextDouble(), 6));
             Surface s = surface(cosOut);
@@ -127,8 +131,8 @@ class GgxGrazingTest {
     }
 
     private static Materials white(double roughness) {
-        return Materials.of(List.of(new Materials.Parameters(new Conductor(), new MetalResponse(),
-                new Vector3d(1, 1, 1), 0, 0, 0, 0, 1.5, roughness)));
+        return Materials.of(List.of(new Materials.Material(new Conductor(), new MetalResponse(),
+                new Vector3d(1, 1, 1), 0, 0, 0, 0, 1.5, Conductor.parameters(roughness))));
     }
 
     /** A surface with normal +z, seen from a direction at cosine {@code cos}. */

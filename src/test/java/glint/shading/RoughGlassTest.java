@@ -19,8 +19,9 @@ class RoughGlassTest {
     private final Dielectric glass = new Dielectric();
 
     static Materials glass(double ior, double roughness, boolean exactFresnel) {
-        return Materials.of(List.of(new Materials.Parameters(new Dielectric(), new GlassResponse(),
-                new Vector3d(1, 0.5, 0.25), 0.01, 0.2, 0.79, 125, ior, roughness)), exactFresnel);
+        return Materials.of(List.of(new Materials.Material(new Dielectric(), new GlassResponse(),
+                new Vector3d(1, 0.5, 0.25), 0.01, 0.2, 0.79, 125, ior, Dielectric.parameters(ior, roughness))),
+                exactFresnel);
     }
 
     static Surface up(boolean front, double cos) {
