@@ -4,7 +4,6 @@ import glint.render.LightTransport;
 import glint.image.FrameBuffer;
 import glint.input.InputException;
 import glint.scenefile.SceneLoader;
-import java.nio.file.Path;
 import java.util.concurrent.TimeUnit;
 import org.openjdk.jmh.annotations.Benchmark;
 import org.openjdk.jmh.annotations.BenchmarkMode;
@@ -22,6 +21,7 @@ import org.openjdk.jmh.annotations.Warmup;
 
 /**
  * The target scenes of docs/benchmarks.md: the spec's example scene, 25 glass spheres, 1,000 spheres;
+ * and lamplight, everything with a size (a sphere lamp, a sun with an angle, frosted glass, a thin lens);
  * 800x600, 1 sample per pixel, depth 5, cook-torrance, 1 and 2 threads, Whitted's integrator and
  * the path tracer. Run with -prof gc to see the allocation per frame.
  */
@@ -33,7 +33,7 @@ import org.openjdk.jmh.annotations.Warmup;
 @Fork(1)
 public class SceneBenchmark {
 
-    @Param({"spec-example", "glass-25", "field-1000"})
+    @Param({"spec-example", "glass-25", "field-1000", "lamplight"})
     public String scene;
 
     @Param({"1", "2"})
@@ -52,7 +52,7 @@ public class SceneBenchmark {
             case "field-1000" -> BenchScenes.field(1000);
             default -> null;
         };
-        frames = new BenchFrames(text == null ? SceneLoader.load(Path.of("scenes/bench/spec-example.yaml"))
+        frames = new BenchFrames(text == null ? SceneLoader.load(BenchScenes.file(scene))
                 : SceneLoader.parse(scene, text), BenchScenes.SETTINGS.withTransport(LightTransport.byKey(integrator)),
                 renderThreads);
     }

@@ -7,12 +7,14 @@ import java.io.IOException;
 import java.nio.charset.StandardCharsets;
 import java.nio.file.Files;
 import java.nio.file.Path;
+import java.util.List;
 import java.util.Locale;
 
 /**
  * The scenes the benchmarks render, as scene-file text: N equal spheres of one material on a
  * floor (the 2020 report's experiment), and a field of many small spheres of mixed materials.
- * {@code main} writes them to scenes/bench/ so they can also be rendered from files.
+ * {@code main} writes them to scenes/bench/ so they can also be rendered from files. Beside them in
+ * that folder, the scenes written by hand ({@link #HAND_WRITTEN}).
  */
 public final class BenchScenes {
 
@@ -23,7 +25,19 @@ public final class BenchScenes {
     public static final RenderSettings SETTINGS = new RenderSettings(Shading.COOK_TORRANCE, 5,
             Config.defaults().minWeight(), Config.defaults().epsilon());
 
+    /**
+     * The benchmark scenes kept as files written by hand, {@link #file}: the spec's example scene, and
+     * lamplight, everything with a size at once (a sphere lamp, a sun with an angle, frosted glass, rough
+     * copper, a mirror, a thin lens).
+     */
+    public static final List<String> HAND_WRITTEN = List.of("spec-example", "lamplight");
+
     private BenchScenes() {
+    }
+
+    /** The file of benchmark scene {@code name}: scenes/bench/NAME.yaml. */
+    public static Path file(String name) {
+        return Path.of("scenes", "bench", name + ".yaml");
     }
 
     /** {@code count} spheres of radius 0.5 in rows of five on a floor, all of {@code material}. */
