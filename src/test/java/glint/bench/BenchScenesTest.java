@@ -26,10 +26,10 @@ class BenchScenesTest {
                 "a sun with an angle");
         assertTrue(scene.camera().aperture() > 0, "a thin lens");
         assertTrue(scene.objects().stream().map(SceneObject::material)
-                .anyMatch(m -> m.type().equals("glass") && m.roughness() > 0), "frosted glass");
+                .anyMatch(m -> m.type().equals("glass") && m.parameter("roughness") > 0), "frosted glass");
         assertTrue(scene.objects().stream().map(SceneObject::material)
-                .anyMatch(m -> m.type().equals("metal") && m.roughness() > 0), "a rough metal");
+                .anyMatch(m -> m.type().equals("metal") && m.parameter("roughness") > 0), "a rough metal");
         assertTrue(scene.objects().stream().map(SceneObject::material)
-                .anyMatch(m -> m.type().equals("metal") && m.roughness() == 0), "a mirror");
+                .anyMatch(m -> m.type().equals("metal") && m.parameter("roughness") == 0), "a mirror");
     }
 }
