@@ -5,6 +5,7 @@ import glint.accel.Frustum;
 import glint.geometry.Primitives;
 import glint.image.FrameBuffer;
 import glint.shading.Rgb;
+import java.util.Arrays;
 
 /**
  * The camera rays of one tile row, per worker: their unit directions (world space), made by the
@@ -31,7 +32,7 @@ final class CameraRows {
 
     /** The row's ray directions, one coordinate an array; written only here, read by tests. */
     double[] dirX = new double[0], dirY = new double[0], dirZ = new double[0];
-    /** The row's ray origins, each ray's own, for a camera whose rays do not all leave one point. */
+    /** The row's ray origins: each ray's own through a lens, the eye for every ray of a pinhole. */
     double[] originX = new double[0], originY = new double[0], originZ = new double[0];
     /** The lens sample of a ray: its two numbers, stratified over the pixel's samples. */
     private final PathSamples lens = new PathSamples();
@@ -71,22 +72,22 @@ final class CameraRows {
             dirX = new double[rays];
             dirY = new double[rays];
             dirZ = new double[rays];
+            originX = new double[rays];
+            originY = new double[rays];
+            originZ = new double[rays];
             radianceR = new double[rays];
             radianceG = new double[rays];
             radianceB = new double[rays];
             hitT = new double[rays];
             hitPrimitive = new int[rays];
         }
-        if (pinhole == null) {
-            if (originX.length < rays) {
-                originX = new double[rays];
-                originY = new double[rays];
-                originZ = new double[rays];
+        if (pinhole != null) { // every ray leaves the eye
+            Arrays.fill(originX, 0, rays, pinhole.eyeX());
+            Arrays.fill(originY, 0, rays, pinhole.eyeY());
+            Arrays.fill(originZ, 0, rays, pinhole.eyeZ());
+            for (int ray = 0, n = x1 - x0; ray < n; ray++) {
+                centreX[ray] = screenX(x0 + ray + 0.5);
             }
-            return;
-        }
-        for (int ray = 0, n = x1 - x0; ray < n; ray++) {
-            centreX[ray] = screenX(x0 + ray + 0.5);
         }
     }
 
@@ -169,42 +170,17 @@ final class CameraRows {
 
     /**
      * Aims the camera rays of the tile's row y: each pixel's samples of its stratified pattern, or,
-     * when the pattern has one sample, its centre. The centres are aimed along the row as single
-     * points are ({@link PinholeCamera#aimRow}), from the tile's screen x of each pixel centre worked out once.
-     * A camera with a lens gives each ray its origin too, from the sample's lens point.
+     * when the pattern has one sample, its centre. A pinhole's centres are aimed along the row as single
+     * points are ({@link PinholeCamera#aimRow}), from the tile's screen x of each pixel centre worked out
+     * once. A camera with a lens gives each ray its origin too, from the sample's lens point, the pair
+     * {@link PathSamples#LENS} of (pixel, frame, sample): one in each cell of the pixel's side x side
+     * grid, shuffled apart from the film's cells.
      */
     void aim(int y) {
-        if (pinhole == null) {
-            aimThroughLens(y);
-            return;
-        }
-        if (side == 1) {
+        if (pinhole != null && side == 1) {
             pinhole.aimRow(centreX, x1 - x0, screenY(y + 0.5), dirX, dirY, dirZ);
             return;
         }
-        int ray = 0;
-        for (int x = x0; x < x1; x++) {
-            int pixelIndex = y * width + x;
-            for (int sample = firstSample, end = firstSample + sampleCount; sample < end; sample++) {
-                int cellX = sample % side, cellY = sample / side;
-                long h = SamplePattern.hash(pixelIndex, frameIndex, sample);
-                aimThrough(ray++, x + (cellX + SamplePattern.jitterU(h)) / side,
-                        y + (cellY + SamplePattern.jitterV(h)) / side);
-            }
-        }
-    }
-
-    /** Stores the unit direction of camera ray i through image point (px, py), in pixels from the top-left. */
-    void aimThrough(int ray, double px, double py) {
-        pinhole.aim(screenX(px), screenY(py), dirX, dirY, dirZ, ray);
-    }
-
-    /**
-     * Aims row y's rays through the lens: each sample's film point as {@link #aim} places it, and its lens
-     * point, the pair {@link PathSamples#LENS} of (pixel, frame, sample): one in each cell of the pixel's
-     * side x side grid, shuffled apart from the film's cells.
-     */
-    private void aimThroughLens(int y) {
         int ray = 0, samples = side * side;
         for (int x = x0; x < x1; x++) {
             int pixelIndex = y * width + x;
@@ -215,48 +191,38 @@ final class CameraRows {
                     px = x + (sample % side + SamplePattern.jitterU(h)) / side;
                     py = y + (sample / side + SamplePattern.jitterV(h)) / side;
                 }
-                lens.begin(pixelIndex, frameIndex, sample, samples);
-                lens.pair(PathSamples.LENS);
-                camera.ray(px, py, lens.u1, lens.u2, width, height, originX, originY, originZ, dirX, dirY, dirZ,
-                        ray++);
+                if (pinhole != null) {
+                    aimThrough(ray++, px, py);
+                } else {
+                    lens.begin(pixelIndex, frameIndex, sample, samples);
+                    lens.pair(PathSamples.LENS);
+                    camera.ray(px, py, lens.u1, lens.u2, width, height, originX, originY, originZ, dirX, dirY,
+                            dirZ, ray++);
+                }
             }
         }
+    }
+
+    /** Stores the unit direction of camera ray i through image point (px, py), in pixels from the top-left. */
+    void aimThrough(int ray, double px, double py) {
+        pinhole.aim(screenX(px), screenY(py), dirX, dirY, dirZ, ray);
     }
 
     /**
      * Traces the aimed camera rays of row y into their radiance: first every ray's nearest hit
-     * (among {@code candidates} when given, else in the aggregate), then each hit shaded with
-     * {@code hitsLeft} hits. Ray i is sample {@code firstSample + i % sampleCount} of pixel
-     * {@code x0 + i / sampleCount}, and its (pixel, frame, sample) seeds its path's random decisions.
+     * (a pinhole's among {@code candidates} when given, else in the aggregate; a lens's ray by ray from
+     * its own origin), then each hit shaded with {@code hitsLeft} hits. Ray i is sample
+     * {@code firstSample + i % sampleCount} of pixel {@code x0 + i / sampleCount}, and its (pixel, frame,
+     * sample) seeds its path's random decisions.
      */
     void trace(Integrator integrator, Candidates candidates, int y, int hitsLeft) {
-        if (pinhole == null) {
-            traceFromLens(integrator, y, hitsLeft);
-            return;
-        }
-        double eyeX = pinhole.eyeX(), eyeY = pinhole.eyeY(), eyeZ = pinhole.eyeZ(); // every ray's origin
         int rays = (x1 - x0) * sampleCount;
-        integrator.findCameraHits(candidates, eyeX, eyeY, eyeZ, dirX, dirY, dirZ, rays, hitT,
-                hitPrimitive);
-        int pixel = y * width + x0, sample = firstSample, end = firstSample + sampleCount;
-        for (int ray = 0; ray < rays; ray++) {
-            integrator.beginPath(pixel, frameIndex, sample, side * side);
-            Rgb radiance = integrator.shadeCamera(hitPrimitive[ray], hitT[ray], eyeX, eyeY, eyeZ,
-                    dirX[ray], dirY[ray], dirZ[ray], hitsLeft);
-            radianceR[ray] = radiance.r;
-            radianceG[ray] = radiance.g;
-            radianceB[ray] = radiance.b;
-            if (++sample == end) {
-                sample = firstSample;
-                pixel++;
-            }
+        if (pinhole != null) {
+            integrator.findCameraHits(candidates, pinhole.eyeX(), pinhole.eyeY(), pinhole.eyeZ(), dirX, dirY, dirZ,
+                    rays, hitT, hitPrimitive);
+        } else {
+            integrator.findCameraHits(originX, originY, originZ, dirX, dirY, dirZ, rays, hitT, hitPrimitive);
         }
-    }
-
-    /** {@link #trace} for rays of their own origins: each ray's hit found in the aggregate, then shaded. */
-    private void traceFromLens(Integrator integrator, int y, int hitsLeft) {
-        int rays = (x1 - x0) * sampleCount;
-        integrator.findCameraHits(originX, originY, originZ, dirX, dirY, dirZ, rays, hitT, hitPrimitive);
         int pixel = y * width + x0, sample = firstSample, end = firstSample + sampleCount;
         for (int ray = 0; ray < rays; ray++) {
             integrator.beginPath(pixel, frameIndex, sample, side * side);
