@@ -25,7 +25,8 @@ class PathReferenceTest {
 
     @ParameterizedTest
     @CsvSource({"bounce-box, 3.3e-4, 1.24", "sky-and-sun, 1.1e-4, 0.55", "lamp-and-frost, 0.041, 8.9",
-            "lens, 0.0123, 0.88"})
+            "lens, 0.0123, 0.88", "sun-disc, 5.89e-5, 0.478", "two-lamps, 7.68e-3, 4.93", "frosted-pair, 2.66e-2, 6.42",
+            "near-focus, 2.06e-2, 1.63", "brushed-metals, 3.12e-2, 3.20"})
     void matchesThePhysicallyBasedReferenceWithinTheBound(String name, double relMseBound, double levelsBound)
             throws Exception {
         Path folder = Path.of("src/test/resources/reference-pt");
