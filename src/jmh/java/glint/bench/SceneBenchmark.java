@@ -1,8 +1,8 @@
 package glint.bench;
 
-import glint.render.LightTransport;
 import glint.image.FrameBuffer;
 import glint.input.InputException;
+import glint.render.LightTransport;
 import glint.scenefile.SceneLoader;
 import java.util.concurrent.TimeUnit;
 import org.openjdk.jmh.annotations.Benchmark;

@@ -1,8 +1,8 @@
 package glint.bench;
 
 import glint.config.Config;
-import glint.render.Shading;
 import glint.render.RenderSettings;
+import glint.render.Shading;
 import java.io.IOException;
 import java.nio.charset.StandardCharsets;
 import java.nio.file.Files;

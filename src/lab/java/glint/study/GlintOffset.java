@@ -1,9 +1,9 @@
 package glint.study;
 
-import glint.render.Shading;
 import glint.image.FrameBuffer;
 import glint.render.RenderScene;
 import glint.render.RenderSettings;
+import glint.render.Shading;
 import glint.render.Tracer;
 
 /**

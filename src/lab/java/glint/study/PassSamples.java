@@ -1,11 +1,11 @@
 package glint.study;
 
-import glint.render.LightTransport;
-import glint.render.Shading;
 import glint.image.FrameBuffer;
 import glint.input.InputException;
+import glint.render.LightTransport;
 import glint.render.RenderScene;
 import glint.render.RenderSettings;
+import glint.render.Shading;
 import glint.render.Tracer;
 import glint.scene.Scene;
 import glint.scenefile.SceneLoader;

@@ -2,10 +2,10 @@ package glint.study;
 
 import glint.config.Config;
 import glint.render.LightTransport;
-import glint.render.Shading;
-import glint.render.RenderSettings;
 import glint.render.RenderSettings.GlassFresnel;
 import glint.render.RenderSettings.Pruning;
+import glint.render.RenderSettings;
+import glint.render.Shading;
 
 /**
  * One method of the speed/accuracy study: an integrator with its depth and samples, and the knobs

@@ -1,7 +1,7 @@
 package glint.study;
 
-import glint.render.Shading;
 import glint.render.RenderSettings.GlassFresnel;
+import glint.render.Shading;
 import java.util.ArrayList;
 import java.util.LinkedHashSet;
 import java.util.List;

@@ -1,10 +1,10 @@
 package glint.config;
 
-import glint.render.LightTransport;
-import glint.render.Shading;
 import glint.input.InputException;
 import glint.input.Suggestions;
 import glint.input.TextFiles;
+import glint.render.LightTransport;
+import glint.render.Shading;
 import java.nio.file.Path;
 import java.util.LinkedHashSet;
 import java.util.List;

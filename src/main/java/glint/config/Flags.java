@@ -1,9 +1,9 @@
 package glint.config;
 
-import glint.render.LightTransport;
-import glint.render.Shading;
 import glint.input.InputException;
 import glint.input.Suggestions;
+import glint.render.LightTransport;
+import glint.render.Shading;
 import glint.scene.RenderBlock;
 import java.util.List;
 

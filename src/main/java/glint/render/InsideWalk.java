@@ -1,8 +1,8 @@
 package glint.render;
 
 import glint.geometry.Hit;
-import glint.geometry.Primitives;
 import glint.geometry.PrimitiveKind;
+import glint.geometry.Primitives;
 import glint.shading.Optics;
 import glint.shading.Rgb;
 import glint.shading.ShadingModel;

@@ -1,11 +1,11 @@
 package glint.still;
 
 import glint.config.Config;
-import glint.render.LightTransport;
 import glint.image.FrameBuffer;
 import glint.image.ImageWriter;
 import glint.image.PartFile;
 import glint.image.PartGuard;
+import glint.render.LightTransport;
 import glint.render.RenderScene;
 import glint.render.Tracer;
 import java.io.IOException;

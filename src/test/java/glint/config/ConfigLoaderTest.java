@@ -6,8 +6,8 @@ import static org.junit.jupiter.api.Assertions.assertThrows;
 import static org.junit.jupiter.api.Assertions.assertTimeoutPreemptively;
 import static org.junit.jupiter.api.Assertions.assertTrue;
 
-import glint.render.Shading;
 import glint.input.InputException;
+import glint.render.Shading;
 import java.io.IOException;
 import java.nio.file.Files;
 import java.nio.file.Path;

@@ -1,8 +1,8 @@
 package glint.recipe;
 
+import glint.shading.DeltaLightSampler;
 import glint.shading.LightRay;
 import glint.shading.LightSample;
-import glint.shading.DeltaLightSampler;
 
 /**
  * How shading samples a {@link Lamp}, its numbers [x, y, z, R, G, B]: the direction towards its

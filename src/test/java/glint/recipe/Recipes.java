@@ -1,11 +1,11 @@
 package glint.recipe;
 
-import glint.render.Shading;
 import glint.image.FrameBuffer;
 import glint.input.InputException;
 import glint.registry.Registry;
 import glint.render.RenderScene;
 import glint.render.RenderSettings;
+import glint.render.Shading;
 import glint.render.Tracer;
 import glint.scene.Scene;
 import glint.scenefile.SceneLimits;

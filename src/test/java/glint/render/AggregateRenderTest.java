@@ -8,7 +8,6 @@ import glint.accel.AggregatePolicy;
 import glint.accel.Bvh;
 import glint.accel.FlatList;
 import glint.accel.LightCells;
-import glint.render.Shading;
 import glint.geometry.Primitives;
 import glint.image.FrameBuffer;
 import glint.scene.Scene;

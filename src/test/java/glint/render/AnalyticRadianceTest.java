@@ -3,7 +3,6 @@ package glint.render;
 import static org.junit.jupiter.api.Assertions.assertEquals;
 import static org.junit.jupiter.api.Assertions.assertTrue;
 
-import glint.render.Shading;
 import glint.image.FrameBuffer;
 import org.junit.jupiter.api.Test;
 

@@ -2,7 +2,6 @@ package glint.render;
 
 import static org.junit.jupiter.api.Assertions.assertArrayEquals;
 
-import glint.render.Shading;
 import glint.image.FrameBuffer;
 import glint.image.ImageWriter;
 import glint.scene.Scene;

@@ -3,7 +3,6 @@ package glint.render;
 import static org.junit.jupiter.api.Assertions.assertArrayEquals;
 
 import glint.accel.FlatList;
-import glint.render.Shading;
 import glint.image.FrameBuffer;
 import glint.scene.Scene;
 import org.junit.jupiter.api.Test;

@@ -4,12 +4,11 @@ import static org.junit.jupiter.api.Assertions.assertArrayEquals;
 import static org.junit.jupiter.api.Assertions.assertEquals;
 import static org.junit.jupiter.api.Assertions.assertTrue;
 
-import glint.render.Shading;
 import glint.accel.Candidates;
 import glint.accel.FlatList;
 import glint.accel.Frustum;
-import glint.geometry.Intersect;
 import glint.accel.TraversalStack;
+import glint.geometry.Intersect;
 import java.util.Random;
 import org.junit.jupiter.api.Test;
 

@@ -4,8 +4,6 @@ import static org.junit.jupiter.api.Assertions.assertArrayEquals;
 import static org.junit.jupiter.api.Assertions.assertEquals;
 import static org.junit.jupiter.api.Assertions.assertTrue;
 
-import glint.render.LightTransport;
-import glint.render.Shading;
 import glint.image.FrameBuffer;
 import glint.math.Vector3d;
 import glint.scene.Scene;

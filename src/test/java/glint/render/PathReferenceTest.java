@@ -4,8 +4,6 @@ import static org.junit.jupiter.api.Assertions.assertEquals;
 import static org.junit.jupiter.api.Assertions.assertTrue;
 
 import glint.config.Config;
-import glint.render.LightTransport;
-import glint.render.Shading;
 import glint.image.FrameBuffer;
 import glint.image.PfmReader;
 import glint.scenefile.SceneLoader;

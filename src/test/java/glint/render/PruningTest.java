@@ -4,7 +4,6 @@ import static org.junit.jupiter.api.Assertions.assertArrayEquals;
 import static org.junit.jupiter.api.Assertions.assertEquals;
 import static org.junit.jupiter.api.Assertions.assertTrue;
 
-import glint.render.Shading;
 import glint.image.FrameBuffer;
 import glint.render.RenderSettings.Pruning;
 import glint.scene.Scene;

@@ -2,7 +2,6 @@ package glint.render;
 
 import static org.junit.jupiter.api.Assertions.assertEquals;
 
-import glint.render.Shading;
 import glint.image.FrameBuffer;
 import org.junit.jupiter.api.Test;
 

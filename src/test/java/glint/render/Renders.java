@@ -1,6 +1,5 @@
 package glint.render;
 
-import glint.render.Shading;
 import glint.image.FrameBuffer;
 import glint.input.InputException;
 import glint.math.Vector3d;

@@ -7,9 +7,9 @@ import glint.image.FrameBuffer;
 import glint.math.Vector3d;
 import glint.scene.Scene;
 import glint.study.RelativeMse;
+import org.junit.jupiter.api.Test;
 import org.junit.jupiter.params.ParameterizedTest;
 import org.junit.jupiter.params.provider.EnumSource;
-import org.junit.jupiter.api.Test;
 
 /**
  * Lights with a size in both integrators: a sphere light shrunk to 1e-4 renders as its point light;

@@ -1,10 +1,9 @@
 package glint.render;
 
-import glint.geometry.Intersect;
 import static org.junit.jupiter.api.Assertions.assertEquals;
 import static org.junit.jupiter.api.Assertions.assertTrue;
 
-import glint.render.Shading;
+import glint.geometry.Intersect;
 import glint.image.FrameBuffer;
 import org.junit.jupiter.api.Test;
 

@@ -1,12 +1,14 @@
 package glint.render;
 
-import glint.geometry.Intersect;
-import glint.image.FrameBuffer;
-import glint.shading.Optics;
 import static org.junit.jupiter.api.Assertions.assertEquals;
 import static org.junit.jupiter.api.Assertions.assertTrue;
 
-import glint.render.Shading;
+import glint.geometry.Intersect;
+import glint.image.FrameBuffer;
+import glint.registry.MaterialType;
+import glint.registry.Registry;
+import glint.shading.Optics;
+import java.util.List;
 import java.util.Locale;
 import java.util.SplittableRandom;
 import org.junit.jupiter.api.Test;
@@ -124,17 +126,19 @@ class SurfacePropertyTest {
                     ambient: [1, 1, 1]
                     objects:
                     """);
-            String[] types = {"matte", "metal", "glass"};
+            List<MaterialType> types = Registry.STANDARD.materials();
             for (int i = 0; i < 8; i++) {
-                String sphere = String.format(Locale.ROOT,
+                MaterialType type = types.get(random.nextInt(types.size()));
+                StringBuilder sphere = new StringBuilder(String.format(Locale.ROOT,
                         "  - {type: sphere, center: [%f, %f, %f], radius: %f, material: {type: %s, color: [%f, %f, %f]",
                         random.nextDouble(-3, 3), random.nextDouble(0, 2.5), random.nextDouble(-1, 4),
-                        random.nextDouble(0.2, 1.2), types[random.nextInt(3)], random.nextDouble(), random.nextDouble(),
-                        random.nextDouble());
-                double ior = random.nextDouble(1.05, 2.5), roughness = random.nextDouble();
-                String physical = sphere.contains("glass") ? String.format(Locale.ROOT, ", ior: %f", ior)
-                        : sphere.contains("metal") ? String.format(Locale.ROOT, ", roughness: %f", roughness) : "";
-                yaml.append(sphere).append(physical).append("}}\n");
+                        random.nextDouble(0.2, 1.2), type.name(), random.nextDouble(), random.nextDouble(),
+                        random.nextDouble()));
+                for (String key : type.ownKeys()) { // a value the type declares for its own key (ior, roughness)
+                    double[] values = type.sampleValues(key);
+                    sphere.append(String.format(Locale.ROOT, ", %s: %f", key, values[random.nextInt(values.length)]));
+                }
+                yaml.append(sphere).append("}}\n");
             }
             for (Shading shading : Shading.values()) {
                 FrameBuffer frame = Renders.render(yaml.toString(), 32, 24, 1, 8, shading);

@@ -5,7 +5,6 @@ import static org.junit.jupiter.api.Assertions.assertThrows;
 import static org.junit.jupiter.api.Assertions.assertTimeoutPreemptively;
 import static org.junit.jupiter.api.Assertions.assertTrue;
 
-import glint.render.Shading;
 import glint.image.FrameBuffer;
 import glint.scenefile.SceneLoader;
 import java.nio.file.Path;

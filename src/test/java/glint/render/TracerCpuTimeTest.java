@@ -4,7 +4,6 @@ import static org.junit.jupiter.api.Assertions.assertEquals;
 import static org.junit.jupiter.api.Assertions.assertTrue;
 import static org.junit.jupiter.api.Assumptions.assumeTrue;
 
-import glint.render.Shading;
 import glint.image.FrameBuffer;
 import glint.scenefile.SceneLoader;
 import java.nio.file.Path;

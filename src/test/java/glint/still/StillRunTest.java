@@ -7,12 +7,12 @@ import static org.junit.jupiter.api.Assertions.assertThrows;
 import static org.junit.jupiter.api.Assertions.assertTrue;
 
 import glint.config.Config;
-import glint.render.LightTransport;
-import glint.render.Shading;
 import glint.image.FrameBuffer;
 import glint.image.PfmReader;
+import glint.render.LightTransport;
 import glint.render.RenderScene;
 import glint.render.RenderSettings;
+import glint.render.Shading;
 import glint.scenefile.SceneLoader;
 import java.io.IOException;
 import java.io.InterruptedIOException;

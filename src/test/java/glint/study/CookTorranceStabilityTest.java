@@ -3,11 +3,11 @@ package glint.study;
 import static org.junit.jupiter.api.Assertions.assertEquals;
 import static org.junit.jupiter.api.Assertions.assertTrue;
 
-import glint.render.Shading;
 import glint.image.FrameBuffer;
 import glint.input.InputException;
 import glint.render.RenderScene;
 import glint.render.RenderSettings;
+import glint.render.Shading;
 import glint.render.Tracer;
 import glint.scenefile.SceneLoader;
 import org.junit.jupiter.api.Test;

@@ -1,7 +1,7 @@
 package glint.ui.view;
 
-import glint.math.Vector3d;
 import glint.config.Config;
+import glint.math.Vector3d;
 import glint.render.RenderScene;
 import glint.scene.Camera;
 import glint.scene.Scene;

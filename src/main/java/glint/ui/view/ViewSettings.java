@@ -2,10 +2,10 @@ package glint.ui.view;
 
 import glint.config.Config;
 import glint.config.Flags;
-import glint.render.LightTransport;
-import glint.render.Shading;
 import glint.input.InputException;
+import glint.render.LightTransport;
 import glint.render.RenderSettings;
+import glint.render.Shading;
 import glint.scene.Scene;
 import glint.ui.frames.ResolutionGovernor;
 

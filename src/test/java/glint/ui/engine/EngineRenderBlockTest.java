@@ -4,8 +4,8 @@ import static org.junit.jupiter.api.Assertions.assertEquals;
 
 import glint.config.Config;
 import glint.config.Flags;
-import glint.render.Shading;
 import glint.input.InputException;
+import glint.render.Shading;
 import glint.ui.FakeClock;
 import glint.ui.RecordingPresenter;
 import glint.ui.TestScenes;

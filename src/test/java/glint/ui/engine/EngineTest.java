@@ -7,13 +7,13 @@ import static org.junit.jupiter.api.Assertions.assertNotEquals;
 import static org.junit.jupiter.api.Assertions.assertTrue;
 
 import glint.config.Config;
-import glint.render.Shading;
 import glint.image.FrameBuffer;
 import glint.image.ImageWriter;
 import glint.input.InputException;
 import glint.math.Vector3d;
 import glint.render.RenderScene;
 import glint.render.RenderSettings;
+import glint.render.Shading;
 import glint.render.Tracer;
 import glint.scene.Scene;
 import glint.scenefile.SceneLoader;

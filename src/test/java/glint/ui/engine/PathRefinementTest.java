@@ -6,13 +6,13 @@ import static org.junit.jupiter.api.Assertions.assertTrue;
 
 import glint.config.Config;
 import glint.config.Flags;
-import glint.render.LightTransport;
-import glint.render.Shading;
 import glint.image.FrameBuffer;
 import glint.image.Srgb;
 import glint.input.InputException;
+import glint.render.LightTransport;
 import glint.render.RenderScene;
 import glint.render.RenderSettings;
+import glint.render.Shading;
 import glint.render.Tracer;
 import glint.scene.Scene;
 import glint.ui.FakeClock;

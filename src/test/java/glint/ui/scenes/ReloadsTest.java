@@ -8,9 +8,9 @@ import static org.junit.jupiter.api.Assertions.assertTrue;
 
 import glint.config.Config;
 import glint.config.Flags;
-import glint.render.Shading;
 import glint.input.InputException;
 import glint.math.Vector3d;
+import glint.render.Shading;
 import glint.scene.Camera;
 import glint.scene.Scene;
 import glint.ui.TestScenes;

@@ -7,12 +7,12 @@ import static org.junit.jupiter.api.Assertions.assertTrue;
 
 import glint.config.Config;
 import glint.config.Flags;
-import glint.render.LightTransport;
 import glint.config.Limits;
-import glint.render.Shading;
 import glint.input.InputException;
 import glint.math.Quaternion;
 import glint.math.Vector3d;
+import glint.render.LightTransport;
+import glint.render.Shading;
 import glint.scene.Camera;
 import glint.scene.Scene;
 import glint.scenefile.SceneLoader;
