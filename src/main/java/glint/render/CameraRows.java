@@ -51,7 +51,7 @@ final class CameraRows {
     void prepare(CameraModel camera, int width, int height, int x0, int x1, int samples, int firstSample,
                  int sampleCount, int frameIndex) {
         this.camera = camera;
-        this.pinhole = camera.oneOrigin() ? (PinholeCamera) camera : null;
+        this.pinhole = camera.oneOrigin() && camera instanceof PinholeCamera p ? p : null;
         if (pinhole != null) {
             scaleX = pinhole.screenPerPixelX(width);
             offsetX = pinhole.screenLeft();

@@ -17,7 +17,8 @@ import glint.shading.Surface;
  * A light with a size is found both by its sample and by the BSDF's, each weighed by the power
  * heuristic (multiple importance sampling); past the last hit a BSDF sample still brings what it
  * finds of such a light, the other half of the light the last hit's sample counted. The path ends
- * at {@code recursion_max} hits, where no direction is sampled, or by Russian roulette on its throughput. Ambient light plays no part. Allocates nothing per ray.
+ * at {@code recursion_max} hits, where no direction is sampled, or by Russian roulette on its throughput.
+ * Ambient light plays no part. Allocates nothing per ray.
  */
 final class PathIntegrator extends Integrator {
 

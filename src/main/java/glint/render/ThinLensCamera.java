@@ -17,7 +17,8 @@ import java.util.Optional;
  * <pre>  d = normalize(focus (forward + sx right + sy up) - aperture (lx right + ly up))</pre>
  *
  * so every ray of one film point meets in focus, and a point at depth z off that plane blurs into a disc of
- * diameter 2 aperture |1 - focus / z| in its own plane (the circle of confusion). Its rays leave different
+ * diameter 2 aperture |1 - z / focus| in its own plane (2 aperture |1 - focus / z| in the plane in focus:
+ * the circle of confusion). Its rays leave different
  * points, so a tile row's are searched ray by ray. A world point is seen where the ray through the lens
  * centre sees it ({@link #imagePoint}, the pinhole's).
  */

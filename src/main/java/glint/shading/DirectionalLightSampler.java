@@ -23,11 +23,6 @@ public final class DirectionalLightSampler implements DeltaLightSampler {
         return true;
     }
 
-    @Override
-    public double pdf(double[] data, int at, double px, double py, double pz, double wx, double wy, double wz) {
-        return 0;
-    }
-
     /**
      * Along the light's direction, from a point of the disc of the scene's radius facing it, outside the
      * scene: the flux E pi R^2.
@@ -45,11 +40,6 @@ public final class DirectionalLightSampler implements DeltaLightSampler {
         out.setFlux(data[at + 3] * area, data[at + 4] * area, data[at + 5] * area);
         out.pdfOrigin = 1 / area;
         out.pdfDirection = 1;
-    }
-
-    @Override
-    public boolean isDelta() {
-        return true;
     }
 
     /** The irradiance over a disc of the scene's radius. */

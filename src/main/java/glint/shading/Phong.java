@@ -16,8 +16,10 @@ public final class Phong implements ShadingModel {
         int material = s.material;
         double diffuseR = c.ambient(0), diffuseG = c.ambient(1), diffuseB = c.ambient(2);
         double specR = 0, specG = 0, specB = 0;
+        double kd = m.kd(material), ks = m.ks(material);
         Lights lights = c.lights();
-        for (int i = 0; i < lights.count(); i++) {
+        // a surface without diffuse or highlight (a light's body) sends no light of the lights: no shadow rays
+        for (int i = 0, n = kd == 0 && ks == 0 ? 0 : lights.count(); i < n; i++) {
             double pass = c.lightReaching(s, i, false, light);
             if (!(pass > 0)) {
                 continue;
@@ -34,7 +36,6 @@ public final class Phong implements ShadingModel {
                 specB += highlight * light.irradianceB;
             }
         }
-        double kd = m.kd(material), ks = m.ks(material);
         sum.set(kd * m.color(material, 0) * diffuseR + ks * specR, kd * m.color(material, 1) * diffuseG + ks * specG,
                 kd * m.color(material, 2) * diffuseB + ks * specB);
         if (m.emits(material)) { // a light's body is seen in every model

@@ -36,11 +36,6 @@ public final class PointLightSampler implements DeltaLightSampler {
         return true;
     }
 
-    @Override
-    public double pdf(double[] data, int at, double px, double py, double pz, double wx, double wy, double wz) {
-        return 0;
-    }
-
     /** From the position, a direction uniform over the sphere: the flux 4 pi I. */
     @Override
     public void leaving(double[] data, int at, double cx, double cy, double cz, double sceneRadius, double u1,
@@ -53,11 +48,6 @@ public final class PointLightSampler implements DeltaLightSampler {
         out.setFlux(data[at + 3] * k, data[at + 4] * k, data[at + 5] * k);
         out.pdfOrigin = 1;
         out.pdfDirection = 1 / k;
-    }
-
-    @Override
-    public boolean isDelta() {
-        return true;
     }
 
     /** 4 pi times the radiant intensity. */

@@ -172,7 +172,8 @@ public final class CameraController {
         double first = FIRST_APERTURE * focus, widest = WIDEST_APERTURE * focus;
         double next;
         if (step > 0) {
-            next = aperture == 0 ? first : Math.min(widest, aperture * APERTURE_STEP);
+            // never narrower: an aperture a scene opened past the widest step stays as it is
+            next = aperture == 0 ? first : Math.max(aperture, Math.min(widest, aperture * APERTURE_STEP));
         } else {
             next = aperture <= first * (1 + 1e-9) ? 0 : aperture / APERTURE_STEP;
         }

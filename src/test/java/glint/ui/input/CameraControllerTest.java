@@ -353,4 +353,15 @@ class CameraControllerTest {
         assertFalse(far.apply(hold(Action.FORWARD, 2)));
         assertEquals(new Vector3d(0, 0, 9e149), far.camera().position());
     }
+
+    /** A scene may open its lens wider than the widest step, its focus distance: widening keeps it, narrowing steps down. */
+    @Test
+    void wideningALensOpenedPastTheWidestStepKeepsIt() {
+        Camera wide = new Camera(Vector3d.ZERO, Quaternion.IDENTITY, 60).withLens(0.5, 0.3);
+        CameraController c = new CameraController(wide, SPEED, TURN);
+        assertFalse(c.stepAperture(1));
+        assertEquals(0.5, c.camera().aperture());
+        assertTrue(c.stepAperture(-1));
+        assertEquals(0.5 / Math.sqrt(2), c.camera().aperture(), 1e-15);
+    }
 }
