@@ -61,15 +61,11 @@ final class Cone {
         double sin = Math.sqrt(sin2);
         double phi = 2 * Math.PI * u2;
         double x = sin * Math.cos(phi), y = sin * Math.sin(phi);
-        // an orthonormal basis (t, b, a) without a branch on a's direction (Duff et al. 2017)
-        double sign = Math.copySign(1.0, az);
-        double k = -1 / (sign + az);
-        double m = ax * ay * k;
-        double tx = 1 + sign * ax * ax * k, ty = sign * m, tz = -sign * ax;
-        double bx = m, by = sign + ay * ay * k, bz = -ay;
-        out.dirX = x * tx + y * bx + cos * ax;
-        out.dirY = x * ty + y * by + cos * ay;
-        out.dirZ = x * tz + y * bz + cos * az;
+        ShadingFrame frame = out.frame;
+        frame.set(ax, ay, az);
+        out.dirX = frame.worldX(x, y, cos);
+        out.dirY = frame.worldY(x, y, cos);
+        out.dirZ = frame.worldZ(x, y, cos);
         return sin2;
     }
 }

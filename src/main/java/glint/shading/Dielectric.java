@@ -58,39 +58,12 @@ public final class Dielectric implements Bsdf {
     public void evaluate(Materials m, Surface s, double woX, double woY, double woZ, double wiX, double wiY,
                          double wiZ, Rgb f) {
         int material = s.material;
-        double cosOut = woX * s.nx + woY * s.ny + woZ * s.nz, cosIn = wiX * s.nx + wiY * s.ny + wiZ * s.nz;
-        if (!rough(m, material) || !(cosOut > 0) || !(cosIn != 0)) {
-            f.set(0, 0, 0);
-            return;
-        }
-        double alpha = m.parameter(material, ALPHA), eta = Optics.eta(ior(m, material), s.front);
-        if (cosIn > 0) {
-            double scale = Microfacet.halfScale(woX + wiX, woY + wiY, woZ + wiZ);
-            double hx = (woX + wiX) * scale, hy = (woY + wiY) * scale, hz = (woZ + wiZ) * scale;
-            double inv = 1 / Math.sqrt(hx * hx + hy * hy + hz * hz);
-            double cosHalf = (hx * s.nx + hy * s.ny + hz * s.nz) * inv;
-            double cosOutHalf = Math.max(0, (hx * woX + hy * woY + hz * woZ) * inv);
-            // G2 / (4 wo.n wi.n) as one term, as the conductor's
-            double lobe = Optics.ggx(cosHalf, alpha) * Optics.smithVisibility(cosIn, cosOut, alpha)
-                    * reflectance(m, cosOutHalf, eta);
+        double lobe = roughLobe(m, s, woX, woY, woZ, wiX, wiY, wiZ, false);
+        if (wiX * s.nx + wiY * s.ny + wiZ * s.nz > 0) {
             f.set(lobe, lobe, lobe);
-            return;
+        } else {
+            f.set(lobe * m.color(material, 0), lobe * m.color(material, 1), lobe * m.color(material, 2));
         }
-        double hx = eta * woX + wiX, hy = eta * woY + wiY, hz = eta * woZ + wiZ;
-        double inv = Math.copySign(1 / Math.sqrt(hx * hx + hy * hy + hz * hz), hx * s.nx + hy * s.ny + hz * s.nz);
-        hx *= inv;
-        hy *= inv;
-        hz *= inv;
-        double cosOutHalf = hx * woX + hy * woY + hz * woZ, cosInHalf = hx * wiX + hy * wiY + hz * wiZ;
-        if (!(cosOutHalf > 0) || !(cosInHalf < 0)) {
-            f.set(0, 0, 0);
-            return;
-        }
-        double cosHalf = hx * s.nx + hy * s.ny + hz * s.nz;
-        double denominator = eta * cosOutHalf + cosInHalf;
-        double lobe = 4 * Optics.smithVisibility(-cosIn, cosOut, alpha) * Optics.ggx(cosHalf, alpha)
-                * (1 - reflectance(m, cosOutHalf, eta)) * cosOutHalf * -cosInHalf / (denominator * denominator);
-        f.set(lobe * m.color(material, 0), lobe * m.color(material, 1), lobe * m.color(material, 2));
     }
 
     /**
@@ -100,6 +73,17 @@ public final class Dielectric implements Bsdf {
     @Override
     public double pdf(Materials m, Surface s, double woX, double woY, double woZ, double wiX, double wiY,
                       double wiZ) {
+        return roughLobe(m, s, woX, woY, woZ, wiX, wiY, wiZ, true);
+    }
+
+    /**
+     * What {@link #evaluate} (f before the colour, {@code density} false) or {@link #pdf} ({@code
+     * density} true) answers for wi: both from the same microfacet normal h, the half vector of the
+     * reflection where wi is on wo's side, of the refraction where it is through the surface; 0 for
+     * smooth glass, for wo or wi in the surface, and where h would face away from either direction.
+     */
+    private static double roughLobe(Materials m, Surface s, double woX, double woY, double woZ, double wiX, double wiY,
+                                    double wiZ, boolean density) {
         int material = s.material;
         double cosOut = woX * s.nx + woY * s.ny + woZ * s.nz, cosIn = wiX * s.nx + wiY * s.ny + wiZ * s.nz;
         if (!rough(m, material) || !(cosOut > 0) || !(cosIn != 0)) {
@@ -112,7 +96,12 @@ public final class Dielectric implements Bsdf {
             double inv = 1 / Math.sqrt(hx * hx + hy * hy + hz * hz);
             double cosHalf = (hx * s.nx + hy * s.ny + hz * s.nz) * inv;
             double cosOutHalf = Math.max(0, (hx * woX + hy * woY + hz * woZ) * inv);
-            return reflectance(m, cosOutHalf, eta) * Microfacet.reflectedPdf(cosOut, cosHalf, alpha);
+            double reflectance = reflectance(m, cosOutHalf, eta);
+            if (density) {
+                return reflectance * Microfacet.reflectedPdf(cosOut, cosHalf, alpha);
+            }
+            // G2 / (4 wo.n wi.n) as one term, as the conductor's
+            return Optics.ggx(cosHalf, alpha) * Optics.smithVisibility(cosIn, cosOut, alpha) * reflectance;
         }
         double hx = eta * woX + wiX, hy = eta * woY + wiY, hz = eta * woZ + wiZ;
         double inv = Math.copySign(1 / Math.sqrt(hx * hx + hy * hy + hz * hz), hx * s.nx + hy * s.ny + hz * s.nz);
@@ -124,8 +113,13 @@ public final class Dielectric implements Bsdf {
             return 0;
         }
         double cosHalf = hx * s.nx + hy * s.ny + hz * s.nz;
-        return (1 - reflectance(m, cosOutHalf, eta))
-                * Microfacet.refractedPdf(cosOut, cosHalf, cosOutHalf, cosInHalf, eta, alpha);
+        double transmittance = 1 - reflectance(m, cosOutHalf, eta);
+        if (density) {
+            return transmittance * Microfacet.refractedPdf(cosOut, cosHalf, cosOutHalf, cosInHalf, eta, alpha);
+        }
+        double denominator = eta * cosOutHalf + cosInHalf;
+        return 4 * Optics.smithVisibility(-cosIn, cosOut, alpha) * Optics.ggx(cosHalf, alpha) * transmittance
+                * cosOutHalf * -cosInHalf / (denominator * denominator);
     }
 
     /**

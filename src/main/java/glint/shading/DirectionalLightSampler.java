@@ -33,7 +33,7 @@ public final class DirectionalLightSampler implements DeltaLightSampler {
         double tx = data[at], ty = data[at + 1], tz = data[at + 2]; // towards the light
         double[] p = out.scratch;
         Directions.onDisc(cx + tx * sceneRadius, cy + ty * sceneRadius, cz + tz * sceneRadius, tx, ty, tz,
-                sceneRadius, u1, u2, p);
+                sceneRadius, u1, u2, out.frame, p);
         out.setOrigin(p[0], p[1], p[2]);
         out.setDirection(-tx, -ty, -tz);
         double area = Math.PI * sceneRadius * sceneRadius;

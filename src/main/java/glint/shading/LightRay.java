@@ -19,9 +19,10 @@ public final class LightRay {
     /** The density of the direction per unit solid angle; 1 for a directional light's, which has one. */
     public double pdfDirection;
 
-    /** Scratch of the samplers: a point or a direction, and a direction towards a light at infinity. */
+    /** Scratch of the samplers: a point or a direction, a direction towards a light at infinity, a basis. */
     final double[] scratch = new double[3];
     final LightSample towards = new LightSample();
+    final ShadingFrame frame = new ShadingFrame();
 
     void setOrigin(double x, double y, double z) {
         originX = x;

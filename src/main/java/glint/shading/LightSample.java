@@ -17,6 +17,9 @@ public final class LightSample {
     /** The density per solid angle with which the direction was chosen; 0 for a delta light. */
     public double pdf;
 
+    /** Scratch of the samplers: a basis around the axis of the cone a light covers. */
+    final ShadingFrame frame = new ShadingFrame();
+
     /** Sets the irradiance the sample stands for, per channel. */
     void setIrradiance(double r, double g, double b) {
         irradianceR = r;

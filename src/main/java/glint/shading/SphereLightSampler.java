@@ -68,7 +68,7 @@ public final class SphereLightSampler implements LightSampler {
         Directions.uniform(u1, u2, v);
         double nx = v[0], ny = v[1], nz = v[2];
         out.setOrigin(data[at] + radius * nx, data[at + 1] + radius * ny, data[at + 2] + radius * nz);
-        double cos = Directions.cosineAbout(nx, ny, nz, u3, u4, v);
+        double cos = Directions.cosineAbout(nx, ny, nz, u3, u4, out.frame, v);
         out.setDirection(v[0], v[1], v[2]);
         double area = 4 * Math.PI * radius * radius;
         double k = Math.PI * area; // L cos / ((1 / area) (cos / pi))

@@ -53,7 +53,7 @@ public final class SunSampler implements LightSampler {
         double tx = towards.dirX, ty = towards.dirY, tz = towards.dirZ;
         double[] p = out.scratch;
         Directions.onDisc(cx + tx * sceneRadius, cy + ty * sceneRadius, cz + tz * sceneRadius, tx, ty, tz,
-                sceneRadius, u3, u4, p);
+                sceneRadius, u3, u4, out.frame, p);
         out.setOrigin(p[0], p[1], p[2]);
         out.setDirection(-tx, -ty, -tz);
         double area = Math.PI * sceneRadius * sceneRadius;
