@@ -96,7 +96,7 @@ public final class ConfigLoader {
         int threads = integer("threads", d.threads(), 0, 1024);
         Shading shading = shading(d.shading());
         LightTransport transport = transport(d.transport());
-        if (transport == LightTransport.PATH && shading == Shading.PHONG) {
+        if (transport.physical() && shading == Shading.PHONG) {
             throw error("integrator", Flags.PATH_NEEDS_COOK_TORRANCE);
         }
         int samples = samples(d.samples());
@@ -206,7 +206,7 @@ public final class ConfigLoader {
         LightTransport t = LightTransport.byKey(v);
         if (t == null) {
             throw error("integrator", "integrator: unknown integrator " + InputException.quote(v) + ", expected "
-                    + String.join(" or ", LightTransport.KEYS) + Suggestions.hint(v, LightTransport.KEYS));
+                    + LightTransport.IN_WORDS + Suggestions.hint(v, LightTransport.KEYS));
         }
         return t;
     }

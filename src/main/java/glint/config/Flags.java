@@ -19,7 +19,7 @@ public record Flags(Integer width, Integer height, Integer samples, Integer thre
     public static final Flags NONE = new Flags(null, null, null, null, null, null, null);
 
     /** Why the path integrator and the phong model do not go together. */
-    public static final String PATH_NEEDS_COOK_TORRANCE = "the path integrator needs shading cook-torrance:"
+    public static final String PATH_NEEDS_COOK_TORRANCE = "the path and bdpt integrators need shading cook-torrance:"
             + " phong's coefficients are not a BSDF a path can sample (use --integrator whitted with phong)";
 
     /** Flags without an integrator. */
@@ -40,7 +40,7 @@ public record Flags(Integer width, Integer height, Integer samples, Integer thre
      */
     public Config effective(Config config, RenderBlock render) throws InputException {
         Config blocked = withBlock(config, render);
-        if (blocked.transport() == LightTransport.PATH && blocked.shading() == Shading.PHONG && integrator == null
+        if (blocked.transport().physical() && blocked.shading() == Shading.PHONG && integrator == null
                 && shading == null) {
             String key = render.integrator() != null ? "integrator" : "shading";
             throw blockError(render, key, "render: " + PATH_NEEDS_COOK_TORRANCE);
@@ -125,13 +125,13 @@ public record Flags(Integer width, Integer height, Integer samples, Integer thre
             LightTransport transport = LightTransport.byKey(integrator);
             if (transport == null) {
                 throw new InputException("glint", 0, 0, "--integrator: unknown integrator "
-                        + InputException.quote(integrator) + ", expected whitted or path"
+                        + InputException.quote(integrator) + ", expected " + LightTransport.IN_WORDS
                         + Suggestions.hint(integrator, LightTransport.KEYS));
             }
             c = c.withTransport(transport);
         }
-        if (c.transport() == LightTransport.PATH && c.shading() == Shading.PHONG) {
-            throw new InputException("glint", 0, 0, (integrator != null ? "--integrator path" : "--shading phong")
+        if (c.transport().physical() && c.shading() == Shading.PHONG) {
+            throw new InputException("glint", 0, 0, (integrator != null ? "--integrator " + integrator : "--shading phong")
                     + ": " + PATH_NEEDS_COOK_TORRANCE);
         }
         return c;

@@ -46,6 +46,31 @@ public interface CameraModel {
              double[] oz, double[] dx, double[] dy, double[] dz, int i);
 
     /**
+     * The density per solid angle of the camera ray from o along unit d, its film point uniform over a
+     * width x height image (and its lens point chosen as it is): 1 / (A cos^3 theta), with A the area of the
+     * screen one unit ahead and theta the angle between d and the view direction; 0 for a ray no film
+     * point of the image makes. It is also the camera's importance along the ray: a point whose radiance
+     * L reaches the camera along it adds L times it, per light path, to the pixel it is seen at
+     * ({@code BdptIntegrator}). A camera that does not answer (0) is never reached from a light.
+     */
+    default double directionPdf(double ox, double oy, double oz, double dx, double dy, double dz, int width,
+                                int height) {
+        return 0;
+    }
+
+    /**
+     * The camera seen from world point p, for a path started at a light: a point of the lens chosen by
+     * (lensU, lensV) as {@link #ray} chooses it (the eye, for a pinhole), the film point of a width x height
+     * image whose ray from that lens point meets p, and the importance along that ray, into {@code out}.
+     * False where no camera ray meets p (on or behind the lens's plane, outside the image), and for a
+     * camera that does not answer. Allocates nothing.
+     */
+    default boolean sees(double px, double py, double pz, double lensU, double lensV, int width, int height,
+                         CameraSight out) {
+        return false;
+    }
+
+    /**
      * The image point (px, py) of a width x height image at which world point {@code p} is seen: through
      * the eye, or a lens's centre, whose ray through that point meets {@code p}. Empty for a point on or
      * behind the camera's plane (facing the way it looks); a point outside the field of view has a point

@@ -206,6 +206,21 @@ abstract class Integrator implements LightQuery {
     }
 
     /**
+     * The fraction of light that passes along the shadow ray from o along unit d before tMax, searched
+     * in {@code through}, leaving primitive {@code skip} behind.
+     */
+    final double transmittance(Aggregate through, double ox, double oy, double oz, double dx, double dy, double dz,
+                               double tMax, int skip) {
+        rays++;
+        return through.transmittance(ox, oy, oz, dx, dy, dz, tMax, skip, scene.shadowPass, stack);
+    }
+
+    /** The aggregate light i's shadow rays ask. */
+    final Aggregate shadowAggregateOf(int i) {
+        return shadowAggregate[i];
+    }
+
+    /**
      * The radiance a ray escaping the scene along unit direction d brings: the background, and every
      * light at infinity seen along d (a sun's disc), into {@code out}; {@code scratch} is a scratch value.
      */

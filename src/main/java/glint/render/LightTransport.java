@@ -4,14 +4,17 @@ import java.util.List;
 
 /**
  * How light is carried through a scene (docs/conventions.md, "Light that bounces"): {@link #WHITTED},
- * direct light and the mirror and glass rays it spawns, or {@link #PATH}, the rendering equation
- * solved by path tracing.
+ * direct light and the mirror and glass rays it spawns; {@link #PATH}, the rendering equation solved
+ * by path tracing from the camera; or {@link #BDPT}, the same equation solved by paths from both the
+ * camera and the lights, joined (bidirectional path tracing).
  */
 public enum LightTransport {
-    WHITTED("whitted"), PATH("path");
+    WHITTED("whitted"), PATH("path"), BDPT("bdpt");
 
     /** The keys a config, a scene's {@code render:} block and {@code --integrator} accept. */
-    public static final List<String> KEYS = List.of("whitted", "path");
+    public static final List<String> KEYS = List.of("whitted", "path", "bdpt");
+    /** The keys in words, for an error message: "whitted, path or bdpt". */
+    public static final String IN_WORDS = "whitted, path or bdpt";
 
     private final String key;
 
@@ -33,7 +36,16 @@ public enum LightTransport {
         return null;
     }
 
-    public LightTransport other() {
-        return this == PATH ? WHITTED : PATH;
+    /**
+     * Whether it solves the rendering equation (path and bdpt): it needs cook-torrance's BSDFs, a sky
+     * lights the scene, and an image at rest refines without end.
+     */
+    public boolean physical() {
+        return this != WHITTED;
+    }
+
+    /** The next integrator in the order whitted, path, bdpt, and from bdpt back to whitted (the window's key I). */
+    public LightTransport next() {
+        return values()[(ordinal() + 1) % values().length];
     }
 }

@@ -103,6 +103,67 @@ public final class PinholeCamera implements CameraModel {
                 screen(py, screenPerPixelY(width, height), screenTop(width, height)), dx, dy, dz, i);
     }
 
+    /** 1 / (A cos^3 theta) where d's screen point lies on the image; o is the eye. */
+    @Override
+    public double directionPdf(double ox, double oy, double oz, double dx, double dy, double dz, int width,
+                               int height) {
+        double cos = dx * forwardX + dy * forwardY + dz * forwardZ;
+        if (!(cos > 0)) {
+            return 0;
+        }
+        return importance((dx * rightX + dy * rightY + dz * rightZ) / cos, (dx * upX + dy * upY + dz * upZ) / cos,
+                cos, width, height);
+    }
+
+    @Override
+    public boolean sees(double px, double py, double pz, double lensU, double lensV, int width, int height,
+                        CameraSight out) {
+        return seenFrom(eyeX, eyeY, eyeZ, 0, 0, 1, px, py, pz, width, height, out);
+    }
+
+    /**
+     * Fills {@code out} for world point p seen from lens point l, which lies (lx, ly) off the eye along
+     * right and up, through a lens focused at {@code focus} (any value where lx = ly = 0): false where p
+     * is not ahead of l or its film point is off the image.
+     */
+    boolean seenFrom(double lX, double lY, double lZ, double lx, double ly, double focus, double px, double py,
+                     double pz, int width, int height, CameraSight out) {
+        double vx = px - lX, vy = py - lY, vz = pz - lZ;
+        double ahead = vx * forwardX + vy * forwardY + vz * forwardZ;
+        if (!(ahead > 0)) {
+            return false;
+        }
+        // the screen point of the film point whose ray from l meets p: the pinhole's, shifted by l / focus
+        double sx = (vx * rightX + vy * rightY + vz * rightZ) / ahead + lx / focus;
+        double sy = (vx * upX + vy * upY + vz * upZ) / ahead + ly / focus;
+        out.filmX = (sx - screenLeft()) / screenPerPixelX(width);
+        out.filmY = (sy - screenTop(width, height)) / screenPerPixelY(width, height);
+        if (!(out.filmX >= 0 && out.filmX < width && out.filmY >= 0 && out.filmY < height)) {
+            return false;
+        }
+        out.set(px, py, pz, lX, lY, lZ);
+        double cos = ahead / out.distance;
+        out.importance = 1 / (screenArea(width, height) * cos * cos * cos);
+        return true;
+    }
+
+    /**
+     * 1 / (A cos^3) for a ray at cosine {@code cos} to the view direction whose film point has screen point
+     * (sx, sy); 0 where that point is off the image.
+     */
+    double importance(double sx, double sy, double cos, int width, int height) {
+        double top = screenTop(width, height);
+        if (!(Math.abs(sx) <= tanHalfFov && Math.abs(sy) <= top)) {
+            return 0;
+        }
+        return 1 / (screenArea(width, height) * cos * cos * cos);
+    }
+
+    /** The area of the screen one unit ahead that a width x height image covers. */
+    double screenArea(int width, int height) {
+        return 2 * tanHalfFov * 2 * screenTop(width, height);
+    }
+
     // ---------------------------------------------------------------- the image on the screen
 
     /** Screen coordinate of image coordinate p: the screen per pixel times p, plus the screen at p = 0. */

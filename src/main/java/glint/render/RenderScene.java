@@ -2,8 +2,10 @@ package glint.render;
 
 import glint.accel.Aggregate;
 import glint.accel.AggregatePolicy;
+import glint.geometry.Hit;
 import glint.geometry.PrimitiveKind;
 import glint.geometry.Primitives;
+import glint.math.Vector3d;
 import glint.registry.LightType;
 import glint.registry.Registry;
 import glint.registry.ShapeType;
@@ -16,7 +18,9 @@ import glint.scene.Shape;
 import glint.shading.LampBody;
 import glint.shading.Lights;
 import glint.shading.Materials;
+import glint.shading.SkySampler;
 import java.util.ArrayList;
+import java.util.Arrays;
 import java.util.IdentityHashMap;
 import java.util.List;
 import java.util.Map;
@@ -41,10 +45,17 @@ public final class RenderScene {
     final int[] materialOf;
     /** Per primitive: the number of the light whose body it is, or -1. */
     final int[] lightOf;
+    /** Per light: the primitive that is its body, or {@link Hit#NONE}. */
+    final int[] bodyOf;
     /** How many lights have a size (are not delta lights): a BSDF sample may meet them. */
     final int lightsWithSize;
     final Materials materials;
     final Lights lights;
+    /**
+     * The lights, then the sky where the background is not black ({@link SkySampler}, number
+     * {@code lights.count()}): every light a bidirectional path starts from.
+     */
+    final Lights lightsAndSky;
     /**
      * Per primitive: the fraction of light a shadow ray passes through it. The cook-torrance model
      * passes none; the phong model passes kt through glass.
@@ -54,6 +65,12 @@ public final class RenderScene {
     final double ambientR, ambientG, ambientB;
     /** The camera that makes the camera rays, world space: a pinhole, or a thin lens. */
     final CameraModel camera;
+    /**
+     * The one strategy (s, t) a bidirectional render keeps, weighted or not, for the tests and studies
+     * that look at strategies one by one (pbrt's visualize-strategies); -1: every strategy, weighted.
+     */
+    final int strategyS, strategyT;
+    final boolean strategyWeighted;
 
     private RenderScene(Scene scene, RenderSettings settings, Registry registry,
                         Function<Primitives, Aggregate> aggregateOf, boolean lightCells) {
@@ -64,13 +81,13 @@ public final class RenderScene {
         }
         // the scene's objects, then the lights' bodies, each light's with its number
         List<SceneObject> objects = new ArrayList<>(scene.objects());
-        Map<SceneObject, Integer> bodyOf = new IdentityHashMap<>();
+        Map<SceneObject, Integer> bodies = new IdentityHashMap<>();
         for (int i = 0; i < compiledLights.size(); i++) {
             Shape body = compiledLights.get(i).body();
             if (body != null) {
                 SceneObject o = new SceneObject(body, null);
                 objects.add(o);
-                bodyOf.put(o, i);
+                bodies.put(o, i);
             }
         }
         List<SceneObject> inOrder = new ArrayList<>(); // kind by kind, in the registry's order
@@ -80,7 +97,7 @@ public final class RenderScene {
         materialOf = new int[inOrder.size()];
         lightOf = new int[inOrder.size()];
         for (int p = 0; p < materialOf.length; p++) {
-            Integer light = bodyOf.get(inOrder.get(p));
+            Integer light = bodies.get(inOrder.get(p));
             lightOf[p] = light == null ? -1 : light;
             materialOf[p] = light == null ? indexOf(materialList, inOrder.get(p).material()) : -1;
         }
@@ -105,6 +122,19 @@ public final class RenderScene {
             shadowPass[p] = materials.response(m).transmits() ? materials.kt(m) : 0;
         }
         lights = Lights.of(compiledLights.stream().map(LightType.Compiled::light).toList());
+        this.bodyOf = new int[lights.count()];
+        Arrays.fill(this.bodyOf, Hit.NONE);
+        for (int p = 0; p < lightOf.length; p++) {
+            if (lightOf[p] >= 0) {
+                bodyOf[lightOf[p]] = p;
+            }
+        }
+        List<Lights.Light> withSky = new ArrayList<>(compiledLights.stream().map(LightType.Compiled::light).toList());
+        Vector3d sky = scene.background();
+        if (sky.x() > 0 || sky.y() > 0 || sky.z() > 0) {
+            withSky.add(new Lights.Light(new SkySampler(), SkySampler.data(sky.x(), sky.y(), sky.z()), null));
+        }
+        lightsAndSky = Lights.of(withSky);
         int withSize = 0;
         for (int i = 0; i < lights.count(); i++) {
             withSize += lights.isDelta(i) ? 0 : 1;
@@ -122,19 +152,28 @@ public final class RenderScene {
         ambientG = scene.ambient().y();
         ambientB = scene.ambient().z();
         camera = CameraModel.of(scene.camera());
+        strategyS = -1;
+        strategyT = -1;
+        strategyWeighted = true;
     }
 
     /** The same compiled scene seen from another camera: shares everything else. */
     private RenderScene(RenderScene base, CameraModel camera) {
+        this(base, camera, base.strategyS, base.strategyT, base.strategyWeighted);
+    }
+
+    private RenderScene(RenderScene base, CameraModel camera, int strategyS, int strategyT, boolean weighted) {
         settings = base.settings;
         primitives = base.primitives;
         aggregate = base.aggregate;
         shadowAggregate = base.shadowAggregate;
         materialOf = base.materialOf;
         lightOf = base.lightOf;
+        bodyOf = base.bodyOf;
         lightsWithSize = base.lightsWithSize;
         materials = base.materials;
         lights = base.lights;
+        lightsAndSky = base.lightsAndSky;
         shadowPass = base.shadowPass;
         backgroundR = base.backgroundR;
         backgroundG = base.backgroundG;
@@ -143,6 +182,17 @@ public final class RenderScene {
         ambientG = base.ambientG;
         ambientB = base.ambientB;
         this.camera = camera;
+        this.strategyS = strategyS;
+        this.strategyT = strategyT;
+        this.strategyWeighted = weighted;
+    }
+
+    /**
+     * This scene rendered by the bidirectional integrator with strategy (s, t) alone, by its weight or
+     * unweighted ({@code BdptIntegrator}): what the tests and studies of its strategies render.
+     */
+    RenderScene withStrategy(int s, int t, boolean weighted) {
+        return new RenderScene(this, camera, s, t, weighted);
     }
 
     /** Compiles an immutable scene with the given settings. */

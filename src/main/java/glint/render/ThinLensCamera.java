@@ -84,6 +84,31 @@ public final class ThinLensCamera implements CameraModel {
         dz[i] = toZ * inv;
     }
 
+    /** The pinhole's 1 / (A cos^3 theta), the film point shifted by the lens point o over the focus. */
+    @Override
+    public double directionPdf(double ox, double oy, double oz, double dx, double dy, double dz, int width,
+                               int height) {
+        double cos = dx * forwardX + dy * forwardY + dz * forwardZ;
+        if (!(cos > 0)) {
+            return 0;
+        }
+        double offX = ox - eyeX, offY = oy - eyeY, offZ = oz - eyeZ;
+        double lx = offX * rightX + offY * rightY + offZ * rightZ, ly = offX * upX + offY * upY + offZ * upZ;
+        double sx = (dx * rightX + dy * rightY + dz * rightZ) / cos + lx / focus;
+        double sy = (dx * upX + dy * upY + dz * upZ) / cos + ly / focus;
+        return centre.importance(sx, sy, cos, width, height);
+    }
+
+    @Override
+    public boolean sees(double px, double py, double pz, double lensU, double lensV, int width, int height,
+                        CameraSight out) {
+        double a = 2 * lensU - 1, b = 2 * lensV - 1;
+        double radius = aperture * discRadius(a, b), angle = discAngle(a, b);
+        double lx = radius * Math.cos(angle), ly = radius * Math.sin(angle);
+        return centre.seenFrom(eyeX + lx * rightX + ly * upX, eyeY + lx * rightY + ly * upY,
+                eyeZ + lx * rightZ + ly * upZ, lx, ly, focus, px, py, pz, width, height, out);
+    }
+
     /** Where the ray through the lens centre sees {@code p}: the pinhole's image point. */
     @Override
     public Optional<ImagePoint> imagePoint(Vector3d p, int width, int height) {

@@ -26,6 +26,8 @@ public final class Tracer implements AutoCloseable {
     /** The workers' tasks and the barrier a frame ends at, made once: a frame allocates nothing of its own. */
     private final Runnable[] tasks;
     private final Phaser frameDone;
+    /** Light the bidirectional integrator's paths bring to other pixels than their own, per frame. */
+    private final Splats splats = new Splats();
     /** Per worker: the CPU time its thread spent rendering frames, in ns; written by it, read after a frame. */
     private final long[] workerCpuNanos;
     /** Reads the render threads' CPU clocks; null where the JVM cannot. */
@@ -149,6 +151,10 @@ public final class Tracer implements AutoCloseable {
         tilesDone.set(0);
         frameTiles = this.divider * this.divider;
         tileStride = TileOrder.stride(frameTiles);
+        boolean splatting = renderScene != null && renderScene.settings.transport() == LightTransport.BDPT;
+        if (splatting) {
+            splats.clear(target.width(), target.height());
+        }
         if (cancelled) {
             throw new CancellationException("the render was cancelled");
         }
@@ -162,6 +168,9 @@ public final class Tracer implements AutoCloseable {
         Throwable error = failure.get();
         if (error != null) {
             throw new RenderException("a render worker failed: " + error, error);
+        }
+        if (splatting) {
+            splats.addInto(target, 1.0 / count);
         }
     }
 
@@ -191,7 +200,7 @@ public final class Tracer implements AutoCloseable {
         int column = tile % d, row = tile / d;
         int x0 = column * f.width() / d, x1 = (column + 1) * f.width() / d;
         int y0 = row * f.height() / d, y1 = (row + 1) * f.height() / d;
-        worker.renderTile(scene, f, samples, firstSample, sampleCount, frameIndex, x0, y0, x1, y1);
+        worker.renderTile(scene, f, splats, samples, firstSample, sampleCount, frameIndex, x0, y0, x1, y1);
     }
 
     // ---------------------------------------------------------------- progress and cancelling

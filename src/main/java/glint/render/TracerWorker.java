@@ -15,6 +15,7 @@ final class TracerWorker {
 
     private final WhittedIntegrator whitted = new WhittedIntegrator();
     private final PathIntegrator path = new PathIntegrator();
+    private final BdptIntegrator bdpt = new BdptIntegrator();
     private final CameraRows rows = new CameraRows();
     /** The current row's frustum and the primitives its camera rays may meet. */
     private final Frustum rowFrustum = new Frustum();
@@ -22,17 +23,21 @@ final class TracerWorker {
 
     /** Rays this worker has traced (camera, reflected, refracted and shadow rays). */
     long raysCast() {
-        return whitted.rays() + path.rays();
+        return whitted.rays() + path.rays() + bdpt.rays();
     }
 
     /**
      * Renders pixels [x0, x1) x [y0, y1): each pixel gets the average of samples
-     * [firstSample, firstSample + sampleCount) of its {@code samples}-sample stratified pattern.
+     * [firstSample, firstSample + sampleCount) of its {@code samples}-sample stratified pattern; light that
+     * lands on other pixels goes to {@code splats}.
      */
-    void renderTile(RenderScene scene, FrameBuffer frame, int samples, int firstSample, int sampleCount,
-                    int frameIndex, int x0, int y0, int x1, int y1) {
-        Integrator integrator = scene.settings.transport() == LightTransport.PATH ? path : whitted;
+    void renderTile(RenderScene scene, FrameBuffer frame, Splats splats, int samples, int firstSample,
+                    int sampleCount, int frameIndex, int x0, int y0, int x1, int y1) {
+        Integrator integrator = integrator(scene.settings.transport());
         integrator.prepare(scene);
+        if (integrator == bdpt) {
+            bdpt.splatInto(splats);
+        }
         rows.prepare(scene.camera, frame.width(), frame.height(), x0, x1, samples, firstSample, sampleCount,
                 frameIndex);
         int hitsLeft = scene.settings.recursionMax();
@@ -52,5 +57,13 @@ final class TracerWorker {
             rows.trace(integrator, searchCandidates ? rowCandidates : null, y, hitsLeft);
             rows.writeRow(frame, y);
         }
+    }
+
+    private Integrator integrator(LightTransport transport) {
+        return switch (transport) {
+            case WHITTED -> whitted;
+            case PATH -> path;
+            case BDPT -> bdpt;
+        };
     }
 }

@@ -3,6 +3,7 @@ package glint.scenefile;
 import glint.input.InputException;
 import glint.input.Suggestions;
 import glint.scene.RenderBlock;
+import glint.render.LightTransport;
 import java.util.HashMap;
 import java.util.LinkedHashSet;
 import java.util.List;
@@ -16,7 +17,7 @@ final class RenderBlockReader {
     static final Set<String> KEYS = new LinkedHashSet<>(
             List.of("shading", "integrator", "samples", "recursion_max", "min_weight", "width", "height"));
     static final List<String> SHADINGS = List.of("cook-torrance", "phong");
-    static final List<String> INTEGRATORS = List.of("whitted", "path");
+    static final List<String> INTEGRATORS = LightTransport.KEYS;
     /** The largest samples per pixel and image side, as in config.properties. */
     static final int MAX_SAMPLES = 4096, MAX_SIDE = 65536, MAX_RECURSION = 64;
 
@@ -52,7 +53,7 @@ final class RenderBlockReader {
             integrator = yaml.string(m.get("integrator"), "integrator");
             if (!INTEGRATORS.contains(integrator)) {
                 throw yaml.error(m.get("integrator"), "unknown integrator " + InputException.quote(integrator)
-                        + ", expected whitted or path" + Suggestions.hint(integrator, INTEGRATORS));
+                        + ", expected " + LightTransport.IN_WORDS + Suggestions.hint(integrator, INTEGRATORS));
             }
         }
         Integer samples = whole(m, "samples", 1, MAX_SAMPLES);

@@ -35,11 +35,26 @@ public final class DirectionalLightSampler implements DeltaLightSampler {
         Directions.onDisc(cx + tx * sceneRadius, cy + ty * sceneRadius, cz + tz * sceneRadius, tx, ty, tz,
                 sceneRadius, u1, u2, out.frame, p);
         out.setOrigin(p[0], p[1], p[2]);
+        out.setNormal(0, 0, 0);
         out.setDirection(-tx, -ty, -tz);
         double area = Math.PI * sceneRadius * sceneRadius;
         out.setFlux(data[at + 3] * area, data[at + 4] * area, data[at + 5] * area);
         out.pdfOrigin = 1 / area;
         out.pdfDirection = 1;
+    }
+
+    /** A point uniform over the disc; its one direction, which has no density. */
+    @Override
+    public void leavingPdf(double[] data, int at, double ox, double oy, double oz, double wx, double wy, double wz,
+                           double sceneRadius, LightRay out) {
+        out.setNormal(0, 0, 0);
+        out.pdfOrigin = 1 / (Math.PI * sceneRadius * sceneRadius);
+        out.pdfDirection = 0;
+    }
+
+    @Override
+    public boolean infinitelyFar() {
+        return true;
     }
 
     /** The irradiance over a disc of the scene's radius. */

@@ -18,6 +18,11 @@ public final class LightRay {
     public double pdfOrigin;
     /** The density of the direction per unit solid angle; 1 for a directional light's, which has one. */
     public double pdfDirection;
+    /**
+     * The light's unit normal at the origin, for a light with a surface (a sphere light's, outwards);
+     * 0 for a point and for a light at infinity, whose origin is on no surface.
+     */
+    public double normalX, normalY, normalZ;
 
     /** Scratch of the samplers: a point or a direction, a direction towards a light at infinity, a basis. */
     final double[] scratch = new double[3];
@@ -34,6 +39,12 @@ public final class LightRay {
         dirX = x;
         dirY = y;
         dirZ = z;
+    }
+
+    void setNormal(double x, double y, double z) {
+        normalX = x;
+        normalY = y;
+        normalZ = z;
     }
 
     void setFlux(double r, double g, double b) {

@@ -19,6 +19,8 @@ public final class LightSample {
 
     /** Scratch of the samplers: a basis around the axis of the cone a light covers. */
     final ShadingFrame frame = new ShadingFrame();
+    /** Scratch of the samplers: a direction. */
+    final double[] scratch = new double[3];
 
     /** Sets the irradiance the sample stands for, per channel. */
     void setIrradiance(double r, double g, double b) {

@@ -45,6 +45,24 @@ public interface LightSampler {
                  double u3, double u4, LightRay out);
 
     /**
+     * The densities with which {@link #leaving} chooses the ray leaving point o of the light along unit
+     * direction w, into {@code out.pdfOrigin} (per unit area; 1 for a point light) and {@code
+     * out.pdfDirection} (per solid angle; 0 for a directional light's one direction), and the light's
+     * normal at o into {@code out.normal}. For a light at infinity o is any point of its disc's
+     * cylinder (the caller checks that it is one). What a bidirectional integrator weighs a path by.
+     */
+    void leavingPdf(double[] data, int at, double ox, double oy, double oz, double wx, double wy, double wz,
+                    double sceneRadius, LightRay out);
+
+    /**
+     * Whether its light arrives along parallel rays from infinitely far (a directional light, a sun, the
+     * sky): its rays leave a disc across the scene ({@link #leaving}).
+     */
+    default boolean infinitelyFar() {
+        return atInfinity();
+    }
+
+    /**
      * The radiance arriving along unit direction d from a light at infinity, for a ray that escapes
      * the scene, into {@code out}; 0 for a light that is not seen that way.
      */

@@ -108,6 +108,20 @@ public final class Lights {
         sampler[i].leaving(data, start[i], cx, cy, cz, sceneRadius, u1, u2, u3, u4, out);
     }
 
+    /**
+     * The densities with which light i's {@link #leaving} chooses the ray from o along unit w, and its
+     * normal at o, into {@code out} ({@link LightSampler#leavingPdf}).
+     */
+    public void leavingPdf(int i, double ox, double oy, double oz, double wx, double wy, double wz,
+                           double sceneRadius, LightRay out) {
+        sampler[i].leavingPdf(data, start[i], ox, oy, oz, wx, wy, wz, sceneRadius, out);
+    }
+
+    /** Whether light i is infinitely far ({@link LightSampler#infinitelyFar}): its rays leave a disc across the scene. */
+    public boolean infinitelyFar(int i) {
+        return sampler[i].infinitelyFar();
+    }
+
     /** Light i's power, the mean of its channels ({@link LightSampler#power}). */
     public double power(int i, double sceneRadius) {
         return sampler[i].power(data, start[i], sceneRadius);

@@ -43,11 +43,21 @@ public final class PointLightSampler implements DeltaLightSampler {
         double[] w = out.scratch;
         Directions.uniform(u1, u2, w);
         out.setOrigin(data[at], data[at + 1], data[at + 2]);
+        out.setNormal(0, 0, 0);
         out.setDirection(w[0], w[1], w[2]);
         double k = 4 * Math.PI;
         out.setFlux(data[at + 3] * k, data[at + 4] * k, data[at + 5] * k);
         out.pdfOrigin = 1;
         out.pdfDirection = 1 / k;
+    }
+
+    /** Its one point, a direction uniform over the sphere. */
+    @Override
+    public void leavingPdf(double[] data, int at, double ox, double oy, double oz, double wx, double wy, double wz,
+                           double sceneRadius, LightRay out) {
+        out.setNormal(0, 0, 0);
+        out.pdfOrigin = 1;
+        out.pdfDirection = 1 / (4 * Math.PI);
     }
 
     /** 4 pi times the radiant intensity. */

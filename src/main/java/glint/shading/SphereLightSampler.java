@@ -68,6 +68,7 @@ public final class SphereLightSampler implements LightSampler {
         Directions.uniform(u1, u2, v);
         double nx = v[0], ny = v[1], nz = v[2];
         out.setOrigin(data[at] + radius * nx, data[at + 1] + radius * ny, data[at + 2] + radius * nz);
+        out.setNormal(nx, ny, nz);
         double cos = Directions.cosineAbout(nx, ny, nz, u3, u4, out.frame, v);
         out.setDirection(v[0], v[1], v[2]);
         double area = 4 * Math.PI * radius * radius;
@@ -75,6 +76,18 @@ public final class SphereLightSampler implements LightSampler {
         out.setFlux(data[at + 4] * k, data[at + 5] * k, data[at + 6] * k);
         out.pdfOrigin = 1 / area;
         out.pdfDirection = cos / Math.PI;
+    }
+
+    /** Origin uniform over the sphere, direction cos / pi about the outward normal at o. */
+    @Override
+    public void leavingPdf(double[] data, int at, double ox, double oy, double oz, double wx, double wy, double wz,
+                           double sceneRadius, LightRay out) {
+        double radius = data[at + 3];
+        double inv = 1 / radius;
+        double nx = (ox - data[at]) * inv, ny = (oy - data[at + 1]) * inv, nz = (oz - data[at + 2]) * inv;
+        out.setNormal(nx, ny, nz);
+        out.pdfOrigin = 1 / (4 * Math.PI * radius * radius);
+        out.pdfDirection = Math.max(0, nx * wx + ny * wy + nz * wz) / Math.PI;
     }
 
     @Override

@@ -55,12 +55,22 @@ public final class SunSampler implements LightSampler {
         Directions.onDisc(cx + tx * sceneRadius, cy + ty * sceneRadius, cz + tz * sceneRadius, tx, ty, tz,
                 sceneRadius, u3, u4, out.frame, p);
         out.setOrigin(p[0], p[1], p[2]);
+        out.setNormal(0, 0, 0);
         out.setDirection(-tx, -ty, -tz);
         double area = Math.PI * sceneRadius * sceneRadius;
         double k = Cone.solidAngle(oneMinusCos) * area;
         out.setFlux(data[at + 5] * k, data[at + 6] * k, data[at + 7] * k);
         out.pdfOrigin = 1 / area;
         out.pdfDirection = Cone.pdf(oneMinusCos);
+    }
+
+    /** A point uniform over the disc; the direction uniform over the sun's cone (towards the light: -w). */
+    @Override
+    public void leavingPdf(double[] data, int at, double ox, double oy, double oz, double wx, double wy, double wz,
+                           double sceneRadius, LightRay out) {
+        out.setNormal(0, 0, 0);
+        out.pdfOrigin = 1 / (Math.PI * sceneRadius * sceneRadius);
+        out.pdfDirection = pdf(data, at, ox, oy, oz, -wx, -wy, -wz);
     }
 
     @Override

@@ -243,7 +243,7 @@ public final class StillRun implements ImageWriter.Watcher, AutoCloseable {
     public static String describe(Config config, boolean threads) {
         return String.format(Locale.ROOT, "%dx%d, %d spp, %s%s%s, depth %d", config.displayWidth(),
                 config.displayHeight(), config.samples(), threads ? config.effectiveThreads() + " threads, " : "",
-                config.shading().key(), config.transport() == LightTransport.PATH ? ", path" : "",
+                config.shading().key(), config.transport().physical() ? ", " + config.transport().key() : "",
                 config.recursionMax());
     }
 }

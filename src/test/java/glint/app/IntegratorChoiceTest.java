@@ -69,21 +69,21 @@ class IntegratorChoiceTest {
     void anUnknownIntegratorIsAnErrorWithASuggestionWhereverItIsNamed() throws IOException {
         Result flag = still("", SCENE, "--integrator", "paht");
         assertEquals(2, flag.status());
-        assertEquals("glint: --integrator: unknown integrator 'paht', expected whitted or path (did you mean 'path'?)",
+        assertEquals("glint: --integrator: unknown integrator 'paht', expected whitted, path or bdpt (did you mean 'path'?)",
                 flag.firstErrLine());
         Result config = still("threads=1\nintegrator = witted\n", SCENE);
         assertEquals(2, config.status());
         assertEquals(dir.resolve("config.properties") + ":2:1: integrator: unknown integrator 'witted', expected "
-                + "whitted or path (did you mean 'whitted'?)", config.firstErrLine());
+                + "whitted, path or bdpt (did you mean 'whitted'?)", config.firstErrLine());
         Result block = still("", SCENE + "render:\n  integrator: bidirectional\n");
         assertEquals(2, block.status());
-        assertEquals(dir.resolve("s.yaml") + ":4:15: unknown integrator 'bidirectional', expected whitted or path"
-                + " (expected one of: whitted, path)", block.firstErrLine());
+        assertEquals(dir.resolve("s.yaml") + ":4:15: unknown integrator 'bidirectional', expected whitted, path or"
+                + " bdpt (expected one of: whitted, path, bdpt)", block.firstErrLine());
     }
 
     @Test
     void thePathIntegratorIsRefusedBesideThePhongModel() throws IOException {
-        String why = "the path integrator needs shading cook-torrance: phong's coefficients are not a BSDF a path"
+        String why = "the path and bdpt integrators need shading cook-torrance: phong's coefficients are not a BSDF a path"
                 + " can sample (use --integrator whitted with phong)";
         Result flags = still("", SCENE, "--integrator", "path", "--shading", "phong");
         assertEquals(2, flags.status());

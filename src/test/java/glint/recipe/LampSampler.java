@@ -48,6 +48,17 @@ final class LampSampler implements DeltaLightSampler {
         out.pdfDirection = 1 / (4 * Math.PI);
     }
 
+    /** Its one point, a direction uniform over the sphere. */
+    @Override
+    public void leavingPdf(double[] data, int at, double ox, double oy, double oz, double wx, double wy, double wz,
+                           double sceneRadius, LightRay out) {
+        out.normalX = 0;
+        out.normalY = 0;
+        out.normalZ = 0;
+        out.pdfOrigin = 1;
+        out.pdfDirection = 1 / (4 * Math.PI);
+    }
+
     /** The irradiance over a disc of the scene's radius, as a directional light's. */
     @Override
     public double power(double[] data, int at, double sceneRadius) {

@@ -66,12 +66,12 @@ public final class StillRender implements AutoCloseable {
     static Job job(RenderScene scene, Camera printed, Config still, Path scenePath, Screenshots folder, boolean pfm) {
         // named after the scene: phong-classic-20261202-153000-123.png, in the screenshots' folder
         Path png = folder.name(scenePath.getFileName().toString().replaceFirst("\\.[^.]*$", ""), ".png");
-        boolean path = still.transport() == LightTransport.PATH;
+        boolean path = still.transport().physical();
         String recipe = "still: the same image headless, with this camera in " + scenePath + ":\n"
                 + String.format(Locale.ROOT, "  %s --scene %s --width %d --height %d --spp %d"
                         + " --shading %s%s --depth %d --output %s%n", JarCommand.java(), JarCommand.word(scenePath.toString()),
                         still.displayWidth(), still.displayHeight(), still.samples(), still.shading().key(),
-                        path ? " --integrator path" : "", still.recursionMax(), JarCommand.word(png.getFileName().toString()))
+                        path ? " --integrator " + still.transport().key() : "", still.recursionMax(), JarCommand.word(png.getFileName().toString()))
                 + CameraBlock.yaml(printed);
         Path pfmFile = pfm ? png.resolveSibling(png.getFileName().toString().replaceFirst("\\.png$", ".pfm")) : null;
         return new Job(scene, still, png, pfmFile, StillRun.describe(still, false), recipe);

@@ -103,7 +103,7 @@ final class FrameOutput {
     private FrameStats stats(double fps, double msPerFrame, int renderWidth, int renderHeight, int frameViewWidth,
                              int frameViewHeight, int samplesDone, boolean moving) {
         ViewSettings seen = view.settings();
-        boolean path = seen.transport() == LightTransport.PATH;
+        boolean path = seen.transport().physical();
         double noise = path && !moving && samplesDone > 1 ? renderer.relativeNoise() : Double.NaN;
         return new FrameStats(fps, msPerFrame, renderWidth, renderHeight, frameViewWidth, frameViewHeight,
                 samplesDone, Refinement.passes(seen.still()), moving, renderer.threads(), seen.shading(),

@@ -25,12 +25,12 @@ public final class Refinement {
 
     /** How many passes the view at rest accumulates. */
     public static int passes(Config onScreen) {
-        return onScreen.transport() == LightTransport.PATH ? PATH_PASSES : onScreen.samples();
+        return onScreen.transport().physical() ? PATH_PASSES : onScreen.samples();
     }
 
     /** How many samples one pattern holds, of which a pass is one. */
     public static int pattern(Config onScreen) {
-        return onScreen.transport() == LightTransport.PATH ? PATH_PATTERN : onScreen.samples();
+        return onScreen.transport().physical() ? PATH_PATTERN : onScreen.samples();
     }
 
     /** How many of {@code wanted} passes from {@code done} may go in one call: never across a pattern's end. */

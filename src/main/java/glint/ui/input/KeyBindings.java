@@ -53,7 +53,7 @@ public final class KeyBindings {
             pointer(Action.FOCUS, "Click", "focus the lens on the point under the mouse (not on the sky)"),
             key(Action.TOGGLE_SHADING, "M or Tab", "switch shading: cook-torrance / phong",
                     KeyEvent.VK_M, KeyEvent.VK_TAB),
-            key(Action.TOGGLE_INTEGRATOR, "I", "switch integrator: whitted / path (light that bounces)",
+            key(Action.TOGGLE_INTEGRATOR, "I", "switch integrator: whitted / path / bdpt (light that bounces)",
                     KeyEvent.VK_I),
             typed(Action.DEPTH_UP, "+ (or =)", "recursion depth + 1", "+="),
             typed(Action.DEPTH_DOWN, "-", "recursion depth - 1", "-_"),

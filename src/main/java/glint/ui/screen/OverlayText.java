@@ -34,7 +34,7 @@ public final class OverlayText {
         if (!s.sizeLimit().isEmpty()) {
             lines.add(new Line("window too large: rendered at most " + s.sizeLimit(), Tone.NOTE));
         }
-        if (s.transport() == LightTransport.PATH) {
+        if (s.transport().physical()) {
             lines.add(normal(String.format(Locale.ROOT, "samples %d%s   threads %d", s.samplesDone(),
                     Double.isNaN(s.noise()) ? "" : String.format(Locale.ROOT, "   noise %.1f %%", 100 * s.noise()),
                     s.threads())));
@@ -43,7 +43,7 @@ public final class OverlayText {
                     s.samplesTotal(), s.threads())));
         }
         lines.add(normal(String.format(Locale.ROOT, "shading %s   %sdepth %d   %sspeed %s/s", s.shading().key(),
-                s.transport() == LightTransport.PATH ? "integrator path   " : "", s.depth(),
+                s.transport().physical() ? "integrator " + s.transport().key() + "   " : "", s.depth(),
                 s.lens().isEmpty() ? "" : s.lens() + "   ", number(s.speed()))));
         lines.add(normal(s.scene()));
         if (!s.message().isEmpty()) {

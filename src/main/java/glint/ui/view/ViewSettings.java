@@ -94,24 +94,25 @@ public final class ViewSettings {
     }
 
     /**
-     * Switches the shading model; the path integrator goes with cook-torrance only, so phong brings
-     * Whitted's. Returns what the overlay says.
+     * Switches the shading model; the path and bdpt integrators go with cook-torrance only, so phong
+     * brings Whitted's. Returns what the overlay says.
      */
     String toggleShading() {
         shading = shading.other();
-        if (shading == Shading.PHONG && transport == LightTransport.PATH) {
+        if (shading == Shading.PHONG && transport.physical()) {
+            String was = transport.key();
             transport = LightTransport.WHITTED;
-            return "shading phong, integrator whitted (path needs cook-torrance)";
+            return "shading phong, integrator whitted (" + was + " needs cook-torrance)";
         }
         return "shading " + shading.key();
     }
 
-    /** Switches the integrator; the path integrator brings cook-torrance. Returns what the overlay says. */
+    /** The next integrator (whitted, path, bdpt); path and bdpt bring cook-torrance. Returns what the overlay says. */
     String toggleTransport() {
-        transport = transport.other();
-        if (transport == LightTransport.PATH && shading == Shading.PHONG) {
+        transport = transport.next();
+        if (transport.physical() && shading == Shading.PHONG) {
             shading = Shading.COOK_TORRANCE;
-            return "integrator path, shading cook-torrance (path needs it)";
+            return "integrator " + transport.key() + ", shading cook-torrance (" + transport.key() + " needs it)";
         }
         return "integrator " + transport.key();
     }

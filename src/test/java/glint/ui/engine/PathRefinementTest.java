@@ -118,6 +118,14 @@ class PathRefinementTest {
         assertEquals(LightTransport.PATH, view.settings().transport());
         assertEquals("integrator path, shading cook-torrance (path needs it)", status.message());
         press(Action.TOGGLE_INTEGRATOR);
+        assertEquals(LightTransport.BDPT, view.settings().transport());
+        assertEquals("integrator bdpt", status.message());
+        press(Action.TOGGLE_SHADING);
+        assertEquals("shading phong, integrator whitted (bdpt needs cook-torrance)", status.message());
+        press(Action.TOGGLE_SHADING);
+        press(Action.TOGGLE_INTEGRATOR);
+        press(Action.TOGGLE_INTEGRATOR);
+        press(Action.TOGGLE_INTEGRATOR);
         assertEquals(LightTransport.WHITTED, view.settings().transport());
         assertEquals("integrator whitted", status.message());
     }

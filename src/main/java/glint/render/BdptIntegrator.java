@@ -1,0 +1,475 @@
+package glint.render;
+
+import glint.accel.Aggregate;
+import glint.geometry.Hit;
+import glint.shading.Bsdf;
+import glint.shading.BsdfSample;
+import glint.shading.LightRay;
+import glint.shading.LightSample;
+import glint.shading.Lights;
+import glint.shading.Rgb;
+import glint.shading.Surface;
+
+/**
+ * One render thread's bidirectional path tracer (docs/conventions.md, "Light from both ends"; Veach
+ * 1997, chapter 10): for each camera sample a subpath from the camera and one from a light chosen by
+ * its power, each a random walk as the path integrator's; then every way of joining them, strategy
+ * (s, t) taking the light subpath's first s vertices and the camera's first t:
+ * <ul>
+ * <li>s = 0: the camera subpath itself, where it meets a light's body or escapes to light at infinity;
+ * <li>s = 1: a camera vertex joined to a point sampled on a light (next-event estimation);
+ * <li>t = 1: a light vertex joined to a point of the camera's lens, its light added at the pixel the
+ * camera sees it at ({@link Splats}: light tracing);
+ * <li>otherwise: the two subpaths' last vertices joined by a shadow ray.
+ * </ul>
+ * Each strategy's light is weighed by the power heuristic over every strategy that could have made the
+ * same path ({@link BdptWeights}), so together they count it once. A path has at most
+ * {@code recursion_max} surface hits, and each subpath ends by Russian roulette as the path
+ * integrator's. Allocates nothing per path.
+ */
+final class BdptIntegrator extends Integrator {
+
+    /** Random dimensions of the light subpath: which light, its ray (two pairs), then 3 a vertex. */
+    private static final int LIGHT_PATH = 1 << 22;
+    /** Random dimensions of the light samples of s = 1, 3 for each camera vertex: which light, the point. */
+    private static final int LIGHT_SAMPLE = 2 << 22;
+    /** Random dimensions of the lens points of t = 1, one pair for each light vertex. */
+    private static final int LENS_SAMPLE = 3 << 22;
+    /** Random dimensions a vertex of a subpath uses: the direction (a pair), the lobe and the roulette. */
+    private static final int DIMENSIONS_PER_VERTEX = 3;
+
+    private final PathSamples random = new PathSamples();
+    private final Hit hit = new Hit();
+    private final BsdfSample sampled = new BsdfSample();
+    private final LightSample lightSample = new LightSample();
+    private final LightRay lightRay = new LightRay();
+    private final CameraSight sight = new CameraSight();
+    private final Rgb f = new Rgb();
+    private final Rgb f2 = new Rgb();
+    private final Rgb radiance = new Rgb();
+    /** The scene's lights and sky, what they are chosen by, and the sphere their far light crosses. */
+    final BdptWeights weights = new BdptWeights();
+    private Splats splats;
+    private int width, height;
+    BdptVertex[] camera = new BdptVertex[0], light = new BdptVertex[0];
+    /** How many vertices the last camera ray's subpaths had: what tests read its vertices by. */
+    int cameraVertices, lightVertices;
+    /** The vertices of s = 1 and t = 1, which the strategy samples in place of the subpath's first. */
+    private final BdptVertex sampledLight = new BdptVertex(), sampledCamera = new BdptVertex();
+
+    @Override
+    void prepared(RenderSettings settings) {
+        int vertices = settings.recursionMax() + 2;
+        if (camera.length != vertices) {
+            camera = vertices(vertices);
+            light = vertices(vertices);
+        }
+        weights.prepare(scene, this);
+    }
+
+    private static BdptVertex[] vertices(int n) {
+        BdptVertex[] v = new BdptVertex[n];
+        for (int i = 0; i < n; i++) {
+            v[i] = new BdptVertex();
+        }
+        return v;
+    }
+
+    /** Where light tracing adds its light: the frame's splats, of its size. */
+    void splatInto(Splats frameSplats) {
+        splats = frameSplats;
+        width = frameSplats.width();
+        height = frameSplats.height();
+        weights.film(width, height);
+    }
+
+    @Override
+    void beginPath(int pixelIndex, int frameIndex, int sample, int samples) {
+        random.begin(pixelIndex, frameIndex, sample, samples);
+    }
+
+    @Override
+    PathSamples lightNumbers(int i) {
+        return random; // the light samples of s = 1 draw their own dimensions
+    }
+
+    @Override
+    Rgb shadeCamera(int primitive, double t, double ox, double oy, double oz, double dx, double dy, double dz,
+                    int hitsLeft) {
+        BdptVertex eye = camera[0];
+        eye.kind = BdptVertex.CAMERA;
+        eye.setPoint(ox, oy, oz);
+        eye.setNormal(0, 0, 0);
+        eye.setBeta(1, 1, 1);
+        eye.delta = false;
+        eye.connectible = true;
+        double pdfDirection = scene.camera.directionPdf(ox, oy, oz, dx, dy, dz, width, height);
+        if (primitive != Hit.NONE) {
+            primitives.record(hit, primitive, t);
+        }
+        cameraVertices = walk(camera, 1, hitsLeft + 2, ox, oy, oz, dx, dy, dz, pdfDirection, 1, 1, 1,
+                false, 0, primitive != Hit.NONE ? 1 : 0, Hit.NONE, Hit.NONE);
+        lightVertices = lightSubpath(hitsLeft + 1);
+        double r = 0, g = 0, b = 0;
+        for (int tv = 1; tv <= cameraVertices; tv++) {
+            for (int s = 0; s <= lightVertices && s + tv - 2 <= hitsLeft; s++) {
+                if (s + tv < 2 || s == 1 && tv == 1 || !weights.chosen(s, tv)) {
+                    continue;
+                }
+                if (tv == 1) {
+                    splat(s);
+                    continue;
+                }
+                if (connect(s, tv)) {
+                    r += radiance.r;
+                    g += radiance.g;
+                    b += radiance.b;
+                }
+            }
+        }
+        radiance.set(r, g, b);
+        if (!Double.isFinite(r + g + b)) { // counted as black
+            radiance.set(0, 0, 0);
+        }
+        return radiance;
+    }
+
+    // ---------------------------------------------------------------- the subpaths
+
+    /**
+     * Starts a light subpath at a light chosen by its power, from a ray leaving it, and walks it; returns
+     * its vertex count (0 where the scene has no light).
+     */
+    private int lightSubpath(int most) {
+        Lights all = scene.lightsAndSky;
+        int k = weights.choose(random.single(LIGHT_PATH));
+        if (k < 0) {
+            return 0;
+        }
+        double chance = weights.chance(k);
+        random.pair(LIGHT_PATH + 1);
+        double u1 = random.u1, u2 = random.u2;
+        random.pair(LIGHT_PATH + 2);
+        all.leaving(k, weights.centreX, weights.centreY, weights.centreZ, weights.radius, u1, u2, random.u1,
+                random.u2, lightRay);
+        LightRay ray = lightRay;
+        BdptVertex origin = light[0];
+        boolean far = all.infinitelyFar(k);
+        origin.kind = far ? BdptVertex.FAR : BdptVertex.LIGHT;
+        origin.light = k;
+        origin.setPoint(ray.originX, ray.originY, ray.originZ);
+        origin.setNormal(ray.normalX, ray.normalY, ray.normalZ);
+        origin.setFar(-ray.dirX, -ray.dirY, -ray.dirZ);
+        origin.deltaLight = all.isDelta(k);
+        origin.delta = false;
+        origin.connectible = false;
+        origin.pdfFwd = far ? weights.farDensity(-ray.dirX, -ray.dirY, -ray.dirZ) : chance * ray.pdfOrigin;
+        // a far light's first hit is found with the density of the point of its disc
+        double pdfDirection = far ? ray.pdfOrigin : ray.pdfDirection;
+        if (!(ray.pdfOrigin > 0 && ray.pdfDirection > 0)) {
+            return 1;
+        }
+        return walk(light, 1, most, ray.originX, ray.originY, ray.originZ, ray.dirX, ray.dirY, ray.dirZ,
+                pdfDirection, ray.fluxR / chance, ray.fluxG / chance, ray.fluxB / chance, true, LIGHT_PATH + 3, -1,
+                far || k >= lights.count() ? Hit.NONE : scene.bodyOf[k], Hit.NONE);
+    }
+
+    /**
+     * Extends the subpath {@code path}, of {@code n} vertices, by a random walk from its last along the ray
+     * from o along d, chosen with density {@code pdfDirection} (of the point of a far light's disc, for the
+     * ray leaving it), with throughput beta, to at most {@code most} vertices; returns the count. The
+     * first hit is already known where {@code known} is 0 (none) or 1 (in {@link #hit}); -1: to be found. A camera subpath that escapes ends at
+     * a {@link BdptVertex#FAR} vertex where light at infinity may meet it; one that meets a light's body
+     * ends there. Each vertex left records the density of the walk the other way at the vertex before it.
+     */
+    private int walk(BdptVertex[] path, int n, int most, double ox, double oy, double oz, double dx, double dy,
+                     double dz, double pdfDirection, double betaR, double betaG, double betaB, boolean fromLight,
+                     int firstDimension, int known, int skip, int inside) {
+        double scaleR = 1, scaleG = 1, scaleB = 1; // the throughput over the light's, for the roulette
+        int dimension = firstDimension;
+        for (int bounce = 1; n < most; bounce++) {
+            BdptVertex previous = path[n - 1];
+            boolean found = bounce == 1 && known >= 0 ? known == 1 : nearest(ox, oy, oz, dx, dy, dz, skip, inside, hit);
+            if (!found) {
+                if (!fromLight && scene.lightsAndSky.countAtInfinity() > 0) {
+                    BdptVertex v = path[n++];
+                    v.kind = BdptVertex.FAR;
+                    v.light = -1;
+                    v.setFar(dx, dy, dz);
+                    v.setBeta(betaR, betaG, betaB);
+                    v.pdfFwd = previous.delta ? BdptWeights.PAST_DELTA : pdfDirection;
+                    v.delta = false;
+                    v.deltaLight = false;
+                    v.connectible = false;
+                }
+                return n;
+            }
+            BdptVertex v = path[n];
+            describe(hit, ox, oy, oz, dx, dy, dz, v.surface);
+            v.kind = BdptVertex.SURFACE;
+            v.woX = -dx;
+            v.woY = -dy;
+            v.woZ = -dz;
+            v.setBeta(betaR, betaG, betaB);
+            v.pdfFwd = previous.delta ? BdptWeights.PAST_DELTA : weights.toArea(pdfDirection, previous, v);
+            v.delta = false;
+            v.deltaLight = false;
+            int body = scene.lightOf[hit.primitive];
+            if (body >= 0) { // a light's black body: light paths end in it, camera paths find its light
+                if (fromLight) {
+                    return n;
+                }
+                v.kind = BdptVertex.LIGHT;
+                v.light = body;
+                v.connectible = false;
+                return n + 1;
+            }
+            Surface s = v.surface;
+            v.connectible = !materials.isDelta(s.material);
+            n++;
+            if (n == most) {
+                return n;
+            }
+            random.pair(dimension);
+            Bsdf bsdf = materials.bsdf(s.material);
+            BsdfSample next = sampled;
+            if (!bsdf.sample(materials, s, -dx, -dy, -dz, random.u1, random.u2, random.single(dimension + 1), next)) {
+                return n;
+            }
+            double adjoint = fromLight && next.transmitted() ? weights.adjointTransmission(s) : 1;
+            v.delta = next.delta();
+            pdfDirection = next.pdf;
+            previous.pdfRev = v.delta ? BdptWeights.PAST_DELTA : weights.toArea(
+                    weights.bsdfPdf(v, next.wiX, next.wiY, next.wiZ, v.woX, v.woY, v.woZ), v, previous);
+            double wr = next.weightR * adjoint, wg = next.weightG * adjoint, wb = next.weightB * adjoint;
+            betaR *= wr;
+            betaG *= wg;
+            betaB *= wb;
+            scaleR *= wr;
+            scaleG *= wg;
+            scaleB *= wb;
+            if (bounce >= PathIntegrator.ROULETTE_FROM) {
+                double survive = Math.min(1, Math.max(scaleR, Math.max(scaleG, scaleB)));
+                if (!(random.single(dimension + 2) < survive)) {
+                    return n;
+                }
+                betaR /= survive;
+                betaG /= survive;
+                betaB /= survive;
+                scaleR /= survive;
+                scaleG /= survive;
+                scaleB /= survive;
+            }
+            boolean through = next.transmitted();
+            ox = through ? s.farX() : s.nearX();
+            oy = through ? s.farY() : s.nearY();
+            oz = through ? s.farZ() : s.nearZ();
+            skip = through ? s.skipFar : s.skipNear;
+            inside = through ? s.insideFar : s.insideNear;
+            dx = next.wiX;
+            dy = next.wiY;
+            dz = next.wiZ;
+            dimension += DIMENSIONS_PER_VERTEX;
+        }
+        return n;
+    }
+
+    // ---------------------------------------------------------------- the strategies
+
+    /**
+     * Strategy (s, t) for t >= 2, its weighted light into {@link #radiance}; false where it brings none.
+     */
+    private boolean connect(int s, int t) {
+        BdptVertex pt = camera[t - 1];
+        if (s == 0) {
+            return emitted(pt, t);
+        }
+        if (!pt.connectible) {
+            return false;
+        }
+        if (s == 1) {
+            return lightSampled(pt, t);
+        }
+        BdptVertex qs = light[s - 1];
+        if (!qs.connectible) {
+            return false;
+        }
+        Surface a = pt.surface, b = qs.surface;
+        double wx = b.px - a.px, wy = b.py - a.py, wz = b.pz - a.pz;
+        double distance2 = wx * wx + wy * wy + wz * wz;
+        double inv = 1 / Math.sqrt(distance2);
+        wx *= inv;
+        wy *= inv;
+        wz *= inv;
+        weights.evaluate(pt, pt.woX, pt.woY, pt.woZ, wx, wy, wz, f);
+        if (f.r == 0 && f.g == 0 && f.b == 0) {
+            return false;
+        }
+        weights.evaluate(qs, -wx, -wy, -wz, qs.woX, qs.woY, qs.woZ, f2);
+        if (f2.r == 0 && f2.g == 0 && f2.b == 0) {
+            return false;
+        }
+        double g = Math.abs(a.nx * wx + a.ny * wy + a.nz * wz) * Math.abs(b.nx * wx + b.ny * wy + b.nz * wz)
+                * inv * inv;
+        double visible = visibleBetween(pt, qs);
+        if (visible == 0) {
+            return false;
+        }
+        double k = g * visible * weights.weight(s, t, camera, light, sampledLight, sampledCamera);
+        radiance.set(pt.betaR * f.r * f2.r * qs.betaR * k, pt.betaG * f.g * f2.g * qs.betaG * k,
+                pt.betaB * f.b * f2.b * qs.betaB * k);
+        return true;
+    }
+
+    /** s = 0: the light of the body or of the light at infinity the camera subpath ends at, weighted. */
+    private boolean emitted(BdptVertex pt, int t) {
+        if (pt.kind == BdptVertex.LIGHT) {
+            materials.bsdf(pt.surface.material).emitted(materials, pt.surface, f);
+        } else if (pt.kind == BdptVertex.FAR) {
+            escaped(pt.farX, pt.farY, pt.farZ, f);
+        } else {
+            return false;
+        }
+        if (f.r == 0 && f.g == 0 && f.b == 0) {
+            return false;
+        }
+        double w = weights.weight(0, t, camera, light, sampledLight, sampledCamera);
+        radiance.set(pt.betaR * f.r * w, pt.betaG * f.g * w, pt.betaB * f.b * w);
+        return true;
+    }
+
+    /** The radiance along d from every light at infinity, the sky among them, into {@code out}. */
+    private void escaped(double dx, double dy, double dz, Rgb out) {
+        Lights all = scene.lightsAndSky;
+        double r = 0, g = 0, b = 0;
+        for (int k = 0, n = all.countAtInfinity(); k < n; k++) {
+            all.arriving(all.atInfinity(k), dx, dy, dz, f2);
+            r += f2.r;
+            g += f2.g;
+            b += f2.b;
+        }
+        out.set(r, g, b);
+    }
+
+    /**
+     * s = 1: camera vertex pt joined to a point of a light chosen by its power, sampled as seen from pt
+     * (from its far side where the light is behind a surface that lets light through), weighted.
+     */
+    private boolean lightSampled(BdptVertex pt, int t) {
+        int dimension = LIGHT_SAMPLE + (t - 1) * DIMENSIONS_PER_VERTEX;
+        int k = weights.choose(random.single(dimension));
+        if (k < 0) {
+            return false;
+        }
+        random.pair(dimension + 1);
+        Lights all = scene.lightsAndSky;
+        Surface s = pt.surface;
+        boolean near = true;
+        LightSample ls = lightSample;
+        if (!all.sample(k, s.nearX(), s.nearY(), s.nearZ(), random.u1, random.u2, ls)) {
+            return false;
+        }
+        double cosine = ls.dirX * s.nx + ls.dirY * s.ny + ls.dirZ * s.nz;
+        if (!(cosine > 0)) {
+            if (!(cosine < 0) || !weights.transmits(s.material) || !all.isDelta(k)
+                    && !all.sample(k, s.farX(), s.farY(), s.farZ(), random.u1, random.u2, ls)) {
+                return false;
+            }
+            near = false;
+            cosine = ls.dirX * s.nx + ls.dirY * s.ny + ls.dirZ * s.nz;
+            if (!(cosine < 0)) {
+                return false;
+            }
+        }
+        weights.evaluate(pt, pt.woX, pt.woY, pt.woZ, ls.dirX, ls.dirY, ls.dirZ, f);
+        if (f.r == 0 && f.g == 0 && f.b == 0) {
+            return false;
+        }
+        double visible = shadowRay(k, s, near, ls);
+        if (visible == 0) {
+            return false;
+        }
+        weights.lightVertex(k, s, near, ls, sampledLight);
+        double w = weights.weight(1, t, camera, light, sampledLight, sampledCamera);
+        double kk = Math.abs(cosine) * visible * w / weights.chance(k);
+        radiance.set(pt.betaR * f.r * ls.irradianceR * kk, pt.betaG * f.g * ls.irradianceG * kk,
+                pt.betaB * f.b * ls.irradianceB * kk);
+        return true;
+    }
+
+    /**
+     * t = 1: light vertex qs (s >= 2) joined to a point of the camera's lens; its weighted light added at
+     * the pixel the camera sees qs at.
+     */
+    private void splat(int s) {
+        BdptVertex qs = light[s - 1];
+        if (!qs.connectible || splats == null) {
+            return;
+        }
+        Surface b = qs.surface;
+        random.pair(LENS_SAMPLE + s - 1);
+        CameraSight c = sight;
+        if (!scene.camera.sees(b.px, b.py, b.pz, random.u1, random.u2, width, height, c)) {
+            return;
+        }
+        weights.evaluate(qs, c.towardX, c.towardY, c.towardZ, qs.woX, qs.woY, qs.woZ, f);
+        if (f.r == 0 && f.g == 0 && f.b == 0) {
+            return;
+        }
+        double cos = Math.abs(b.nx * c.towardX + b.ny * c.towardY + b.nz * c.towardZ);
+        double visible = visibleFrom(qs, c.towardX, c.towardY, c.towardZ, c.distance);
+        if (visible == 0) {
+            return;
+        }
+        BdptVertex eye = sampledCamera;
+        eye.kind = BdptVertex.CAMERA;
+        eye.setPoint(c.lensX, c.lensY, c.lensZ);
+        eye.setNormal(0, 0, 0);
+        eye.delta = false;
+        eye.connectible = true;
+        double k = cos / (c.distance * c.distance) * c.importance * visible
+                * weights.weight(s, 1, camera, light, sampledLight, sampledCamera);
+        splats.add((int) c.filmX, (int) c.filmY, qs.betaR * f.r * k, qs.betaG * f.g * k, qs.betaB * f.b * k);
+    }
+
+    // ---------------------------------------------------------------- shadow rays
+
+    /** The fraction of light passing from surface s towards light k as sampled in {@code ls}, up to it. */
+    private double shadowRay(int k, Surface s, boolean near, LightSample ls) {
+        Aggregate through = k < lights.count() ? shadowAggregateOf(k) : aggregate;
+        double tMax = ls.distance;
+        if (!scene.lightsAndSky.isDelta(k) && tMax < Double.POSITIVE_INFINITY) {
+            tMax *= 1 - SHORT_OF_LIGHT;
+        }
+        return near ? transmittance(through, s.nearX(), s.nearY(), s.nearZ(), ls.dirX, ls.dirY, ls.dirZ, tMax,
+                s.skipNear) : transmittance(through, s.farX(), s.farY(), s.farZ(), ls.dirX, ls.dirY, ls.dirZ, tMax,
+                s.skipFar);
+    }
+
+    /**
+     * The fraction of light passing between surface vertices a and b: along the ray from a's offset point on
+     * b's side to b's offset point on a's side, stopped {@link #SHORT_OF_LIGHT} short of it, so that
+     * neither surface shadows its own point.
+     */
+    private double visibleBetween(BdptVertex a, BdptVertex b) {
+        Surface s = a.surface, e = b.surface;
+        double vx = e.px - s.px, vy = e.py - s.py, vz = e.pz - s.pz;
+        boolean near = vx * s.nx + vy * s.ny + vz * s.nz > 0; // b lies on the side a's normal faces
+        boolean endNear = vx * e.nx + vy * e.ny + vz * e.nz < 0; // a lies on the side b's normal faces
+        double ox = near ? s.nearX() : s.farX(), oy = near ? s.nearY() : s.farY(), oz = near ? s.nearZ() : s.farZ();
+        double dx = (endNear ? e.nearX() : e.farX()) - ox, dy = (endNear ? e.nearY() : e.farY()) - oy;
+        double dz = (endNear ? e.nearZ() : e.farZ()) - oz;
+        double distance = Math.sqrt(dx * dx + dy * dy + dz * dz);
+        double inv = 1 / distance;
+        return transmittance(aggregate, ox, oy, oz, dx * inv, dy * inv, dz * inv, distance * (1 - SHORT_OF_LIGHT),
+                near ? s.skipNear : s.skipFar);
+    }
+
+    /** The fraction of light passing from surface vertex v along unit w for {@code distance}, to a point on no surface. */
+    private double visibleFrom(BdptVertex v, double wx, double wy, double wz, double distance) {
+        Surface s = v.surface;
+        boolean near = wx * s.nx + wy * s.ny + wz * s.nz > 0;
+        return near ? transmittance(aggregate, s.nearX(), s.nearY(), s.nearZ(), wx, wy, wz, distance, s.skipNear)
+                : transmittance(aggregate, s.farX(), s.farY(), s.farZ(), wx, wy, wz, distance, s.skipFar);
+    }
+}

@@ -1,0 +1,424 @@
+package glint.render;
+
+import glint.geometry.Primitives;
+import glint.shading.Bsdf;
+import glint.shading.LightRay;
+import glint.shading.LightSample;
+import glint.shading.Lights;
+import glint.shading.Materials;
+import glint.shading.Rgb;
+import glint.shading.Surface;
+
+/**
+ * What a bidirectional path is weighed by ({@link BdptIntegrator}): which light a path starts from
+ * (chosen by power), the sphere around the scene that light from infinity crosses, the densities with
+ * which either end reaches a vertex, and the multiple importance sampling weight of a strategy: the
+ * power heuristic over every strategy that makes the same path, worked out as a chain of density
+ * ratios along it (Veach 1997, 10.2; pbrt's BDPT computes it the same way). A strategy the integrator
+ * has not got (a light point seen by the camera directly, s = t = 1; a light path ending on the lens,
+ * t = 0) never counts. One per render thread.
+ */
+final class BdptWeights {
+
+    /**
+     * The density recorded for a vertex reached through a delta lobe, which has none: 1, so that it
+     * cancels in the ratios of the strategies on either side of the delta vertex, none of which joins
+     * the path there. (Any other density of 0 means a strategy that cannot make the path.)
+     */
+    static final double PAST_DELTA = 1;
+
+    /** The centre and radius of a sphere holding every bounded primitive and the camera. */
+    double centreX, centreY, centreZ, radius;
+
+    private RenderScene scene;
+    private Lights lights;
+    private Materials materials;
+    private int width, height;
+    /** Per light of {@link RenderScene#lightsAndSky}: the chance it is chosen, and the sums of the chances. */
+    private double[] chance = new double[0], cumulative = new double[0];
+    /** The strategy a test or study renders alone, and whether weighted; -1: every strategy. */
+    private int onlyS = -1, onlyT = -1;
+    private boolean weighted = true;
+
+    private final LightRay leaving = new LightRay();
+    private final Surface turned = new Surface();
+    private final double[] box = new double[6];
+    private final double[] w = new double[3];
+
+    /** Reads what the weights need of a scene being prepared for {@code integrator}. */
+    void prepare(RenderScene renderScene, Integrator integrator) {
+        scene = renderScene;
+        lights = renderScene.lightsAndSky;
+        materials = renderScene.materials;
+        onlyS = renderScene.strategyS;
+        onlyT = renderScene.strategyT;
+        weighted = renderScene.strategyWeighted;
+        bound(renderScene.primitives, renderScene.camera);
+        chances();
+    }
+
+    /** The image size the camera's densities are of. */
+    void film(int frameWidth, int frameHeight) {
+        width = frameWidth;
+        height = frameHeight;
+    }
+
+    private void bound(Primitives primitives, CameraModel camera) {
+        double x0 = camera.eye().x(), y0 = camera.eye().y(), z0 = camera.eye().z();
+        double x1 = x0, y1 = y0, z1 = z0;
+        for (int p = 0; p < primitives.count(); p++) {
+            if (primitives.bounded(p)) {
+                primitives.bounds(p, box, 0);
+                x0 = Math.min(x0, box[0]);
+                y0 = Math.min(y0, box[1]);
+                z0 = Math.min(z0, box[2]);
+                x1 = Math.max(x1, box[3]);
+                y1 = Math.max(y1, box[4]);
+                z1 = Math.max(z1, box[5]);
+            }
+        }
+        centreX = (x0 + x1) / 2;
+        centreY = (y0 + y1) / 2;
+        centreZ = (z0 + z1) / 2;
+        double dx = x1 - x0, dy = y1 - y0, dz = z1 - z0;
+        radius = Math.max(1, Math.sqrt(dx * dx + dy * dy + dz * dz) / 2);
+    }
+
+    /** Each light's chance by its power; every light the same where the powers do not sum to a finite positive. */
+    private void chances() {
+        int n = lights.count();
+        if (chance.length != n) {
+            chance = new double[n];
+            cumulative = new double[n];
+        }
+        double total = 0;
+        for (int k = 0; k < n; k++) {
+            chance[k] = Math.max(0, lights.power(k, radius));
+            total += chance[k];
+        }
+        boolean even = !(total > 0 && total < Double.POSITIVE_INFINITY);
+        double sum = 0;
+        for (int k = 0; k < n; k++) {
+            chance[k] = even ? 1.0 / n : chance[k] / total;
+            sum += chance[k];
+            cumulative[k] = sum;
+        }
+    }
+
+    /** The light that uniform number u chooses, by power; -1 where the scene has none. */
+    int choose(double u) {
+        int n = cumulative.length;
+        if (n == 0) {
+            return -1;
+        }
+        double target = u * cumulative[n - 1];
+        int lo = 0, hi = n - 1;
+        while (lo < hi) {
+            int mid = (lo + hi) >>> 1;
+            if (cumulative[mid] > target) {
+                hi = mid;
+            } else {
+                lo = mid + 1;
+            }
+        }
+        while (chance[lo] == 0 && lo > 0) { // u at the very end of a run of lights that have no chance
+            lo--;
+        }
+        return lo;
+    }
+
+    /** The chance light k is chosen. */
+    double chance(int k) {
+        return chance[k];
+    }
+
+    /** Whether strategy (s, t) is rendered: all are, unless the scene asks for one alone. */
+    boolean chosen(int s, int t) {
+        return onlyS < 0 || s == onlyS && t == onlyT;
+    }
+
+    // ---------------------------------------------------------------- BSDFs from either side
+
+    /**
+     * f(wo, wi) at surface vertex v, into {@code out}: wo and wi anywhere on the sphere, the surface met
+     * from wo's side.
+     */
+    void evaluate(BdptVertex v, double woX, double woY, double woZ, double wiX, double wiY, double wiZ, Rgb out) {
+        Surface s = facing(v.surface, woX, woY, woZ);
+        materials.bsdf(s.material).evaluate(materials, s, woX, woY, woZ, wiX, wiY, wiZ, out);
+    }
+
+    /** The density with which surface vertex v's BSDF samples wi given wo, the surface met from wo's side. */
+    double bsdfPdf(BdptVertex v, double woX, double woY, double woZ, double wiX, double wiY, double wiZ) {
+        Surface s = facing(v.surface, woX, woY, woZ);
+        return materials.bsdf(s.material).pdf(materials, s, woX, woY, woZ, wiX, wiY, wiZ);
+    }
+
+    /** s itself where its normal faces w, else a copy met from the other side. */
+    private Surface facing(Surface s, double wx, double wy, double wz) {
+        double cos = wx * s.nx + wy * s.ny + wz * s.nz;
+        if (cos >= 0) {
+            return s;
+        }
+        Surface t = turned;
+        t.px = s.px;
+        t.py = s.py;
+        t.pz = s.pz;
+        t.nx = -s.nx;
+        t.ny = -s.ny;
+        t.nz = -s.nz;
+        t.front = !s.front;
+        t.cosIncident = -cos;
+        t.material = s.material;
+        return t;
+    }
+
+    /**
+     * The factor that turns a sampled refraction's weight at surface s, for light carried from its
+     * normal's side to the other, into the weight of importance carried the same way: (n_o / n_i)^2,
+     * as f(a, b) n_a^2 = f(b, a) n_b^2 (docs/conventions.md).
+     */
+    double adjointTransmission(Surface s) {
+        double inside = materials.ior(s.material);
+        double ratio = s.front ? 1 / inside : inside;
+        return ratio * ratio;
+    }
+
+    /** Whether material m lets light through (has a transmission lobe that is not delta). */
+    boolean transmits(int m) {
+        return (materials.lobes(m) & glint.shading.Lobe.TRANSMISSION) != 0 && !materials.isDelta(m);
+    }
+
+    // ---------------------------------------------------------------- densities
+
+    /**
+     * A density per solid angle of leaving {@code from} towards {@code to} as a density per unit area at
+     * {@code to} (times its cosine where it is on a surface, over the squared distance); unchanged where
+     * {@code to} is at infinity. From a far light it is the density of its disc's point, per unit area.
+     */
+    double toArea(double pdf, BdptVertex from, BdptVertex to) {
+        if (to.kind == BdptVertex.FAR) {
+            return pdf;
+        }
+        Surface b = to.surface;
+        if (from.kind == BdptVertex.FAR) {
+            return to.onSurface() ? pdf * Math.abs(b.nx * from.farX + b.ny * from.farY + b.nz * from.farZ) : pdf;
+        }
+        Surface a = from.surface;
+        double dx = b.px - a.px, dy = b.py - a.py, dz = b.pz - a.pz;
+        double distance2 = dx * dx + dy * dy + dz * dz;
+        if (!to.onSurface()) {
+            return pdf / distance2;
+        }
+        double cos = Math.abs(b.nx * dx + b.ny * dy + b.nz * dz) / Math.sqrt(distance2);
+        return pdf * cos / distance2;
+    }
+
+    /** The unit direction from a to b into {@link #w}. */
+    private void direction(BdptVertex a, BdptVertex b) {
+        if (b.kind == BdptVertex.FAR) {
+            w[0] = b.farX;
+            w[1] = b.farY;
+            w[2] = b.farZ;
+        } else if (a.kind == BdptVertex.FAR) {
+            w[0] = -a.farX;
+            w[1] = -a.farY;
+            w[2] = -a.farZ;
+        } else {
+            double dx = b.surface.px - a.surface.px, dy = b.surface.py - a.surface.py, dz = b.surface.pz - a.surface.pz;
+            double inv = 1 / Math.sqrt(dx * dx + dy * dy + dz * dz);
+            w[0] = dx * inv;
+            w[1] = dy * inv;
+            w[2] = dz * inv;
+        }
+    }
+
+    /** The density with which vertex v, reached from {@code prev}, sends the path on to {@code next}. */
+    double pdf(BdptVertex v, BdptVertex prev, BdptVertex next) {
+        if (v.kind == BdptVertex.LIGHT || v.kind == BdptVertex.FAR) {
+            return pdfLight(v, next);
+        }
+        direction(v, next);
+        double wiX = w[0], wiY = w[1], wiZ = w[2];
+        double pdf;
+        if (v.kind == BdptVertex.CAMERA) {
+            Surface c = v.surface;
+            pdf = scene.camera.directionPdf(c.px, c.py, c.pz, wiX, wiY, wiZ, width, height);
+        } else {
+            direction(v, prev);
+            pdf = bsdfPdf(v, w[0], w[1], w[2], wiX, wiY, wiZ);
+        }
+        return toArea(pdf, v, next);
+    }
+
+    /** The density with which a light subpath from light vertex v reaches {@code to} first. */
+    double pdfLight(BdptVertex v, BdptVertex to) {
+        if (v.kind == BdptVertex.FAR) {
+            return crossesDisc(to, v) ? toArea(1 / (Math.PI * radius * radius), v, to) : 0;
+        }
+        direction(v, to);
+        Surface a = v.surface;
+        lights.leavingPdf(v.light, a.px, a.py, a.pz, w[0], w[1], w[2], radius, leaving);
+        return toArea(leaving.pdfDirection, v, to);
+    }
+
+    /** The density with which a light subpath starts at light vertex v: its light's chance times its point's. */
+    double pdfLightOrigin(BdptVertex v) {
+        if (v.kind == BdptVertex.FAR) {
+            return farDensity(v.farX, v.farY, v.farZ);
+        }
+        Surface a = v.surface;
+        lights.leavingPdf(v.light, a.px, a.py, a.pz, 0, 0, 1, radius, leaving);
+        return chance[v.light] * leaving.pdfOrigin;
+    }
+
+    /**
+     * The density per solid angle with which a light subpath starts at infinity towards unit direction d
+     * (from the scene towards the light): over every light at infinity, its chance times its density.
+     */
+    double farDensity(double dx, double dy, double dz) {
+        double sum = 0;
+        for (int k = 0, n = lights.countAtInfinity(); k < n; k++) {
+            int i = lights.atInfinity(k);
+            sum += chance[i] * lights.pdf(i, 0, 0, 0, dx, dy, dz);
+        }
+        return sum;
+    }
+
+    /** Whether light from far vertex v, leaving its disc across the scene's sphere, may reach point {@code to}. */
+    private boolean crossesDisc(BdptVertex to, BdptVertex v) {
+        Surface b = to.surface;
+        double qx = b.px - centreX, qy = b.py - centreY, qz = b.pz - centreZ;
+        double along = qx * v.farX + qy * v.farY + qz * v.farZ;
+        double across2 = qx * qx + qy * qy + qz * qz - along * along;
+        return along <= radius && across2 <= radius * radius;
+    }
+
+    /**
+     * The vertex of light k that sample {@code ls} of it, from surface s (its near or far side), chose,
+     * into {@code out}, with the density a light subpath starts there.
+     */
+    void lightVertex(int k, Surface s, boolean near, LightSample ls, BdptVertex out) {
+        out.light = k;
+        out.delta = false;
+        out.connectible = false;
+        out.deltaLight = lights.isDelta(k);
+        if (lights.infinitelyFar(k)) {
+            out.kind = BdptVertex.FAR;
+            out.setFar(ls.dirX, ls.dirY, ls.dirZ);
+            out.pdfFwd = farDensity(ls.dirX, ls.dirY, ls.dirZ);
+            return;
+        }
+        out.kind = BdptVertex.LIGHT;
+        double ox = near ? s.nearX() : s.farX(), oy = near ? s.nearY() : s.farY(), oz = near ? s.nearZ() : s.farZ();
+        out.setPoint(ox + ls.dirX * ls.distance, oy + ls.dirY * ls.distance, oz + ls.dirZ * ls.distance);
+        Surface a = out.surface;
+        lights.leavingPdf(k, a.px, a.py, a.pz, -ls.dirX, -ls.dirY, -ls.dirZ, radius, leaving);
+        out.setNormal(leaving.normalX, leaving.normalY, leaving.normalZ);
+        out.pdfFwd = chance[k] * leaving.pdfOrigin;
+    }
+
+    // ---------------------------------------------------------------- the weight
+
+    /**
+     * The power heuristic's weight of strategy (s, t) for the path of the light subpath's first s vertices
+     * and the camera subpath's first t, joined: 1 / (1 + sum over the other strategies of (p_other /
+     * p_this)^2), each ratio the product of the ratios of the two ends' densities at the vertices between.
+     * For s = 1 the light vertex is {@code sampledLight}, for t = 1 the camera's {@code sampledCamera}. The
+     * joined vertices' reverse densities are set for the sum and restored after it.
+     */
+    double weight(int s, int t, BdptVertex[] camera, BdptVertex[] light, BdptVertex sampledLight,
+                  BdptVertex sampledCamera) {
+        if (!weighted) {
+            return 1;
+        }
+        if (s + t == 2) {
+            return 1;
+        }
+        if (!made(s, t, camera, light)) {
+            return 0;
+        }
+        BdptVertex pt = t == 1 ? sampledCamera : camera[t - 1];
+        BdptVertex ptMinus = t > 1 ? camera[t - 2] : null;
+        BdptVertex qs = s == 0 ? null : s == 1 ? sampledLight : light[s - 1];
+        BdptVertex qsMinus = s > 1 ? light[s - 2] : null;
+        double ptRev = pt.pdfRev, ptMinusRev = ptMinus == null ? 0 : ptMinus.pdfRev;
+        double qsRev = qs == null ? 0 : qs.pdfRev, qsMinusRev = qsMinus == null ? 0 : qsMinus.pdfRev;
+        boolean ptDelta = pt.delta, qsDelta = qs != null && qs.delta;
+        pt.pdfRev = s > 0 ? pdf(qs, qsMinus, pt) : pdfLightOrigin(pt);
+        if (ptMinus != null) {
+            ptMinus.pdfRev = s > 0 ? pdf(pt, qs, ptMinus) : pdfLight(pt, ptMinus);
+        }
+        if (qs != null) {
+            qs.pdfRev = pdf(pt, ptMinus, qs);
+            if (qsMinus != null) {
+                qsMinus.pdfRev = pdf(qs, pt, qsMinus);
+            }
+        }
+        pt.delta = false;
+        if (qs != null) {
+            qs.delta = false;
+        }
+        double sum = 0, ratio = 1;
+        for (int i = t - 1; i > 0; i--) {
+            BdptVertex v = camera[i];
+            ratio *= v.pdfRev / nonZero(v.pdfFwd);
+            if (!v.delta && !camera[i - 1].delta) {
+                sum += ratio * ratio;
+            }
+        }
+        ratio = 1;
+        for (int i = s - 1; i >= 0; i--) {
+            BdptVertex v = i == s - 1 ? qs : light[i];
+            ratio *= v.pdfRev / nonZero(v.pdfFwd);
+            boolean deltaBefore = i > 0 ? light[i - 1].delta : v.deltaLight;
+            if (!v.delta && !deltaBefore) {
+                sum += ratio * ratio;
+            }
+        }
+        pt.pdfRev = ptRev;
+        pt.delta = ptDelta;
+        if (ptMinus != null) {
+            ptMinus.pdfRev = ptMinusRev;
+        }
+        if (qs != null) {
+            qs.pdfRev = qsRev;
+            qs.delta = qsDelta;
+            if (qsMinus != null) {
+                qsMinus.pdfRev = qsMinusRev;
+            }
+        }
+        return 1 / (1 + sum);
+    }
+
+    /**
+     * Whether strategy (s, t) can make the path at all: no vertex of either subpath reached with density 0
+     * (a point no light from infinity crosses to, a camera ray off the image).
+     */
+    private static boolean made(int s, int t, BdptVertex[] camera, BdptVertex[] light) {
+        for (int i = 1; i < s; i++) {
+            if (light[i].pdfFwd == 0) {
+                return false;
+            }
+        }
+        for (int i = 1; i < t; i++) {
+            if (camera[i].pdfFwd == 0) {
+                return false;
+            }
+        }
+        return true;
+    }
+
+    /**
+     * A forward density of 0 as 1: only a light's origin has one, where no light at infinity but a delta
+     * one (a directional light) could have started the path; that strategy never counts.
+     */
+    private static double nonZero(double pdf) {
+        return pdf != 0 ? pdf : 1;
+    }
+
+    /** The BSDF of material m. */
+    Bsdf bsdf(int m) {
+        return materials.bsdf(m);
+    }
+}
