@@ -57,7 +57,12 @@ public final class SceneSource {
     }
 
     public Scene loadScene() throws InputException {
-        return SceneLoader.load(scenePath, limits);
+        return loadScene(scenePath);
+    }
+
+    /** Reads {@code file} as the window's scene, within these limits. */
+    public Scene loadScene(Path file) throws InputException {
+        return SceneLoader.load(file, limits);
     }
 
     public Config loadConfig() throws InputException {
