@@ -66,7 +66,7 @@ final class Headless {
                               Progress progress, PrintWriter out) throws InputException, IOException, StillRefused {
         progress.step("reading the scene", null);
         Scene scene = view.apply(SceneLoader.load(scenePath, settings.limits().scene()), scenePath.toString());
-        Config config = flags.effective(settings, scene.render());
+        Config config = flags.effective(settings, scene.render(), progress::note);
         progress.step("preparing the scene", null);
         RenderScene compiled = RenderScene.compile(scene, config.renderSettings());
         long start = System.nanoTime();
@@ -93,7 +93,10 @@ final class Headless {
                      PrintWriter err) throws InputException {
         Scene loaded = SceneLoader.load(scenePath, settings.limits().scene());
         Scene scene = view.apply(loaded, scenePath.toString());
-        Config config = flags.effective(settings, scene.render());
+        Config config = flags.effective(settings, scene.render(), note -> {
+            err.println(note);
+            err.flush();
+        });
         RenderScene compiled = RenderScene.compile(scene, config.renderSettings());
         try {
             MemoryCheck.check(config, MemoryCheck.FRAME_BYTES_PER_PIXEL, Runtime.getRuntime());

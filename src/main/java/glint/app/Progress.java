@@ -140,6 +140,17 @@ final class Progress implements AutoCloseable {
             LockSupport.unpark(timer);
         }
         step = null;
+        clearBar();
+    }
+
+    /** A line of its own on standard error, never on the bar's: a bar shown is cleared first, and drawn again later. */
+    synchronized void note(String line) {
+        clearBar();
+        err.println(line);
+        err.flush();
+    }
+
+    private void clearBar() {
         if (barShown) {
             err.print("\r" + " ".repeat(LINE_WIDTH) + "\r");
             err.flush();

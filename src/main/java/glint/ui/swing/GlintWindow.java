@@ -85,7 +85,7 @@ public final class GlintWindow {
         Scene scene;
         try {
             scene = source.loadScene();
-            source.flags().effective(config, scene.render()); // a block beyond the limits: no window
+            source.flags().effective(config, scene.render(), err::println); // a block beyond the limits: no window
         } catch (InputException e) {
             watcher.close();
             throw e;
