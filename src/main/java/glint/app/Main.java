@@ -92,6 +92,7 @@ public final class Main implements Callable<Integer> {
         main.out = out;
         main.err = err;
         CommandLine cli = new CommandLine(main);
+        cli.setExpandAtFiles(false); // --scene @s.yaml is the file '@s.yaml', never a file of arguments
         cli.getCommandSpec().usageMessage().footer(HelpFooter.text());
         cli.setOut(out);
         cli.setErr(err);
