@@ -50,6 +50,7 @@ final class Headless {
         try (Interrupts interrupts = Interrupts.install(err, INTERRUPTED_STILL);
              Progress progress = Progress.start(err);
              StillRun still = StillRun.open(List.of(output), inputs, "image")) {
+            interrupts.clearLineWith(progress::close); // its line never lands on the bar's
             interrupts.watch(still::cancel);
             try {
                 return render(still, scenePath, view, settings, flags, progress, out);
@@ -66,7 +67,7 @@ final class Headless {
                               Progress progress, PrintWriter out) throws InputException, IOException, StillRefused {
         progress.step("reading the scene", null);
         Scene scene = view.apply(SceneLoader.load(scenePath, settings.limits().scene()), scenePath.toString());
-        Config config = flags.effective(settings, scene.render());
+        Config config = flags.effective(settings, scene.render(), progress::note);
         progress.step("preparing the scene", null);
         RenderScene compiled = RenderScene.compile(scene, config.renderSettings());
         long start = System.nanoTime();
@@ -91,23 +92,37 @@ final class Headless {
 
     static int bench(Path scenePath, ViewChoice view, Config settings, Flags flags, int frames, PrintWriter out,
                      PrintWriter err) throws InputException {
-        Scene loaded = SceneLoader.load(scenePath, settings.limits().scene());
-        Scene scene = view.apply(loaded, scenePath.toString());
-        Config config = flags.effective(settings, scene.render());
-        RenderScene compiled = RenderScene.compile(scene, config.renderSettings());
-        try {
-            MemoryCheck.check(config, MemoryCheck.FRAME_BYTES_PER_PIXEL, Runtime.getRuntime());
-        } catch (StillRefused e) {
-            throw refusal(e);
+        try (Interrupts interrupts = Interrupts.install(err, INTERRUPTED_BENCH);
+             Progress progress = Progress.start(err)) {
+            interrupts.clearLineWith(progress::close);
+            progress.step("reading the scene", null);
+            Scene loaded = SceneLoader.load(scenePath, settings.limits().scene());
+            Scene scene = view.apply(loaded, scenePath.toString());
+            Config config = flags.effective(settings, scene.render(), progress::note);
+            progress.step("preparing the scene", null);
+            RenderScene compiled = RenderScene.compile(scene, config.renderSettings());
+            try {
+                MemoryCheck.check(config, MemoryCheck.FRAME_BYTES_PER_PIXEL, Runtime.getRuntime());
+            } catch (StillRefused e) {
+                throw refusal(e);
+            }
+            progress.close(); // the frames' lines are the progress from here
+            return timeFrames(compiled, config, view.isView() ? ", " + view.describe(loaded) : "", scenePath, frames,
+                    interrupts, out);
         }
+    }
+
+    /** What --bench says when a signal stops it before its first frame (while its scene loads). */
+    static final String INTERRUPTED_BENCH = "glint: interrupted before the first frame";
+
+    private static int timeFrames(RenderScene compiled, Config config, String seen, Path scenePath, int frames,
+                                  Interrupts interrupts, PrintWriter out) {
         FrameBuffer frame = new FrameBuffer(config.displayWidth(), config.displayHeight());
         double[] millis = new double[frames];
         long raysPerFrame;
-        String seen = view.isView() ? ", " + view.describe(loaded) : "";
         out.printf(Locale.ROOT, "timing %d %s of %s%s (%s)%n", frames, frames == 1 ? "frame" : "frames",
                 InputException.printable(InputException.cutPath(scenePath.toString())), seen, StillRun.describe(config, true));
-        try (Interrupts interrupts = Interrupts.install(err, "glint: interrupted");
-             Tracer tracer = new Tracer(config.effectiveThreads())) {
+        try (Tracer tracer = new Tracer(config.effectiveThreads())) {
             interrupts.watch(() -> {
                 tracer.cancel();
                 return true;

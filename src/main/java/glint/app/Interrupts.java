@@ -33,6 +33,7 @@ final class Interrupts implements AutoCloseable {
     private final PrintWriter err;
     private final String message;
     private volatile Work work;
+    private volatile Runnable clearLine = () -> { };
     private volatile boolean stopping;
 
     private Interrupts(PrintWriter err, String message) {
@@ -101,9 +102,15 @@ final class Interrupts implements AutoCloseable {
         }
     }
 
-    /** Prints the line saying the run was stopped, once, whoever comes first. */
+    /** What clears the line before the report is printed: a progress bar on the terminal, so it starts a line of its own. */
+    void clearLineWith(Runnable clear) {
+        this.clearLine = clear;
+    }
+
+    /** Prints the line saying the run was stopped, once, whoever comes first, on a line of its own. */
     void report(String line) {
         if (reported.compareAndSet(false, true)) {
+            clearLine.run();
             err.println(line);
             err.flush();
         }

@@ -92,6 +92,7 @@ public final class Main implements Callable<Integer> {
         main.out = out;
         main.err = err;
         CommandLine cli = new CommandLine(main);
+        cli.setExpandAtFiles(false); // --scene @s.yaml is the file '@s.yaml', never a file of arguments
         cli.getCommandSpec().usageMessage().footer(HelpFooter.text());
         cli.setOut(out);
         cli.setErr(err);
@@ -246,7 +247,9 @@ public final class Main implements Callable<Integer> {
             throw new InputException("glint", 0, 0, "--view renders headless: add --output FILE.png or --bench N "
                     + "(in the window, keys 1 to 9 go to the scene's views)");
         }
-        return WindowLauncher.open(scenePath, settings, flags(), () -> overrides(loadConfig()), out, err);
+        Path configFile = config != null ? config : Files.exists(Path.of("config.properties"))
+                ? Path.of("config.properties") : null;
+        return WindowLauncher.open(scenePath, configFile, settings, flags(), () -> overrides(loadConfig()), out, err);
     }
 
     private Config loadConfig() throws InputException {

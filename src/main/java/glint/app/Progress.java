@@ -68,7 +68,33 @@ final class Progress implements AutoCloseable {
 
     /** Starts the clock of the run; a bar when standard error is a terminal. */
     static Progress start(PrintWriter err) {
-        return new Progress(err, System.console() != null, System::nanoTime, true);
+        return new Progress(err, standardErrorIsATerminal(), System::nanoTime, true);
+    }
+
+    /**
+     * Whether standard error is a terminal, which the bar is drawn on: where the system tells what file it is
+     * (Linux's {@code /proc/self/fd/2}), that file; elsewhere whether the program has a console. Standard error
+     * sent to a file or a pipe gets plain lines, whatever standard input and output are.
+     */
+    static boolean standardErrorIsATerminal() {
+        return isTerminal(STANDARD_ERROR, System.console() != null);
+    }
+
+    private static final java.nio.file.Path STANDARD_ERROR = java.nio.file.Path.of("/proc/self/fd/2");
+
+    /** Whether the file {@code link} (a descriptor's link) is a terminal; {@code otherwise} where it cannot be told. */
+    static boolean isTerminal(java.nio.file.Path link, boolean otherwise) {
+        try {
+            String file = java.nio.file.Files.readSymbolicLink(link).toString();
+            return file.startsWith("/dev/pts/") || file.startsWith("/dev/tty") || file.equals("/dev/console");
+        } catch (java.io.IOException | UnsupportedOperationException | SecurityException e) {
+            return otherwise;
+        }
+    }
+
+    /** A bar, as on a terminal, on the given clock, shown only when {@link #show} is called (for tests). */
+    static Progress onTerminal(PrintWriter err, LongSupplier clock) {
+        return new Progress(err, true, clock, false);
     }
 
     /** Plain lines on the given clock, shown only when {@link #show} is called (for tests). */
@@ -140,6 +166,17 @@ final class Progress implements AutoCloseable {
             LockSupport.unpark(timer);
         }
         step = null;
+        clearBar();
+    }
+
+    /** A line of its own on standard error, never on the bar's: a bar shown is cleared first, and drawn again later. */
+    synchronized void note(String line) {
+        clearBar();
+        err.println(line);
+        err.flush();
+    }
+
+    private void clearBar() {
         if (barShown) {
             err.print("\r" + " ".repeat(LINE_WIDTH) + "\r");
             err.flush();

@@ -1,5 +1,6 @@
 package glint.app;
 
+import glint.input.LastWords;
 import java.io.PrintWriter;
 
 /**
@@ -30,6 +31,9 @@ final class ThreadFailures {
     /** A thread ended on {@code e}: one line, and the program will end with status 1. */
     void uncaught(Thread thread, Throwable e) {
         failed = true;
+        if (e instanceof OutOfMemoryError) {
+            reserve = null;
+        }
         try {
             say(e instanceof OutOfMemoryError ? Main.outOfMemory(e)
                     : "glint: unexpected error on " + thread.getName() + ": " + e);
@@ -41,7 +45,14 @@ final class ThreadFailures {
     /** Prints the program's line that memory ran out, unless a thread has said it already. */
     void outOfMemory(Throwable e) {
         if (!outOfMemorySaid) {
-            say(Main.outOfMemory(e));
+            reserve = null;
+            String line;
+            try {
+                line = Main.outOfMemory(e);
+            } catch (OutOfMemoryError again) {
+                line = Main.OUT_OF_MEMORY;
+            }
+            say(line);
         }
     }
 
@@ -61,7 +72,23 @@ final class ThreadFailures {
             return;
         }
         outOfMemorySaid |= memory;
-        err.println(line);
-        err.flush();
+        if (memory) {
+            reserve = null; // room to say it
+        }
+        try {
+            err.println(line);
+            err.flush();
+        } catch (OutOfMemoryError e) { // the line of memory running out, made before it ran out
+            outOfMemorySaid = true;
+            OUT_OF_MEMORY.sayWithoutMemory();
+        }
     }
+
+    /** {@link Main#OUT_OF_MEMORY}, encoded while there is memory. */
+    private static final LastWords OUT_OF_MEMORY = new LastWords(Main.OUT_OF_MEMORY);
+
+    /** Memory held back so that, when the heap is full, there is room to say so. */
+    private volatile byte[] reserve = new byte[RESERVE_BYTES];
+    static final int RESERVE_BYTES = 64 * 1024;
+
 }

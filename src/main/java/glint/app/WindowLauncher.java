@@ -38,13 +38,19 @@ final class WindowLauncher {
      */
     static int open(Path scenePath, Config config, Flags flags, ConfigSource reload, PrintWriter out, PrintWriter err)
             throws InputException {
+        return open(scenePath, null, config, flags, reload, out, err);
+    }
+
+    /** {@link #open(Path, Config, Flags, ConfigSource, PrintWriter, PrintWriter)} with the config file read, if any. */
+    static int open(Path scenePath, Path configFile, Config config, Flags flags, ConfigSource reload, PrintWriter out,
+                    PrintWriter err) throws InputException {
         if (GraphicsEnvironment.isHeadless()) {
             checkInputs(scenePath, config, flags); // bad input says so (status 2), display or not
             return noDisplay(err, "no display available for the window");
         }
         GlintWindow window;
         try {
-            window = GlintWindow.open(config, new SceneSource(scenePath, reload, flags),
+            window = GlintWindow.open(config, new SceneSource(scenePath, reload, flags, configFile),
                     new Screenshots(Path.of("").toAbsolutePath()), out, err);
         } catch (GlintWindow.UnavailableException e) {
             return noDisplay(err, "cannot open the window (" + e.getMessage() + ")");

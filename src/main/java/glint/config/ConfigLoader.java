@@ -81,12 +81,12 @@ public final class ConfigLoader {
         double displayScale = number("display_scale", d.displayScale(), 1, 64, "a number from 1 to 64");
         int divider = integer("screen_divider", d.screenDivider(), 1, 256);
         int height = integer("display_height", d.displayHeight(), 1, 65536);
-        int depth = integer("recursion_max", d.recursionMax(), 1, limits.maxRecursion());
+        // the default depth yields to a lower max_recursion; a depth the file sets must be within it
+        int depth = integer("recursion_max", Math.min(d.recursionMax(), limits.maxRecursion()), 1, limits.maxRecursion());
         int width = integer("display_width", d.displayWidth(), 1, 65536);
         String sizeProblem = limits.imageSizeProblem(width, height);
         if (sizeProblem != null) {
-            throw error(entries.containsKey("display_width") ? "display_width" : "display_height",
-                    "display_width x display_height: " + sizeProblem);
+            throw error(sizeKey(), "display_width x display_height: " + sizeProblem);
         }
         String name = entries.containsKey("name") ? value("name") : d.name();
         String scene = entries.containsKey("scene") ? value("scene") : d.scene();
@@ -107,6 +107,12 @@ public final class ConfigLoader {
         boolean freeFlight = bool("free_flight", d.freeFlight());
         return new Config(debug, epsilon, displayScale, divider, width, height, depth, name, scene, threads,
                 shading, samples, minWeight, moveSpeed, turnSpeed, targetFps, limits, freeFlight, transport);
+    }
+
+    /** The key an image too large is refused at: the size where the file sets it, else the limit that the defaults break. */
+    private String sizeKey() {
+        return entries.containsKey("display_width") ? "display_width"
+                : entries.containsKey("display_height") ? "display_height" : "max_image_pixels";
     }
 
     private Limits limits(Limits d) throws InputException {

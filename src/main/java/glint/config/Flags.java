@@ -6,6 +6,7 @@ import glint.render.LightTransport;
 import glint.render.Shading;
 import glint.scene.RenderBlock;
 import java.util.List;
+import java.util.function.Consumer;
 
 /**
  * The command line's settings (--width, --height, --spp, --threads, --depth, --shading, --integrator); each is null
@@ -18,7 +19,7 @@ public record Flags(Integer width, Integer height, Integer samples, Integer thre
     /** No flag given. */
     public static final Flags NONE = new Flags(null, null, null, null, null, null, null);
 
-    /** Why the path integrator and the phong model do not go together. */
+    /** Why the path and bdpt integrators and the phong model do not go together. */
     public static final String PATH_NEEDS_COOK_TORRANCE = "the path and bdpt integrators need shading cook-torrance:"
             + " phong's coefficients are not a BSDF a path can sample (use --integrator whitted with phong)";
 
@@ -33,23 +34,89 @@ public record Flags(Integer width, Integer height, Integer samples, Integer thre
     }
 
     /**
-     * The settings a scene is rendered with: the config, under the scene's {@code render:} block, under
-     * these flags.
+     * The settings a scene is rendered with: the defaults, under config.properties, under the scene's
+     * {@code render:} block, under these flags; each checked against the config's limits where it is set, so a
+     * refusal names the setting that broke a limit. Of two settings that cannot go together (the path
+     * integrator and phong), the higher-ranked one wins and the other yields, with a note; two of the same rank
+     * are an error.
      *
-     * @throws InputException a flag or a key of the block is out of the config's limits
+     * @throws InputException a flag or a key of the block is out of the config's limits, or two of the same
+     *                        rank conflict
      */
     public Config effective(Config config, RenderBlock render) throws InputException {
-        Config blocked = withBlock(config, render);
-        if (blocked.transport().physical() && blocked.shading() == Shading.PHONG && integrator == null
-                && shading == null) {
-            String key = render.integrator() != null ? "integrator" : "shading";
-            throw blockError(render, key, "render: " + PATH_NEEDS_COOK_TORRANCE);
-        }
-        return apply(blocked);
+        return effective(config, render, note -> { });
     }
 
-    /** The config with the block's keys put in (checked against the config's limits). */
+    /** {@link #effective(Config, RenderBlock)}, each note of a setting that yielded told to {@code notes}. */
+    public Config effective(Config config, RenderBlock render, Consumer<String> notes) throws InputException {
+        Config result = apply(withBlock(config, render, this));
+        Rank integratorRank = integrator != null ? Rank.FLAG : render.integrator() != null ? Rank.BLOCK : Rank.CONFIG;
+        Rank shadingRank = shading != null ? Rank.FLAG : render.shading() != null ? Rank.BLOCK : Rank.CONFIG;
+        if (!result.transport().physical() || result.shading() != Shading.PHONG) {
+            return result;
+        }
+        String physical = "integrator " + result.transport().key();
+        if (integratorRank == shadingRank) {
+            throw sameRankConflict(render, integratorRank, result.transport());
+        }
+        boolean shadingYields = shadingRank.compareTo(integratorRank) < 0;
+        notes.accept(shadingYields
+                ? yieldNote(render, shadingRank, "shading", "shading phong", integratorRank, physical,
+                        "rendering with cook-torrance")
+                : yieldNote(render, integratorRank, "integrator", physical, shadingRank, "shading phong",
+                        "rendering with whitted"));
+        return shadingYields ? result.withShading(Shading.COOK_TORRANCE) : result.withTransport(LightTransport.WHITTED);
+    }
+
+    /** The integrator of the two settings that conflict, "integrator path" or "integrator bdpt", as its key. */
+    private static String winnerOrYielding(String winner, String yielding) {
+        String integrator = winner.startsWith("integrator ") ? winner : yielding;
+        return integrator.substring("integrator ".length());
+    }
+
+    /** Who set a value, lowest first: the config (or the default), the scene's render: block, a flag. */
+    private enum Rank {
+        CONFIG, BLOCK, FLAG
+    }
+
+    private InputException sameRankConflict(RenderBlock render, Rank rank, LightTransport transport) {
+        return switch (rank) {
+            case FLAG -> new InputException("glint", 0, 0, "--integrator " + transport.key() + ": "
+                    + PATH_NEEDS_COOK_TORRANCE);
+            case BLOCK -> blockError(render, "integrator", "render: " + PATH_NEEDS_COOK_TORRANCE);
+            case CONFIG -> new InputException("glint", 0, 0, "the config: " + PATH_NEEDS_COOK_TORRANCE);
+        };
+    }
+
+    /** The note of a setting that yields to a higher-ranked one, at the place of the one that yields. */
+    private static String yieldNote(RenderBlock render, Rank yieldingRank, String key, String yielding, Rank winnerRank,
+                                    String winner, String outcome) {
+        String what = name(yieldingRank, yielding) + " yields to " + name(winnerRank, winner)
+                + " (the " + winnerOrYielding(winner, yielding) + " integrator needs cook-torrance); " + outcome;
+        if (yieldingRank == Rank.BLOCK) {
+            RenderBlock.Place at = render.place(key);
+            return new InputException(render.file(), at.line(), at.column(), "note: " + what).getMessage();
+        }
+        return "glint: note: " + what;
+    }
+
+    private static String name(Rank rank, String setting) {
+        return switch (rank) {
+            case FLAG -> "--" + setting;
+            case BLOCK -> "render: " + setting;
+            case CONFIG -> "the config's " + setting;
+        };
+    }
+
+    /**
+     * The config with the block's keys put in, each checked against the config's limits unless a flag sets
+     * the same value (then the flag's is the one checked).
+     */
     static Config withBlock(Config c, RenderBlock r) throws InputException {
+        return withBlock(c, r, NONE);
+    }
+
+    private static Config withBlock(Config c, RenderBlock r, Flags flags) throws InputException {
         if (r.shading() != null) {
             c = c.withShading(Shading.byKey(r.shading()));
         }
@@ -59,7 +126,7 @@ public record Flags(Integer width, Integer height, Integer samples, Integer thre
         if (r.samples() != null) {
             c = c.withSamples(r.samples());
         }
-        if (r.recursionMax() != null) {
+        if (r.recursionMax() != null && flags.depth() == null) {
             int max = c.limits().maxRecursion();
             if (r.recursionMax() > max) {
                 throw blockError(r, "recursion_max", "recursion_max in render must be at most " + max
@@ -71,7 +138,7 @@ public record Flags(Integer width, Integer height, Integer samples, Integer thre
             c = c.withMinWeight(r.minWeight());
         }
         if (r.width() != null) {
-            String tooLarge = c.limits().imageSizeProblem(r.width(), r.height());
+            String tooLarge = flags.setsSize() ? null : c.limits().imageSizeProblem(r.width(), r.height());
             if (tooLarge != null) {
                 throw blockError(r, "width", "width x height in render: " + tooLarge);
             }
@@ -85,7 +152,10 @@ public record Flags(Integer width, Integer height, Integer samples, Integer thre
         return new InputException(r.file(), at.line(), at.column(), problem);
     }
 
-    /** The config with these flags put in; a value out of range is an error naming the flag. */
+    /**
+     * The config with these flags put in; a value out of range or beyond the config's limits is an error naming
+     * the flag. Two settings that cannot go together are sorted out by {@link #effective}.
+     */
     public Config apply(Config c) throws InputException {
         if (width != null || height != null) {
             int w = width != null ? width : c.displayWidth();
@@ -129,10 +199,6 @@ public record Flags(Integer width, Integer height, Integer samples, Integer thre
                         + Suggestions.hint(integrator, LightTransport.KEYS));
             }
             c = c.withTransport(transport);
-        }
-        if (c.transport().physical() && c.shading() == Shading.PHONG) {
-            throw new InputException("glint", 0, 0, (integrator != null ? "--integrator " + integrator : "--shading phong")
-                    + ": " + PATH_NEEDS_COOK_TORRANCE);
         }
         return c;
     }

@@ -95,18 +95,18 @@ final class PathIntegrator extends Integrator {
             if (materials.emits(s.material) && (!pastLastHit || scene.lightOf[hit.primitive] >= 0)) {
                 bsdf.emitted(materials, s, f);
                 double k = emittedWeight;
-                sumR += throughputR * f.r * k;
-                sumG += throughputG * f.g * k;
-                sumB += throughputB * f.b * k;
+                sumR += bounded(throughputR * f.r * k);
+                sumG += bounded(throughputG * f.g * k);
+                sumB += bounded(throughputB * f.b * k);
             }
             if (pastLastHit) {
                 break;
             }
             if (!materials.isDelta(s.material)) {
                 DirectLight.sum(this, lights, materials, bsdf, s, -dx, -dy, -dz, true, light, f, lit);
-                sumR += throughputR * lit.r;
-                sumG += throughputG * lit.g;
-                sumB += throughputB * lit.b;
+                sumR += bounded(throughputR * lit.r);
+                sumG += bounded(throughputG * lit.g);
+                sumB += bounded(throughputB * lit.b);
             }
             // past the last hit only a light with a size is still met: the BSDF's half of its light
             if (vertex >= hitsLeft && (scene.lightsWithSize == 0 || materials.isDelta(s.material))) {
@@ -118,9 +118,9 @@ final class PathIntegrator extends Integrator {
                     || vertex >= hitsLeft && next.delta()) {
                 break;
             }
-            throughputR *= next.weightR;
-            throughputG *= next.weightG;
-            throughputB *= next.weightB;
+            throughputR = bounded(throughputR * next.weightR);
+            throughputG = bounded(throughputG * next.weightG);
+            throughputB = bounded(throughputB * next.weightB);
             if (vertex >= ROULETTE_FROM) {
                 double survive = Math.min(1, Math.max(throughputR, Math.max(throughputG, throughputB)));
                 if (!(random.single(dimension + 2) < survive)) {
@@ -139,15 +139,27 @@ final class PathIntegrator extends Integrator {
             if (!nearest(ox, oy, oz, dx, dy, dz, next.transmitted() ? s.skipFar : s.skipNear,
                     next.transmitted() ? s.insideFar : s.insideNear, hit)) {
                 escapedFrom(s, next, dx, dy, dz, vertex < hitsLeft);
-                sumR += throughputR * lit.r;
-                sumG += throughputG * lit.g;
-                sumB += throughputB * lit.b;
+                sumR += bounded(throughputR * lit.r);
+                sumG += bounded(throughputG * lit.g);
+                sumB += bounded(throughputB * lit.b);
                 break;
             }
             emittedWeight = next.delta() || scene.lightsWithSize == 0 ? 1
                     : weightOfLightMet(s, next, hit.primitive, dx, dy, dz);
         }
         radiance.set(sumR, sumG, sumB);
+    }
+
+    /**
+     * The most a path's weight, or one vertex's share of its light, holds: far above the largest float a frame
+     * stores and far below the largest double, so that the weight of a path through surfaces brighter than 1
+     * stays finite, and a vertex that gets no light (0) adds 0, never infinity x 0, NaN (as {@link Rgb} does for
+     * Whitted's integrator).
+     */
+    static final double LARGEST = 1e200;
+
+    private static double bounded(double value) {
+        return Math.min(value, LARGEST);
     }
 
     /**

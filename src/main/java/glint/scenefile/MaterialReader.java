@@ -46,6 +46,9 @@ final class MaterialReader {
         }
         Set<String> seen = new LinkedHashSet<>();
         for (var tuple : map.getValue()) {
+            if (YamlTree.isMergeKey(tuple.getKeyNode())) { // not a material named <<
+                throw yaml.mergeKeyError(tuple.getKeyNode(), "materials");
+            }
             String name = yaml.string(tuple.getKeyNode(), "a material name");
             if (types.containsKey(name)) {
                 throw yaml.error(tuple.getKeyNode(), "material name " + InputException.quote(name)

@@ -12,6 +12,7 @@ import java.nio.charset.StandardCharsets;
 import java.nio.file.Files;
 import java.nio.file.Path;
 import org.junit.jupiter.api.io.TempDir;
+import org.junit.jupiter.api.Test;
 import org.junit.jupiter.params.ParameterizedTest;
 import org.junit.jupiter.params.provider.ValueSource;
 
@@ -150,5 +151,32 @@ class FiniteImageTest {
         assertEquals(LARGEST, image[2]);
         // green: 0 of a matte surface in cook-torrance; in phong the white highlight, ks 0.01 of it
         assertEquals(model.equals("phong") ? LARGEST : 0f, image[1]);
+    }
+
+    /**
+     * A closed room whose walls (and a ball in it, which casts a shadow) reflect 1e30 times the light they
+     * get, at depth 64 in the path integrator: every bounce multiplies a path's weight by about 1e30, past a
+     * double after ten, and a vertex in the shadow adds nothing (infinity x 0 would be NaN); every pixel is
+     * the largest float, never black.
+     */
+    @Test
+    void aClosedRoomOfColour1e30IsTheLargestFloatInThePathIntegrator() throws IOException {
+        String wall = "material: {type: matte, color: [1e30, 1e30, 1e30]}}";
+        float[] image = render("""
+                camera: {position: [0, 1, -1.5], look_at: [0, 1, 0]}
+                lights:
+                  - {type: point, position: [0, 1.9, 1.5], intensity: 10}
+                objects:
+                  - {type: sphere, center: [0, 1, 0.8], radius: 0.6, WALL
+                  - {type: plane, point: [0, 0, 0], normal: [0, 1, 0], WALL
+                  - {type: plane, point: [0, 2, 0], normal: [0, -1, 0], WALL
+                  - {type: plane, point: [-2, 0, 0], normal: [1, 0, 0], WALL
+                  - {type: plane, point: [2, 0, 0], normal: [-1, 0, 0], WALL
+                  - {type: plane, point: [0, 0, -2], normal: [0, 0, 1], WALL
+                  - {type: plane, point: [0, 0, 2], normal: [0, 0, -1], WALL
+                """.replace("WALL", wall), PATH, 8, 6);
+        for (int i = 0; i < image.length; i++) {
+            assertEquals(LARGEST, image[i], "value " + i);
+        }
     }
 }

@@ -81,22 +81,53 @@ class IntegratorChoiceTest {
                 + " bdpt (expected one of: whitted, path, bdpt)", block.firstErrLine());
     }
 
+    /**
+     * The path integrator and phong do not go together: set at the same rank they are an error; set at two
+     * ranks, the higher one (flag, then render: block, then config) wins and the other yields with one note.
+     */
     @Test
-    void thePathIntegratorIsRefusedBesideThePhongModel() throws IOException {
+    void thePathIntegratorBesideThePhongModelIsAnErrorOnlyWhereBothHaveTheSameRank() throws IOException {
         String why = "the path and bdpt integrators need shading cook-torrance: phong's coefficients are not a BSDF a path"
                 + " can sample (use --integrator whitted with phong)";
         Result flags = still("", SCENE, "--integrator", "path", "--shading", "phong");
         assertEquals(2, flags.status());
         assertEquals("glint: --integrator path: " + why, flags.firstErrLine());
-        Result shadingFlag = still("integrator=path\n", SCENE, "--shading", "phong");
-        assertEquals("glint: --shading phong: " + why, shadingFlag.firstErrLine());
         Result config = still("shading=phong\nintegrator=path\n", SCENE);
         assertEquals(2, config.status());
         assertEquals(dir.resolve("config.properties") + ":2:1: " + why, config.firstErrLine());
-        Result block = still("shading=phong\n", SCENE + "render: {integrator: path}\n");
+        Result block = still("", SCENE + "render: {integrator: path, shading: phong}\n");
         assertEquals(2, block.status());
         assertEquals(dir.resolve("s.yaml") + ":3:22: render: " + why, block.firstErrLine());
+
+        Result shadingFlag = still("integrator=path\n", SCENE, "--shading", "phong");
+        assertEquals(0, shadingFlag.status(), shadingFlag.err());
+        assertEquals("glint: note: the config's integrator path yields to --shading phong (the path integrator needs "
+                + "cook-torrance); rendering with whitted\n", shadingFlag.err());
+        assertTrue(shadingFlag.out().contains(", phong, depth 16)"), shadingFlag.out());
+        Result overConfig = still("shading=phong\n", SCENE + "render: {integrator: path}\n");
+        assertEquals(0, overConfig.status(), overConfig.err());
+        assertEquals("glint: note: the config's shading phong yields to render: integrator path (the path integrator "
+                + "needs cook-torrance); rendering with cook-torrance\n", overConfig.err());
         Result mended = still("shading=phong\n", SCENE + "render: {integrator: path}\n", "--shading", "cook-torrance");
         assertEquals(0, mended.status(), mended.err());
+        assertEquals("", mended.err());
+    }
+
+    /** The shipped phong scene asks for phong in its block; --integrator path outranks it. */
+    @Test
+    void aFlagOutranksTheBlocksConflictingSettingWithOneNote() throws IOException {
+        Result r = still("", "render: {shading: phong}\n" + SCENE, "--integrator", "path");
+        assertEquals(0, r.status(), r.err());
+        assertEquals(dir.resolve("s.yaml") + ":1:19: note: render: shading phong yields to --integrator path "
+                + "(the path integrator needs cook-torrance); rendering with cook-torrance\n", r.err());
+        assertTrue(r.out().contains("cook-torrance, path, depth 16)"), r.out());
+    }
+
+    /** A flag is checked against the settings the block gives, not against the bare config. */
+    @Test
+    void aFlagIsNotRefusedForAConflictTheBlockRemoves() throws IOException {
+        Result r = still("shading=phong\n", "render: {shading: cook-torrance}\n" + SCENE, "--integrator", "path");
+        assertEquals(0, r.status(), r.err());
+        assertEquals("", r.err());
     }
 }

@@ -163,6 +163,25 @@ class InterruptTest {
     }
 
     /** Progress lines, then the one line that says the run was stopped: nothing else (no write failure, no trace). */
+    /** --bench stopped while its scene (100,000 spheres) is read or prepared: it says so, never nothing. */
+    @Test
+    void sigtermWhileABenchsSceneLoadsSaysSo() throws Exception {
+        StringBuilder scene = new StringBuilder("objects:\n");
+        for (int i = 0; i < 100_000; i++) {
+            scene.append("  - {type: sphere, center: [").append(i % 100).append(", ").append(i / 100 % 100)
+                    .append(", ").append(i / 10_000).append("], radius: 0.4}\n");
+        }
+        Path file = Files.writeString(dir.resolve("many.yaml"), scene);
+        Path config = Files.writeString(dir.resolve("empty.properties"), "");
+        List<String> err = stop("TERM", "", "--config", config.toString(), "--scene", file.toString(), "--bench", "1",
+                "--width", "64", "--height", "48", "--threads", "1");
+        assertEquals(143, Integer.parseInt(err.remove(err.size() - 1)), err.toString());
+        String last = err.get(err.size() - 1);
+        assertTrue(last.equals(Headless.INTERRUPTED_BENCH) || last.equals("glint: interrupted after 0 frames"),
+                err.toString());
+        assertTrue(err.get(0).matches("(reading|preparing) the scene\\.\\.\\..*"), err.toString());
+    }
+
     private static void assertStoppedWithOneLine(List<String> err) {
         assertEquals("glint: interrupted; no image written", err.get(err.size() - 1), err.toString());
         for (String line : err.subList(0, err.size() - 1)) {

@@ -2,9 +2,13 @@ package glint.app;
 
 import static org.junit.jupiter.api.Assertions.assertEquals;
 
+import java.io.IOException;
 import java.io.PrintWriter;
 import java.io.StringWriter;
+import java.nio.file.Files;
+import java.nio.file.Path;
 import org.junit.jupiter.api.Test;
+import org.junit.jupiter.api.io.TempDir;
 
 /** Mistyped options and stray words: each named, with the option meant, and status 2. */
 class UnknownArgumentsTest {
@@ -23,6 +27,14 @@ class UnknownArgumentsTest {
 
     private static String lines(String... lines) {
         return String.join(System.lineSeparator(), lines) + System.lineSeparator();
+    }
+
+    /** An argument beginning with @ is a word like any other, never a file read as more arguments. */
+    @Test
+    void anAtSignIsNotAFileOfArguments(@TempDir Path dir) throws IOException {
+        Path args = Files.writeString(dir.resolve("args"), "--version\n");
+        assertEquals(lines("glint: unexpected argument '@" + args + "' (each value follows its option, as in --spp 4)", TRY),
+                errOf("@" + args));
     }
 
     @Test

@@ -219,4 +219,25 @@ class WindowProcessTest {
         assertEquals(1, finish(), err::toString);
         assertNoStackTrace();
     }
+
+    /** A heap too small for the window (-Xmx8m): the program ends saying why, never in silence. */
+    @Test
+    void aWindowWithTooLittleMemorySaysWhyItEnds() throws Exception {
+        startDisplay();
+        Path config = Files.writeString(dir.resolve("window.properties"),
+                "display_width=320\ndisplay_height=240\nsamples=4\nthreads=2\n");
+        Path sceneFile = Files.writeString(dir.resolve("ball.yaml"), SCENE);
+        List<String> command = new ArrayList<>(Child.java("-Xmx8m"));
+        command.addAll(List.of("--config", config.toString(), "--scene", sceneFile.toString()));
+        ProcessBuilder builder = new ProcessBuilder(command).directory(dir.toFile())
+                .redirectOutput(ProcessBuilder.Redirect.DISCARD);
+        builder.environment().put("DISPLAY", ":" + display);
+        glint = builder.start();
+        glintErr = new BufferedReader(new InputStreamReader(glint.getErrorStream(), StandardCharsets.UTF_8));
+        assertEquals(1, finish(), err::toString);
+        assertEquals("glint: out of memory; render fewer pixels, samples or threads, or start Java with a larger -Xmx",
+                err.get(err.size() - 1), err::toString);
+        assertEquals(1, err.stream().filter(l -> l.contains("out of memory")).count(), err::toString);
+        assertNoStackTrace();
+    }
 }

@@ -347,6 +347,19 @@ class ConfigLoaderTest {
     }
 
     @Test
+    void aLimitLoweredBelowTheDefaultDepthLowersTheDepth() throws InputException {
+        assertEquals(8, parse("max_recursion=8\n").recursionMax());
+        assertEquals(3, parse("max_recursion=8\nrecursion_max=3\n").recursionMax());
+    }
+
+    @Test
+    void aLimitLoweredBelowTheDefaultImageIsRefusedAtTheLimit() {
+        assertError("config.properties:2:1: display_width x display_height: 800x600 is 0.5 megapixels; "
+                + "the largest image allowed is 0.0 megapixels (config key max_image_pixels)",
+                "threads=1\nmax_image_pixels=100\n");
+    }
+
+    @Test
     void recursionBeyondTheLimitIsRefused() {
         assertError("config.properties:2:1: recursion_max: expected a whole number from 1 to 10, got '11'",
                 "max_recursion=10\nrecursion_max=11\n");

@@ -44,6 +44,18 @@ class SceneLoaderErrorTest {
 
     // ---------------------------------------------------------------- unknown keys
 
+    /** A merge key among the named materials is refused at the <<, never read as a material named <<. */
+    @Test
+    void aMergeKeyInMaterialsIsRefusedAtIt() {
+        assertError("scenes/x.yaml:3:3: merge keys (<<) are not supported in materials; write the keys out (an alias "
+                + "of a whole mapping, such as *name, works)", """
+                materials:
+                  blue: {type: matte, color: [0, 0, 1]}
+                  <<: {red: {type: matte, color: [1, 0, 0]}}
+                objects: [{type: sphere, center: [0, 1, 0], radius: 1, material: red}]
+                """);
+    }
+
     @Test
     void unknownKeyInSphereNamesLineColumnAndSuggestion() {
         String text = """

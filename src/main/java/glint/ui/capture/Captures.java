@@ -58,9 +58,14 @@ public final class Captures implements AutoCloseable {
         if (stills.running()) {
             return stills.cancel();
         }
+        String refusal = view.stillRefusal();
+        if (!refusal.isEmpty()) { // its headless command would not give the image on screen
+            return "still not rendered: the headless command would not give this view: " + refusal;
+        }
         Camera printed = CameraBlock.asPrinted(view.controller().camera()); // the camera a pasted block gives
         return stills.start(StillRender.job(view.compiled().withCamera(printed), printed,
-                view.settings().still(view.scene(), size.fit(1)), source.scenePath(), screenshots, pfm), out, err);
+                view.settings().still(view.scene(), size.fit(1)), source.scenePath(), source.configFile(), screenshots,
+                pfm), out, err);
     }
 
     /** Whether a still is being rendered. */

@@ -2,7 +2,6 @@ package glint.ui.capture;
 
 import glint.config.Config;
 import glint.config.JarCommand;
-import glint.render.LightTransport;
 import glint.render.RenderScene;
 import glint.scene.Camera;
 import glint.still.StillRefused;
@@ -63,15 +62,17 @@ public final class StillRender implements AutoCloseable {
      * The job for a view: {@code still} holds the still's settings (size, samples, shading, depth, threads),
      * {@code scene} is compiled with them and seen from {@code printed}, the camera as key C prints it.
      */
-    static Job job(RenderScene scene, Camera printed, Config still, Path scenePath, Screenshots folder, boolean pfm) {
+    static Job job(RenderScene scene, Camera printed, Config still, Path scenePath, Path configFile,
+                   Screenshots folder, boolean pfm) {
         // named after the scene: phong-classic-20261202-153000-123.png, in the screenshots' folder
         Path png = folder.name(scenePath.getFileName().toString().replaceFirst("\\.[^.]*$", ""), ".png");
-        boolean path = still.transport().physical();
+        String config = configFile == null ? "" : " --config " + JarCommand.word(configFile.toString());
         String recipe = "still: the same image headless, with this camera in " + scenePath + ":\n"
-                + String.format(Locale.ROOT, "  %s --scene %s --width %d --height %d --spp %d"
-                        + " --shading %s%s --depth %d --output %s%n", JarCommand.java(), JarCommand.word(scenePath.toString()),
-                        still.displayWidth(), still.displayHeight(), still.samples(), still.shading().key(),
-                        path ? " --integrator " + still.transport().key() : "", still.recursionMax(), JarCommand.word(png.getFileName().toString()))
+                + String.format(Locale.ROOT, "  %s%s --scene %s --width %d --height %d --spp %d"
+                        + " --shading %s --integrator %s --depth %d --output %s%n", JarCommand.java(), config,
+                        JarCommand.word(scenePath.toString()), still.displayWidth(), still.displayHeight(),
+                        still.samples(), still.shading().key(), still.transport().key(), still.recursionMax(),
+                        JarCommand.word(png.getFileName().toString()))
                 + CameraBlock.yaml(printed);
         Path pfmFile = pfm ? png.resolveSibling(png.getFileName().toString().replaceFirst("\\.png$", ".pfm")) : null;
         return new Job(scene, still, png, pfmFile, StillRun.describe(still, false), recipe);

@@ -27,6 +27,7 @@ import glint.ui.view.SceneView;
 import glint.ui.view.StatusLine;
 import glint.ui.view.ViewSettings;
 import java.io.PrintWriter;
+import java.nio.file.Path;
 import java.util.concurrent.CountDownLatch;
 import java.util.concurrent.TimeUnit;
 
@@ -66,6 +67,8 @@ public final class Engine implements Runnable, SceneWatcher.Listener {
     private final Clock clock;
     private final PrintWriter err;
     private final CountDownLatch finished = new CountDownLatch(1);
+    /** Counted down when the loop is asked to end, or ends by itself. */
+    private final CountDownLatch stopping = new CountDownLatch(1);
 
     private final StatusLine status;
     private final FrameSize size;
@@ -79,6 +82,10 @@ public final class Engine implements Runnable, SceneWatcher.Listener {
 
     private volatile boolean running = true;
     private volatile boolean failed;
+    /** Memory held back so that, when the heap is full, there is room to say so. */
+    private volatile byte[] reserve = new byte[64 * 1024];
+    /** Turns of the loop begun so far. */
+    private volatile long turns;
     /** What standard error says if the loop's end cancels a still under way. */
     private volatile String stillCancelled = "glint: still cancelled, nothing written (the window closed)";
 
@@ -109,7 +116,7 @@ public final class Engine implements Runnable, SceneWatcher.Listener {
                 frames::lastImage, err);
         this.reloads = new Reloads(source, view, status, this::configure, input::signal);
         this.commands = new Commands(view, status, captures, new SceneBrowser(source, reloads, view, status), reloads,
-                () -> running = false);
+                this::stop);
         this.lastMotion = clock.nanoTime() - MOTION_HOLD_NANOS - 1;
         source.limits(config.limits().scene());
         view.show(scene, true);
@@ -149,7 +156,21 @@ public final class Engine implements Runnable, SceneWatcher.Listener {
     /** Asks the loop to end (any thread); it ends after the frame in progress. */
     public void stop() {
         running = false;
+        stopping.countDown();
         input.signal();
+    }
+
+    /** Turns of the loop begun so far (any thread): one that does not change is stuck in a frame. */
+    public long turns() {
+        return turns;
+    }
+
+    /**
+     * Waits until the loop is asked to end ({@link #stop}, Esc) or has ended by itself, however long the frame
+     * under way takes.
+     */
+    public void awaitStopping() throws InterruptedException {
+        stopping.await();
     }
 
     /** The program is being stopped by a signal (any thread): the loop ends, and says so if a still is lost. */
@@ -194,6 +215,18 @@ public final class Engine implements Runnable, SceneWatcher.Listener {
         reloads.failed(problem);
     }
 
+    /** The watcher's thread: a version of {@code file} loaded; shown unless another scene is open by then. */
+    @Override
+    public void loaded(Path file, Scene newScene) {
+        reloads.loaded(file, newScene);
+    }
+
+    /** The watcher's thread: a version of {@code file} does not load; said unless another scene is open by then. */
+    @Override
+    public void failed(Path file, InputException problem) {
+        reloads.failed(file, problem);
+    }
+
     // ---- the loop ----
 
     @Override
@@ -204,7 +237,7 @@ public final class Engine implements Runnable, SceneWatcher.Listener {
                 try {
                     wait = step();
                 } catch (RuntimeException | OutOfMemoryError e) {
-                    maker.failed(e); // shown and logged once; the frame is tried again
+                    failedFrame(e); // shown and logged once; the frame is tried again
                     wait = RETRY_NANOS;
                 }
                 if (running && wait > 0) {
@@ -213,11 +246,16 @@ public final class Engine implements Runnable, SceneWatcher.Listener {
             }
         } catch (InterruptedException e) {
             Thread.currentThread().interrupt();
+        } catch (OutOfMemoryError e) {
+            failed = true;
+            reserve = null;
+            throw e; // said once by the program's handler of every thread's errors, with the others
         } catch (Error e) {
             failed = true;
             err.println("glint: the window's engine stopped: " + e);
         } finally {
             running = false;
+            stopping.countDown();
             if (captures.stop()) { // a still under way is cancelled, and its hidden files deleted, before the end
                 err.println(stillCancelled);
                 err.flush();
@@ -228,10 +266,23 @@ public final class Engine implements Runnable, SceneWatcher.Listener {
     }
 
     /**
+     * A frame failed. When memory runs out even while saying so, the engine goes on (the frame is tried again)
+     * and the program's handler of errors says it once when a thread ends on it.
+     */
+    private void failedFrame(Throwable e) {
+        try {
+            maker.failed(e);
+        } catch (OutOfMemoryError again) {
+            reserve = null; // room for the next try, and to say it
+        }
+    }
+
+    /**
      * One turn of the loop; returns how long to wait for input before the next one (0: go on at
      * once, {@link #IDLE}: until something happens).
      */
     public long step() {
+        turns++;
         captures.stillNews().ifPresent(status::note); // a still's progress, or its end
         long wait = stepOnce();
         return captures.stillRunning() ? Math.min(wait, StillRender.POLL_NANOS) : wait; // its progress is shown

@@ -5,6 +5,7 @@ import glint.input.InputException;
 import glint.scene.Scene;
 import glint.ui.view.SceneView;
 import glint.ui.view.StatusLine;
+import java.nio.file.Path;
 import java.util.concurrent.atomic.AtomicReference;
 import java.util.function.Consumer;
 
@@ -20,11 +21,11 @@ public final class Reloads implements SceneWatcher.Listener {
     }
 
     /** It loaded. */
-    record Loaded(Scene scene) implements Change {
+    record Loaded(Path file, Scene scene) implements Change {
     }
 
     /** It did not load, and why. */
-    record Failed(InputException problem) implements Change {
+    record Failed(Path file, InputException problem) implements Change {
     }
 
     private final SceneSource source;
@@ -46,27 +47,49 @@ public final class Reloads implements SceneWatcher.Listener {
         this.wake = wake;
     }
 
+    /** A version of the file shown now loaded. */
     @Override
     public void loaded(Scene newScene) {
-        pending.set(new Loaded(newScene));
+        loaded(source.scenePath(), newScene);
+    }
+
+    /** A version of the file shown now does not load. */
+    @Override
+    public void failed(InputException problem) {
+        failed(source.scenePath(), problem);
+    }
+
+    @Override
+    public void loaded(Path file, Scene newScene) {
+        pending.set(new Loaded(file, newScene));
         wake.run();
     }
 
     @Override
-    public void failed(InputException problem) {
-        pending.set(new Failed(problem));
+    public void failed(Path file, InputException problem) {
+        pending.set(new Failed(file, problem));
         wake.run();
     }
 
-    /** Shows the change the watcher handed over since the last call, if any. */
+    /**
+     * Shows the change the watcher handed over since the last call, if any, unless it is of a file the window
+     * no longer shows (a load that ended after Page Down).
+     */
     public void takePending() {
         Change change = pending.getAndSet(null);
+        if (change != null && !fileOf(change).equals(source.scenePath())) {
+            return;
+        }
         if (change instanceof Loaded loaded) {
             view.show(loaded.scene(), false);
             status.note("reloaded " + source.scenePath());
         } else if (change instanceof Failed failed) {
             status.error(failed.problem().getMessage());
         }
+    }
+
+    private static Path fileOf(Change change) {
+        return change instanceof Loaded loaded ? loaded.file() : ((Failed) change).file();
     }
 
     /** Drops a change the watcher saw in a file the window no longer shows (another scene was opened). */

@@ -20,6 +20,7 @@ public final class SceneSource {
     private final ConfigSource configSource;
     private volatile SceneLimits limits = SceneLimits.DEFAULT;
     private final Flags flags;
+    private final Path configFile;
 
     public SceneSource(Path scenePath, ConfigSource configSource) {
         this(scenePath, configSource, Flags.NONE);
@@ -27,9 +28,20 @@ public final class SceneSource {
 
     /** A source whose scenes are seen with the command line's {@code flags} above their render: blocks. */
     public SceneSource(Path scenePath, ConfigSource configSource, Flags flags) {
+        this(scenePath, configSource, flags, null);
+    }
+
+    /** A source whose config is read from {@code configFile} (null: none, the defaults). */
+    public SceneSource(Path scenePath, ConfigSource configSource, Flags flags, Path configFile) {
         this.scenePath = scenePath;
         this.configSource = configSource;
         this.flags = flags;
+        this.configFile = configFile;
+    }
+
+    /** The config file the window reads, for the headless command of a still; null when it runs on the defaults. */
+    public Path configFile() {
+        return configFile;
     }
 
     /** The command line's settings, which rank above a scene's render: block. */
@@ -57,7 +69,12 @@ public final class SceneSource {
     }
 
     public Scene loadScene() throws InputException {
-        return SceneLoader.load(scenePath, limits);
+        return loadScene(scenePath);
+    }
+
+    /** Reads {@code file} as the window's scene, within these limits. */
+    public Scene loadScene(Path file) throws InputException {
+        return SceneLoader.load(file, limits);
     }
 
     public Config loadConfig() throws InputException {

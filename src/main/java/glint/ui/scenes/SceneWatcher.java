@@ -41,6 +41,16 @@ public final class SceneWatcher implements AutoCloseable {
         void loaded(Scene scene);
 
         void failed(InputException error);
+
+        /** A version of {@code file} loaded; a listener that shows another file by now drops it. */
+        default void loaded(Path file, Scene scene) {
+            loaded(scene);
+        }
+
+        /** A version of {@code file} does not load; a listener that shows another file by now drops it. */
+        default void failed(Path file, InputException error) {
+            failed(error);
+        }
     }
 
     /** What runs the watcher's reads: a thread of its own, or a test that says when a period has passed. */
@@ -134,11 +144,11 @@ public final class SceneWatcher implements AutoCloseable {
         Scene scene = null;
         InputException problem = null;
         try {
-            scene = source.loadScene();
+            scene = source.loadScene(file); // the file read, even if the window has opened another since
         } catch (InputException e) {
             problem = e;
         } catch (OutOfMemoryError e) { // reported like any problem of this version, once; the last good scene stays
-            problem = new InputException(source.scenePath().toString(), 0, 0, "not loaded: out of memory ("
+            problem = new InputException(file.toString(), 0, 0, "not loaded: out of memory ("
                     + e.getMessage() + "); start Java with a larger -Xmx");
         }
         Object stampAfter = stamp();
@@ -151,9 +161,9 @@ public final class SceneWatcher implements AutoCloseable {
         }
         last = now;
         if (problem == null) {
-            listener.loaded(scene);
+            listener.loaded(file, scene);
         } else {
-            listener.failed(problem);
+            listener.failed(file, problem);
         }
     }
 

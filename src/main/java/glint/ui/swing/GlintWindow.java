@@ -85,7 +85,7 @@ public final class GlintWindow {
         Scene scene;
         try {
             scene = source.loadScene();
-            source.flags().effective(config, scene.render()); // a block beyond the limits: no window
+            source.flags().effective(config, scene.render(), err::println); // a block beyond the limits: no window
         } catch (InputException e) {
             watcher.close();
             throw e;
@@ -107,7 +107,7 @@ public final class GlintWindow {
         engine.printTo(out);
         GlintWindow window = new GlintWindow(frame[0], display[0], engine, input, watcher);
         onEventThread(() -> {
-            InputListener.attach(input, display[0]);
+            InputListener.attach(input, display[0], () -> quitIfStuck(engine)); // Esc, even while a frame never ends
             frame[0].addWindowListener(new WindowAdapter() {
                 @Override
                 public void windowClosing(WindowEvent e) {
@@ -150,13 +150,36 @@ public final class GlintWindow {
      */
     public int awaitExit() throws InterruptedException {
         try {
-            engineThread.join();
+            engine.awaitStopping();
+            engineThread.join(QUIT_WAIT_MILLIS); // a frame that never ends is left to the end of the program
         } finally {
             close();
         }
-        engine.awaitFinished(10, TimeUnit.SECONDS);
+        engine.awaitFinished(QUIT_WAIT_MILLIS, TimeUnit.MILLISECONDS);
         return engine.hasFailed() ? 1 : 0;
     }
+
+    /**
+     * Esc on the event thread: the engine quits at its next turn (or cancels a still), unless it takes no turn
+     * within {@link #QUIT_WAIT_MILLIS}, stuck in a frame; then it is told to stop, and the window ends.
+     */
+    private static void quitIfStuck(Engine engine) {
+        long turn = engine.turns();
+        javax.swing.Timer check = new javax.swing.Timer((int) QUIT_WAIT_MILLIS, e -> {
+            if (engine.turns() == turn) {
+                engine.stop();
+            }
+        });
+        check.setRepeats(false);
+        check.start();
+    }
+
+    /**
+     * How long the window waits, once the user quit or closed it, for the frame under way to end: a frame may
+     * never end (a room of mirrors at depth 64 without pruning), and the render threads do not keep the
+     * program alive.
+     */
+    static final long QUIT_WAIT_MILLIS = 500;
 
     /**
      * The program is being stopped by a signal (a shutdown hook's thread): the engine ends, cancelling a

@@ -26,19 +26,24 @@ final class InputListener {
 
     private final InputState input;
     private final Display display;
+    private final Runnable quit;
     private final Set<Integer> commandKeysDown = new HashSet<>(); // event thread only
     private int lastX;
     private int lastY;
     private boolean orbiting; // a drag that began with Ctrl or the middle button
 
-    private InputListener(InputState input, Display display) {
+    private InputListener(InputState input, Display display, Runnable quit) {
         this.input = input;
         this.display = display;
+        this.quit = quit;
     }
 
-    /** Listens to the display's keys, mouse, focus and size. */
-    static void attach(InputState input, Display display) {
-        InputListener l = new InputListener(input, display);
+    /**
+     * Listens to the display's keys, mouse, focus and size; {@code quit} is told of Esc besides the engine,
+     * so that the window ends even while the engine is stuck in a frame.
+     */
+    static void attach(InputState input, Display display, Runnable quit) {
+        InputListener l = new InputListener(input, display, quit);
         display.addKeyListener(l.keys());
         MouseAdapter mouse = l.mouse();
         display.addMouseListener(mouse);
@@ -160,6 +165,10 @@ final class InputListener {
         switch (action) {
             case TOGGLE_OVERLAY -> display.toggleOverlay();
             case TOGGLE_HELP -> display.toggleHelp();
+            case QUIT -> {
+                input.command(action);
+                quit.run();
+            }
             default -> input.command(action);
         }
     }

@@ -161,6 +161,14 @@ public final class SceneView {
     }
 
     /** The camera moved or jumped (a motion, Home, a view, L): the view is drawn anew. */
+    /**
+     * Why a still of the view would not be what the headless command it prints gives (the scene file does not
+     * load as it is on screen, or its render: block was left out, beyond the config's limits), or empty.
+     */
+    public String stillRefusal() {
+        return status.error();
+    }
+
     private void cameraMoved() {
         cameraNow = controller.camera();
         invalidate();

@@ -46,6 +46,13 @@ public final class ViewSettings {
         if (seen.transport() != config.transport()) {
             transport = seen.transport();
         }
+        if (shading == Shading.PHONG && transport.physical()) { // the scene's new value wins
+            if (seen.shading() != config.shading()) {
+                transport = LightTransport.WHITTED;
+            } else {
+                shading = Shading.COOK_TORRANCE;
+            }
+        }
         config = seen;
     }
 

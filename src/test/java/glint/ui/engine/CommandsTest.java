@@ -220,6 +220,23 @@ class CommandsTest {
         assertEquals("opened " + file + " (1 of 2)", status.message());
     }
 
+    /** The watcher was loading a new save of a.yaml when Page Down opened b.yaml: that load is dropped. */
+    @Test
+    void aLoadOfTheOldSceneThatEndsAfterPageDownIsDropped() throws Exception {
+        Path b = dir.resolve("b.yaml");
+        Files.writeString(b, TestScenes.sphere(0.9, 0.1, 0.1));
+        Scene oldSave = source.loadScene(file);
+        run(Action.NEXT_SCENE);
+        Scene opened = view.scene();
+        reloads.loaded(file, oldSave); // the load that was under way ends now
+        reloads.takePending();
+        assertSame(opened, view.scene());
+        reloads.failed(file, new InputException(file.toString(), 1, 1, "broken"));
+        reloads.takePending();
+        assertEquals("", status.error(), "nor is a failure of the old file shown");
+        assertEquals("opened " + b + " (2 of 2)", status.message());
+    }
+
     @Test
     void aNeighbourThatDoesNotLoadSaysWhyAndKeepsTheView() throws Exception {
         Files.writeString(dir.resolve("b.yaml"), "camera: [\n");

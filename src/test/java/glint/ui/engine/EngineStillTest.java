@@ -145,6 +145,54 @@ class EngineStillTest {
         assertEquals(W, PfmReader.read(pfm).width());
     }
 
+    /**
+     * The window runs on a config file whose integrator is path, and key I brought Whitted's: the command names
+     * the config file and the integrator on screen, and writes the same bytes.
+     */
+    @Test
+    void theCommandNamesTheConfigFileAndTheIntegratorKeyIChose() throws Exception {
+        Path configFile = Files.writeString(dir.resolve("path.properties"),
+                "integrator=path\ndisplay_width=" + W + "\ndisplay_height=" + H + "\nsamples=4\nthreads=2\n");
+        Config config = glint.config.ConfigLoader.load(configFile);
+        engine.close();
+        SceneSource source = new SceneSource(sceneFile, () -> config, glint.config.Flags.NONE, configFile);
+        engine = new Engine(config, source.loadScene(), source, input, presenter, new Screenshots(shots), clock,
+                new PrintWriter(err, true));
+        engine.printTo(new PrintWriter(out, true));
+        input.command(Action.TOGGLE_INTEGRATOR);
+        engine.step();
+        input.command(Action.RENDER_STILL);
+        stepUntil("still: wrote ");
+        Path png = files().get(0);
+        String printed = out.toString();
+        Matcher command = Pattern.compile("java -jar target/glint.jar (.*) --output \\S+\n").matcher(printed);
+        assertTrue(command.find(), printed);
+        assertTrue(command.group(1).startsWith("--config " + configFile + " --scene "), command.group(1));
+        assertTrue(command.group(1).contains(" --integrator whitted "), command.group(1));
+        String block = printed.substring(printed.indexOf("camera:\n"));
+        String scene = Files.readString(sceneFile);
+        Path pasted = Files.writeString(dir.resolve("pasted.yaml"), block + scene.substring(scene.indexOf('\n') + 1));
+        Path headless = dir.resolve("headless.png");
+        String args = command.group(1).replace("--scene " + sceneFile, "--scene " + pasted) + " --output " + headless;
+        StringWriter mainErr = new StringWriter();
+        assertEquals(0, Main.run(args.split(" "), new PrintWriter(new StringWriter(), true),
+                new PrintWriter(mainErr, true)), mainErr::toString);
+        assertArrayEquals(Files.readAllBytes(headless), Files.readAllBytes(png), "the window's still and the headless one");
+    }
+
+    /** After Page Down onto a scene that does not load, the view is the old scene's: no still, and why. */
+    @Test
+    void aStillIsRefusedWhileTheSceneFileDoesNotLoadAsShown() throws Exception {
+        Files.writeString(dir.resolve("broken.yaml"), "camera: [\n");
+        input.command(Action.NEXT_SCENE);
+        engine.step();
+        input.command(Action.RENDER_STILL);
+        engine.step();
+        assertTrue(message().startsWith("still not rendered: the headless command would not give this view: "
+                + dir.resolve("broken.yaml") + ":"), message());
+        assertEquals(List.of(), files());
+    }
+
     @Test
     void theSameKeyOrEscCancelsAndNothingIsWritten() throws Exception {
         open(4096); // long enough to be cancelled while it runs, even on a loaded machine

@@ -2,10 +2,14 @@ package glint.ui.swing;
 
 import static org.junit.jupiter.api.Assertions.assertEquals;
 import static org.junit.jupiter.api.Assertions.assertFalse;
+import static org.junit.jupiter.api.Assertions.assertTimeoutPreemptively;
 import static org.junit.jupiter.api.Assertions.assertTrue;
 
 import glint.config.Config;
 import glint.config.Limits;
+import glint.image.FrameBuffer;
+import glint.render.RenderScene;
+import glint.render.Tracer;
 import glint.ui.FakeClock;
 import glint.ui.FaultyTrace;
 import glint.ui.Poll;
@@ -18,11 +22,17 @@ import glint.ui.screen.FrameStats;
 import glint.ui.screen.OverlayText;
 import glint.ui.screen.ShownFrame;
 import java.awt.GraphicsEnvironment;
+import java.awt.Robot;
+import java.awt.event.KeyEvent;
+import java.awt.event.WindowEvent;
 import java.io.PrintWriter;
 import java.io.StringWriter;
 import java.nio.file.Files;
 import java.nio.file.Path;
+import java.time.Duration;
 import java.util.List;
+import java.util.concurrent.CountDownLatch;
+import java.util.concurrent.TimeUnit;
 import javax.swing.SwingUtilities;
 import org.junit.jupiter.api.AfterEach;
 import org.junit.jupiter.api.Test;
@@ -117,5 +127,64 @@ class WindowFaultTest {
         assertTrue(OverlayText.lines(s).contains(new OverlayText.Line(
                 "window too large: rendered at most 100,000 pixels (max_image_pixels)", OverlayText.Tone.NOTE)));
         assertTrue(err.toString().contains("glint: the window is " + (W + 240) + "x" + (H + 180)), err.toString());
+    }
+
+    /** A frame that never ends (a room of mirrors at depth 64 without pruning): it ends when the test says. */
+    private static final class EndlessTrace implements FrameRenderer.TraceCall {
+        final CountDownLatch entered = new CountDownLatch(1);
+        final CountDownLatch release = new CountDownLatch(1);
+
+        @Override
+        public void trace(Tracer tracer, RenderScene scene, FrameBuffer target, int samples, int pass, int count,
+                          int divider) {
+            entered.countDown();
+            try {
+                release.await();
+            } catch (InterruptedException e) {
+                Thread.currentThread().interrupt();
+            }
+        }
+    }
+
+    private void quitWhileAFrameNeverEnds(Runnable quit) throws Exception {
+        EndlessTrace endless = new EndlessTrace();
+        Config config = Config.defaults().withSize(W, H).withSamples(4).withThreads(2);
+        try {
+            open(config, new WindowHooks(endless, p -> p));
+            assertTrue(endless.entered.await(20, TimeUnit.SECONDS), "the frame began");
+            quit.run();
+            assertTimeoutPreemptively(Duration.ofSeconds(10), () -> assertEquals(0, window.awaitExit()),
+                    () -> "the window ended; err: " + err);
+            Poll.until(() -> !window.frame().isDisplayable(), 5_000, () -> "the window disposed; err: " + err);
+            window = null;
+        } finally {
+            endless.release.countDown();
+        }
+    }
+
+    @Test
+    void theCloseButtonEndsTheWindowWhileAFrameNeverEnds() throws Exception {
+        quitWhileAFrameNeverEnds(() -> {
+            try {
+                SwingUtilities.invokeAndWait(() -> window.frame().dispatchEvent(
+                        new WindowEvent(window.frame(), WindowEvent.WINDOW_CLOSING)));
+            } catch (Exception e) {
+                throw new AssertionError(e);
+            }
+        });
+    }
+
+    @Test
+    void escEndsTheWindowWhileAFrameNeverEnds() throws Exception {
+        quitWhileAFrameNeverEnds(() -> {
+            try {
+                Robot robot = new Robot();
+                Poll.clickToFocus(window, robot, () -> "the keyboard focus; err: " + err);
+                robot.keyPress(KeyEvent.VK_ESCAPE);
+                robot.keyRelease(KeyEvent.VK_ESCAPE);
+            } catch (Exception e) {
+                throw new AssertionError(e);
+            }
+        });
     }
 }

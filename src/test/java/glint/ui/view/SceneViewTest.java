@@ -88,6 +88,15 @@ class SceneViewTest {
         assertEquals(LightTransport.WHITTED, view.settings().transport(), "and its integrator");
     }
 
+    /** Key I chose the path; a new save of the scene asks for phong: the scene's new value wins, Whitted comes back. */
+    @Test
+    void aReloadNeverLeavesThePathBesidePhong() throws InputException {
+        view.toggleTransport();
+        view.show(SceneLoader.parse("a.yaml", "render: {shading: phong}\n" + TestScenes.sphere(0.1, 0.2, 0.3)), false);
+        assertEquals(Shading.PHONG, view.settings().shading());
+        assertEquals(LightTransport.WHITTED, view.settings().transport());
+    }
+
     @Test
     void aNewWindowSizeStartsTheFrameOverWithinTheSettingsBudget() {
         assertLeavesAsItWas("the same size", v -> v.resized(32, 24));
