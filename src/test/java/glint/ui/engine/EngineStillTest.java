@@ -168,7 +168,7 @@ class EngineStillTest {
         Matcher command = Pattern.compile("java -jar target/glint.jar (.*) --output \\S+\n").matcher(printed);
         assertTrue(command.find(), printed);
         assertTrue(command.group(1).startsWith("--config " + configFile + " --scene "), command.group(1));
-        assertTrue(command.group(1).contains(" --integrator whitted "), command.group(1));
+        assertTrue(command.group(1).contains(" --integrator bdpt "), command.group(1)); // I: path, then bdpt
         String block = printed.substring(printed.indexOf("camera:\n"));
         String scene = Files.readString(sceneFile);
         Path pasted = Files.writeString(dir.resolve("pasted.yaml"), block + scene.substring(scene.indexOf('\n') + 1));
