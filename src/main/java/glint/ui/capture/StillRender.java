@@ -2,6 +2,7 @@ package glint.ui.capture;
 
 import glint.config.Config;
 import glint.config.JarCommand;
+import glint.image.ViewTransform;
 import glint.render.LightTransport;
 import glint.render.RenderScene;
 import glint.scene.Camera;
@@ -69,9 +70,11 @@ public final class StillRender implements AutoCloseable {
         boolean path = still.transport() == LightTransport.PATH;
         String recipe = "still: the same image headless, with this camera in " + scenePath + ":\n"
                 + String.format(Locale.ROOT, "  %s --scene %s --width %d --height %d --spp %d"
-                        + " --shading %s%s --depth %d --output %s%n", JarCommand.java(), JarCommand.word(scenePath.toString()),
-                        still.displayWidth(), still.displayHeight(), still.samples(), still.shading().key(),
-                        path ? " --integrator path" : "", still.recursionMax(), JarCommand.word(png.getFileName().toString()))
+                        + " --shading %s%s --depth %d --exposure %s --tone %s --output %s%n", JarCommand.java(),
+                        JarCommand.word(scenePath.toString()), still.displayWidth(), still.displayHeight(), still.samples(),
+                        still.shading().key(), path ? " --integrator path" : "", still.recursionMax(),
+                        ViewTransform.stops(still.view().exposure()), still.view().tone().key(),
+                        JarCommand.word(png.getFileName().toString()))
                 + CameraBlock.yaml(printed);
         Path pfmFile = pfm ? png.resolveSibling(png.getFileName().toString().replaceFirst("\\.png$", ".pfm")) : null;
         return new Job(scene, still, png, pfmFile, StillRun.describe(still, false), recipe);

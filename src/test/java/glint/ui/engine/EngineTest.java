@@ -112,7 +112,7 @@ class EngineTest {
         try (Tracer tracer = new Tracer(2)) {
             tracer.render(RenderScene.compile(scene, config.renderSettings()), still, 4, 0, 8);
         }
-        BufferedImage expected = ImageWriter.toImage(still);
+        BufferedImage expected = ImageWriter.toImage(still, config.view()); // the same view transform as a PNG's
         int differing = 0;
         for (int y = 0; y < H; y++) {
             for (int x = 0; x < W; x++) {
