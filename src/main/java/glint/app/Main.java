@@ -19,7 +19,9 @@ import picocli.CommandLine.Option;
 
 /** The command line (README.md, "Using it"): parses arguments, loads the config, hands over to a mode. */
 @Command(name = "glint", mixinStandardHelpOptions = true, version = "Glint 0.1.0",
-        description = "Interactive Whitted ray tracer for spheres and planes.%n"
+        description = "Interactive ray tracer for spheres and planes.%n"
+                + "Fly through a scene in the window with Whitted's integrator (the default);%n"
+                + "render stills with the path tracer (--integrator path): light that bounces.%n"
                 + "Without --output or --bench, opens the window on the scene.",
         sortOptions = false)
 public final class Main implements Callable<Integer> {
@@ -60,6 +62,14 @@ public final class Main implements Callable<Integer> {
     @Option(names = "--integrator", paramLabel = "NAME", description = "whitted (direct light, mirrors, glass) or path (light that bounces)")
     String integrator;
 
+    @Option(names = "--exposure", paramLabel = "STOPS",
+            description = "brighter (+1 doubles the light) or darker (-1 halves it) in PNGs and the window; default 0")
+    Double exposure;
+
+    @Option(names = "--tone", paramLabel = "CURVE",
+            description = "neutral (highlights roll off to white, the default) or standard (clamped at white)")
+    String tone;
+
     @Option(names = "--bench", paramLabel = "N", description = "render N frames of the still camera headless and time them")
     Integer bench;
 
@@ -93,7 +103,9 @@ public final class Main implements Callable<Integer> {
         main.err = err;
         CommandLine cli = new CommandLine(main);
         cli.setExpandAtFiles(false); // --scene @s.yaml is the file '@s.yaml', never a file of arguments
-        cli.getCommandSpec().usageMessage().footer(HelpFooter.text());
+        // printed as it is: the parser would break a long jar path's commands in the middle of a word
+        cli.getCommandSpec().usageMessage().sectionMap()
+                .put(CommandLine.Model.UsageMessageSpec.SECTION_KEY_FOOTER, help -> HelpFooter.text());
         cli.setOut(out);
         cli.setErr(err);
         cli.setExecutionStrategy(parsed -> { // --help and --version, printed by the parser, can fail too
@@ -104,6 +116,7 @@ public final class Main implements Callable<Integer> {
             }
         });
         cli.registerConverter(Integer.class, Main::wholeNumber);
+        cli.registerConverter(Double.class, Main::decimalNumber);
         cli.registerConverter(Path.class, Main::fileName);
         cli.setParameterExceptionHandler((e, a) -> {
             if (e instanceof CommandLine.UnmatchedArgumentException unmatched) {
@@ -200,6 +213,15 @@ public final class Main implements Callable<Integer> {
             throw new CommandLine.TypeConversionException(InputException.quote(text) + " is too large");
         }
         return (int) n;
+    }
+
+    /** An option's decimal number: ASCII digits, a point, an exponent; no hex, no NaN or Infinity. */
+    static Double decimalNumber(String text) {
+        if (!text.matches("[-+]?([0-9]{1,10}(\\.[0-9]{0,10})?|\\.[0-9]{1,10})([eE][-+]?[0-9]{1,3})?")) {
+            throw new CommandLine.TypeConversionException(InputException.quote(text)
+                    + " is not a number written with the digits 0-9 (as 1.5 or -2)");
+        }
+        return Double.parseDouble(text);
     }
 
     /** An option's file name; one the platform cannot take is refused in words. */
@@ -323,7 +345,7 @@ public final class Main implements Callable<Integer> {
 
     /** The command line's settings, which rank above the scene's render: block and the config. */
     private Flags flags() {
-        return new Flags(width, height, spp, threads, depth, shading, integrator);
+        return new Flags(width, height, spp, threads, depth, shading, integrator, exposure, tone);
     }
 
     private Config overrides(Config c) throws InputException {

@@ -1,5 +1,6 @@
 package glint.config;
 
+import glint.image.ViewTransform;
 import glint.render.LightTransport;
 import glint.render.RenderSettings;
 import glint.render.Shading;
@@ -30,12 +31,25 @@ import java.util.function.Consumer;
  * @param freeFlight     window: the camera turns about its own axes, pitch unbounded, instead of
  *                       keeping the horizon level
  * @param transport      the integrator: Whitted or path tracing (key {@code integrator})
+ * @param view           the view transform of the 8-bit images: exposure and tone curve (keys {@code exposure},
+ *                       {@code tone})
  */
 public record Config(boolean debug, double epsilon, double displayScale, int screenDivider,
                      int displayWidth, int displayHeight, int recursionMax, String name,
                      String scene, int threads, Shading shading, int samples, double minWeight,
                      double moveSpeed, double turnSpeed, double targetFps, Limits limits,
-                     boolean freeFlight, LightTransport transport) {
+                     boolean freeFlight, LightTransport transport, ViewTransform view) {
+
+    /** A config of the default view transform. */
+    public Config(boolean debug, double epsilon, double displayScale, int screenDivider,
+                  int displayWidth, int displayHeight, int recursionMax, String name,
+                  String scene, int threads, Shading shading, int samples, double minWeight,
+                  double moveSpeed, double turnSpeed, double targetFps, Limits limits, boolean freeFlight,
+                  LightTransport transport) {
+        this(debug, epsilon, displayScale, screenDivider, displayWidth, displayHeight, recursionMax, name, scene,
+                threads, shading, samples, minWeight, moveSpeed, turnSpeed, targetFps, limits, freeFlight,
+                transport, ViewTransform.DEFAULT);
+    }
 
     /** A config of the Whitted integrator. */
     public Config(boolean debug, double epsilon, double displayScale, int screenDivider,
@@ -98,6 +112,10 @@ public record Config(boolean debug, double epsilon, double displayScale, int scr
         return with(c -> c.transport = integrator);
     }
 
+    public Config withView(ViewTransform transform) {
+        return with(c -> c.view = transform);
+    }
+
     public Config withScreenDivider(int divider) {
         return with(c -> c.screenDivider = divider);
     }
@@ -146,6 +164,7 @@ public record Config(boolean debug, double epsilon, double displayScale, int scr
         Limits limits;
         boolean freeFlight;
         LightTransport transport;
+        ViewTransform view;
 
         Copy(Config c) {
             debug = c.debug;
@@ -167,12 +186,13 @@ public record Config(boolean debug, double epsilon, double displayScale, int scr
             limits = c.limits;
             freeFlight = c.freeFlight;
             transport = c.transport;
+            view = c.view;
         }
 
         Config build() {
             return new Config(debug, epsilon, displayScale, screenDivider, displayWidth, displayHeight, recursionMax,
                     name, scene, threads, shading, samples, minWeight, moveSpeed, turnSpeed, targetFps, limits,
-                    freeFlight, transport);
+                    freeFlight, transport, view);
         }
     }
 

@@ -1,5 +1,6 @@
 package glint.config;
 
+import glint.image.ViewTransform;
 import glint.input.InputException;
 import glint.input.Suggestions;
 import glint.input.TextFiles;
@@ -18,7 +19,7 @@ public final class ConfigLoader {
     static final Set<String> KEYS = new LinkedHashSet<>(List.of(
             "debug", "epsilon", "display_scale", "screen_divider", "display_height", "recursion_max",
             "display_width", "name", "scene", "threads", "shading", "integrator", "samples", "min_weight",
-            "move_speed", "turn_speed", "target_fps", "free_flight",
+            "move_speed", "turn_speed", "target_fps", "free_flight", "exposure", "tone",
             "max_image_pixels", "max_scene_bytes", "max_objects", "max_lights", "max_recursion"));
 
     /** The largest config file read; a real one is about 1 KB. */
@@ -105,8 +106,10 @@ public final class ConfigLoader {
         double turnSpeed = positive("turn_speed", d.turnSpeed());
         double targetFps = number("target_fps", d.targetFps(), 1, 1000, "a number from 1 to 1000");
         boolean freeFlight = bool("free_flight", d.freeFlight());
+        ViewTransform view = new ViewTransform(number("exposure", d.view().exposure(), -ViewTransform.MAX_EXPOSURE,
+                ViewTransform.MAX_EXPOSURE, "a number of stops from -16 to 16"), tone(d.view().tone()));
         return new Config(debug, epsilon, displayScale, divider, width, height, depth, name, scene, threads,
-                shading, samples, minWeight, moveSpeed, turnSpeed, targetFps, limits, freeFlight, transport);
+                shading, samples, minWeight, moveSpeed, turnSpeed, targetFps, limits, freeFlight, transport, view);
     }
 
     /** The key an image too large is refused at: the size where the file sets it, else the limit that the defaults break. */
@@ -213,6 +216,19 @@ public final class ConfigLoader {
         if (t == null) {
             throw error("integrator", "integrator: unknown integrator " + InputException.quote(v) + ", expected "
                     + LightTransport.IN_WORDS + Suggestions.hint(v, LightTransport.KEYS));
+        }
+        return t;
+    }
+
+    private ViewTransform.Tone tone(ViewTransform.Tone fallback) throws InputException {
+        String v = value("tone");
+        if (v == null) {
+            return fallback;
+        }
+        ViewTransform.Tone t = ViewTransform.Tone.byKey(v);
+        if (t == null) {
+            throw error("tone", "tone: unknown tone curve " + InputException.quote(v)
+                    + Suggestions.hint(v, ViewTransform.Tone.KEYS));
         }
         return t;
     }

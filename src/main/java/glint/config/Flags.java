@@ -1,5 +1,6 @@
 package glint.config;
 
+import glint.image.ViewTransform;
 import glint.input.InputException;
 import glint.input.Suggestions;
 import glint.render.LightTransport;
@@ -9,15 +10,21 @@ import java.util.List;
 import java.util.function.Consumer;
 
 /**
- * The command line's settings (--width, --height, --spp, --threads, --depth, --shading, --integrator); each is null
- * when not given. They rank first: a flag beats the scene's {@code render:} block, which beats
+ * The command line's settings (--width, --height, --spp, --threads, --depth, --shading, --integrator, --exposure,
+ * --tone); each is null when not given. They rank first: a flag beats the scene's {@code render:} block, which beats
  * config.properties, which beats the defaults ({@link #effective}).
  */
 public record Flags(Integer width, Integer height, Integer samples, Integer threads, Integer depth, String shading,
-                    String integrator) {
+                    String integrator, Double exposure, String tone) {
 
     /** No flag given. */
     public static final Flags NONE = new Flags(null, null, null, null, null, null, null);
+
+    /** Flags that leave the view transform as it is. */
+    public Flags(Integer width, Integer height, Integer samples, Integer threads, Integer depth, String shading,
+                 String integrator) {
+        this(width, height, samples, threads, depth, shading, integrator, null, null);
+    }
 
     /** Why the path and bdpt integrators and the phong model do not go together. */
     public static final String PATH_NEEDS_COOK_TORRANCE = "the path and bdpt integrators need shading cook-torrance:"
@@ -137,6 +144,12 @@ public record Flags(Integer width, Integer height, Integer samples, Integer thre
         if (r.minWeight() != null) {
             c = c.withMinWeight(r.minWeight());
         }
+        if (r.exposure() != null) {
+            c = c.withView(c.view().withExposure(r.exposure()));
+        }
+        if (r.tone() != null) {
+            c = c.withView(c.view().withTone(ViewTransform.Tone.byKey(r.tone())));
+        }
         if (r.width() != null) {
             String tooLarge = flags.setsSize() ? null : c.limits().imageSizeProblem(r.width(), r.height());
             if (tooLarge != null) {
@@ -199,6 +212,21 @@ public record Flags(Integer width, Integer height, Integer samples, Integer thre
                         + Suggestions.hint(integrator, LightTransport.KEYS));
             }
             c = c.withTransport(transport);
+        }
+        if (exposure != null) {
+            if (!(Math.abs(exposure) <= ViewTransform.MAX_EXPOSURE)) {
+                throw new InputException("glint", 0, 0, "--exposure: expected a number of stops from -16 to 16, got "
+                        + ViewTransform.stops(exposure));
+            }
+            c = c.withView(c.view().withExposure(exposure));
+        }
+        if (tone != null) {
+            ViewTransform.Tone curve = ViewTransform.Tone.byKey(tone);
+            if (curve == null) {
+                throw new InputException("glint", 0, 0, "--tone: unknown tone curve " + InputException.quote(tone)
+                        + Suggestions.hint(tone, ViewTransform.Tone.KEYS));
+            }
+            c = c.withView(c.view().withTone(curve));
         }
         return c;
     }

@@ -47,9 +47,17 @@ public final class ImageWriter {
         return name.endsWith(".png") || name.endsWith(".pfm");
     }
 
-    /** Writes the frame to {@code path} in the format its name asks for, through a temporary file beside it. */
+    /**
+     * Writes the frame to {@code path} in the format its name asks for, through a temporary file beside it; a
+     * PNG through the standard view transform (no exposure, clamped).
+     */
     public static void write(FrameBuffer frame, Path path) throws IOException {
-        writeAtomically(path, temporaryBeside(path), content(frame, path, new Watcher() { }));
+        write(frame, ViewTransform.STANDARD, path);
+    }
+
+    /** Writes the frame to {@code path}, a PNG through {@code view} (a PFM holds the linear values whatever it is). */
+    public static void write(FrameBuffer frame, ViewTransform view, Path path) throws IOException {
+        writeAtomically(path, temporaryBeside(path), content(frame, view, path, new Watcher() { }));
     }
 
     /**
@@ -72,7 +80,13 @@ public final class ImageWriter {
      * the watcher and stopping when it says so; renames nothing (see {@link #rename}).
      */
     public static void writeTemporary(FrameBuffer frame, Path path, Path temp, Watcher watcher) throws IOException {
-        Content content = content(frame, path, watcher);
+        writeTemporary(frame, ViewTransform.STANDARD, path, temp, watcher);
+    }
+
+    /** {@link #writeTemporary(FrameBuffer, Path, Path, Watcher)} with a PNG made through {@code view}. */
+    public static void writeTemporary(FrameBuffer frame, ViewTransform view, Path path, Path temp, Watcher watcher)
+            throws IOException {
+        Content content = content(frame, view, path, watcher);
         try { // the file was made beforehand: deleted since (a cancel), it is not made again
             try (OutputStream out = new BufferedOutputStream(Files.newOutputStream(temp, StandardOpenOption.WRITE,
                     StandardOpenOption.TRUNCATE_EXISTING), 1 << 16)) {
@@ -91,11 +105,11 @@ public final class ImageWriter {
         }
     }
 
-    /** The frame in the format {@code path}'s name asks for: a linear PFM, else an sRGB PNG. */
-    private static Content content(FrameBuffer frame, Path path, Watcher watcher) {
+    /** The frame in the format {@code path}'s name asks for: a linear PFM, else an sRGB PNG through {@code view}. */
+    private static Content content(FrameBuffer frame, ViewTransform view, Path path, Watcher watcher) {
         String name = path.getFileName().toString().toLowerCase(Locale.ROOT);
         return name.endsWith(".pfm") ? out -> writePfm(frame, out, watcher)
-                : out -> writePng(toImage(frame, watcher), out, watcher);
+                : out -> writePng(toImage(frame, view, watcher), out, watcher);
     }
 
     /** Stops a write at its next bytes once the watcher says so. */
@@ -174,10 +188,15 @@ public final class ImageWriter {
         }
     }
 
-    /** The frame as an 8-bit sRGB image, dithered ({@link Dither}). */
+    /** The frame as an 8-bit sRGB image, dithered ({@link Dither}), through the standard view transform. */
     public static BufferedImage toImage(FrameBuffer frame) {
+        return toImage(frame, ViewTransform.STANDARD);
+    }
+
+    /** The frame as an 8-bit sRGB image through {@code view}, dithered ({@link Dither}). */
+    public static BufferedImage toImage(FrameBuffer frame, ViewTransform view) {
         try {
-            return toImage(frame, new Watcher() { });
+            return toImage(frame, view, new Watcher() { });
         } catch (InterruptedIOException e) {
             throw new IllegalStateException(e); // a watcher that never cancels
         }
@@ -186,17 +205,16 @@ public final class ImageWriter {
     /** The share of a PNG's write spent making its 8-bit image; the encoding is the rest. */
     private static final double IMAGE_SHARE = 0.2;
 
-    private static BufferedImage toImage(FrameBuffer frame, Watcher watcher) throws InterruptedIOException {
+    private static BufferedImage toImage(FrameBuffer frame, ViewTransform view, Watcher watcher)
+            throws InterruptedIOException {
         BufferedImage image = new BufferedImage(frame.width(), frame.height(), BufferedImage.TYPE_INT_RGB);
         float[] rgb = frame.rgb();
         int[] pixels = ((DataBufferInt) image.getRaster().getDataBuffer()).getData(); // row by row, 0xRRGGBB
+        double[] scratch = new double[3];
         for (int y = 0; y < frame.height(); y++) {
             for (int x = 0, p = y * frame.width(); x < frame.width(); x++, p++) {
                 int i = 3 * p;
-                int levels = Dither.levels(x, y);
-                pixels[p] = Srgb.to8Bit(rgb[i], Dither.channel(levels, 0)) << 16
-                        | Srgb.to8Bit(rgb[i + 1], Dither.channel(levels, 1)) << 8
-                        | Srgb.to8Bit(rgb[i + 2], Dither.channel(levels, 2));
+                pixels[p] = view.pixel(rgb[i], rgb[i + 1], rgb[i + 2], Dither.levels(x, y), scratch);
             }
             if ((y & 63) == 63) {
                 check(watcher);

@@ -101,7 +101,7 @@ public final class TextFiles {
     }
 
     /**
-     * The name among {@code names} that is {@code given} mistyped: the same ending (.yaml), and the rest
+     * The name among {@code names} that is {@code given} mistyped: the same ending (.yaml, or .yml for it), and the rest
      * at most 2 edits away (ignoring case) and less than half of it; null when none is.
      */
     static String closestFileName(String given, java.util.List<String> names) {
@@ -109,7 +109,7 @@ public final class TextFiles {
         int bestDistance = Integer.MAX_VALUE;
         String stem = stem(given).toLowerCase(Locale.ROOT);
         for (String name : names) {
-            if (!extension(name).equalsIgnoreCase(extension(given)) || given.length() > 255) {
+            if (!sameKind(extension(name), extension(given)) || given.length() > 255) {
                 continue;
             }
             int d = Suggestions.distance(stem, stem(name).toLowerCase(Locale.ROOT));
@@ -124,6 +124,15 @@ public final class TextFiles {
     private static String stem(String name) {
         int dot = name.lastIndexOf('.');
         return dot > 0 ? name.substring(0, dot) : name;
+    }
+
+    /** Whether two endings name the same kind of file: equal but for case, or .yaml and .yml. */
+    private static boolean sameKind(String a, String b) {
+        return a.equalsIgnoreCase(b) || isYaml(a) && isYaml(b);
+    }
+
+    private static boolean isYaml(String extension) {
+        return extension.equalsIgnoreCase(".yaml") || extension.equalsIgnoreCase(".yml");
     }
 
     private static String extension(String name) {

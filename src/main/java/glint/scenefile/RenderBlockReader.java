@@ -15,9 +15,13 @@ import org.snakeyaml.engine.v2.nodes.Node;
 final class RenderBlockReader {
 
     static final Set<String> KEYS = new LinkedHashSet<>(
-            List.of("shading", "integrator", "samples", "recursion_max", "min_weight", "width", "height"));
+            List.of("shading", "integrator", "samples", "recursion_max", "min_weight", "width", "height", "exposure",
+                    "tone"));
     static final List<String> SHADINGS = List.of("cook-torrance", "phong");
     static final List<String> INTEGRATORS = LightTransport.KEYS;
+    static final List<String> TONES = List.of("standard", "neutral");
+    /** The most stops of exposure either way, as in config.properties. */
+    static final double MAX_EXPOSURE = 16;
     /** The largest samples per pixel and image side, as in config.properties. */
     static final int MAX_SAMPLES = 4096, MAX_SIDE = 65536, MAX_RECURSION = 64;
 
@@ -70,12 +74,30 @@ final class RenderBlockReader {
             }
             minWeight = w;
         }
+        Double exposure = null;
+        if (m.containsKey("exposure")) {
+            double stops = yaml.number(m.get("exposure"), "exposure");
+            if (!(Math.abs(stops) <= MAX_EXPOSURE)) {
+                throw yaml.error(m.get("exposure"), "exposure must be a number of stops from -16 to 16, got "
+                        + YamlTree.source(m.get("exposure"), stops));
+            }
+            exposure = stops;
+        }
+        String tone = null;
+        if (m.containsKey("tone")) {
+            tone = yaml.string(m.get("tone"), "tone");
+            if (!TONES.contains(tone)) {
+                throw yaml.error(m.get("tone"), "unknown tone curve " + InputException.quote(tone)
+                        + Suggestions.hint(tone, TONES));
+            }
+        }
         Integer width = whole(m, "width", 1, MAX_SIDE);
         Integer height = whole(m, "height", 1, MAX_SIDE);
         if ((width == null) != (height == null)) {
             throw yaml.error(node, "the still size needs both width and height in render");
         }
-        return new RenderBlock(shading, integrator, samples, depth, minWeight, width, height, file, places);
+        return new RenderBlock(shading, integrator, samples, depth, minWeight, width, height, exposure, tone, file,
+                places);
     }
 
     private Integer whole(Map<String, Node> m, String key, int min, int max) throws InputException {

@@ -138,6 +138,10 @@ public final class SceneLoader {
             throw new InputException(file, e.line, e.column, "YAML tags such as " + InputException.quote(e.tag)
                     + " are not supported (write the value without it; a number is written plainly, a name too)");
         } catch (MarkedYamlEngineException e) {
+            InputException unclosed = unclosed(file, e);
+            if (unclosed != null) {
+                throw unclosed;
+            }
             Mark mark = e.getProblemMark().or(e::getContextMark).orElse(null);
             String what = e.getProblem() != null ? e.getProblem() : "malformed YAML";
             String problem = InputException.cutLongWords("YAML syntax error: " + what
@@ -158,6 +162,31 @@ public final class SceneLoader {
                     "the scene is empty (expected a mapping with keys such as camera, lights, objects)");
         }
         return root.get();
+    }
+
+    /**
+     * A list ({@code [}) or mapping ({@code {}) written on one line and never closed: the parser notices only
+     * where something else comes, often a line or more later ({@code expected ',' or ']', but got :}). Reported
+     * where it was opened, in words: what is missing and where the parser found the list still open. Null for
+     * any other syntax error.
+     */
+    static InputException unclosed(String file, MarkedYamlEngineException e) {
+        String problem = String.valueOf(e.getProblem());
+        String context = String.valueOf(e.getContext());
+        boolean list = context.contains("flow sequence") && problem.startsWith("expected ',' or ']'");
+        boolean mapping = context.contains("flow mapping") && problem.startsWith("expected ',' or '}'");
+        if (!(list || mapping) || e.getContextMark().isEmpty() || e.getProblemMark().isEmpty()) {
+            return null;
+        }
+        Mark open = e.getContextMark().get(), found = e.getProblemMark().get();
+        String got = problem.contains("but got ") ? problem.substring(problem.indexOf("but got ") + 8).strip() : "";
+        String what = got.isEmpty() || got.startsWith("<stream end>") ? "the file ended"
+                : got.startsWith("<") ? "other text came" : InputException.quote(got) + " came";
+        String message = (list ? "this list, opened with '[', is not closed: add the ']' that ends it"
+                : "this mapping, opened with '{', is not closed: add the '}' that ends it")
+                + " (at line " + (found.getLine() + 1) + ", column " + (found.getColumn() + 1) + " it was still open and "
+                + what + " instead of ',' or '" + (list ? "]" : "}") + "')";
+        return new InputException(file, open.getLine() + 1, open.getColumn() + 1, InputException.cutLongWords(message));
     }
 
     private static final String TOO_MANY_ALIASES = "YAML error: more than " + MAX_ALIASES

@@ -15,4 +15,10 @@ public final class MetalResponse implements WhittedResponse {
                 Optics.schlick(m.color(material, 2), cos));
         out.setTransmit(0, 0, 0);
     }
+
+    /** A metal's colour is its reflectance: phong's reflection and highlight take it. */
+    @Override
+    public boolean tintsReflection() {
+        return true;
+    }
 }

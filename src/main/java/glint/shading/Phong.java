@@ -2,9 +2,12 @@ package glint.shading;
 
 /**
  * The seed's model (docs/conventions.md, "phong"): ka ambient x colour + the sum over lights of (kd
- * colour E n.l + ks E (r.v)^shininess), + ks I_reflected + kt colour I_transmitted, with ka = kd,
- * whatever the material's type, and the light a surface sends of its own (a light's body). A shadow ray passes kt of the light through each object whose material
- * transmits light.
+ * colour (E / pi) n.l + ks s (E / pi) (r.v)^shininess), + ks s I_reflected + kt colour I_transmitted, with
+ * ka = kd, whatever the material's type, and the light a surface sends of its own (a light's body). E / pi
+ * is the light term of Lambert's model, so a scene's physical lights give phong the brightness they give
+ * cook-torrance; s is the colour of a material whose reflection takes it (a metal,
+ * {@link WhittedResponse#tintsReflection}), white otherwise. A shadow ray passes kt of the light through
+ * each object whose material transmits light.
  */
 public final class Phong implements ShadingModel {
 
@@ -17,6 +20,7 @@ public final class Phong implements ShadingModel {
         double diffuseR = c.ambient(0), diffuseG = c.ambient(1), diffuseB = c.ambient(2);
         double specR = 0, specG = 0, specB = 0;
         double kd = m.kd(material), ks = m.ks(material);
+        double lightR = 0, lightG = 0, lightB = 0;
         Lights lights = c.lights();
         // a surface without diffuse or highlight (a light's body) sends no light of the lights: no shadow rays
         for (int i = 0, n = kd == 0 && ks == 0 ? 0 : lights.count(); i < n; i++) {
@@ -25,9 +29,9 @@ public final class Phong implements ShadingModel {
                 continue;
             }
             double cosLight = light.cosine;
-            diffuseR += pass * light.irradianceR * cosLight;
-            diffuseG += pass * light.irradianceG * cosLight;
-            diffuseB += pass * light.irradianceB * cosLight;
+            lightR += pass * light.irradianceR * cosLight;
+            lightG += pass * light.irradianceG * cosLight;
+            lightB += pass * light.irradianceB * cosLight;
             double cosReflectView = cosReflectView(s, light, dx, dy, dz);
             if (cosReflectView > 0) {
                 double highlight = pass * Math.pow(cosReflectView, m.shininess(material));
@@ -36,22 +40,40 @@ public final class Phong implements ShadingModel {
                 specB += highlight * light.irradianceB;
             }
         }
-        sum.set(kd * m.color(material, 0) * diffuseR + ks * specR, kd * m.color(material, 1) * diffuseG + ks * specG,
-                kd * m.color(material, 2) * diffuseB + ks * specB);
+        diffuseR += lightR * INV_PI;
+        diffuseG += lightG * INV_PI;
+        diffuseB += lightB * INV_PI;
+        double sR = ks * INV_PI, sG = sR, sB = sR;
+        if (m.response(material).tintsReflection()) {
+            sR *= m.color(material, 0);
+            sG *= m.color(material, 1);
+            sB *= m.color(material, 2);
+        }
+        sum.set(kd * m.color(material, 0) * diffuseR + sR * specR, kd * m.color(material, 1) * diffuseG + sG * specG,
+                kd * m.color(material, 2) * diffuseB + sB * specB);
         if (m.emits(material)) { // a light's body is seen in every model
             m.bsdf(material).emitted(m, s, f);
             sum.set(sum.r + f.r, sum.g + f.g, sum.b + f.b);
         }
     }
 
-    /** ks of the light reflected, kt x colour of the light refracted, whatever the angle. */
+    private static final double INV_PI = 1 / Math.PI;
+
+    /**
+     * ks of the light reflected (ks x colour for a material whose reflection takes its colour, a metal), kt x
+     * colour of the light refracted, whatever the angle.
+     */
     @Override
     public void specular(ShadingContext c, Surface s, SingleRays out) {
         Materials m = c.materials();
         int material = s.material;
         double kt = m.kt(material), ks = m.ks(material);
         out.eta = Optics.eta(m.ior(material), s.front);
-        out.setReflect(ks, ks, ks);
+        if (m.response(material).tintsReflection()) {
+            out.setReflect(ks * m.color(material, 0), ks * m.color(material, 1), ks * m.color(material, 2));
+        } else {
+            out.setReflect(ks, ks, ks);
+        }
         out.setTransmit(kt * m.color(material, 0), kt * m.color(material, 1), kt * m.color(material, 2));
     }
 

@@ -22,6 +22,11 @@ public interface WhittedResponse {
         return false;
     }
 
+    /** Whether the phong model's reflection and highlight take the material's colour (a metal's do). */
+    default boolean tintsReflection() {
+        return false;
+    }
+
     /** Whether light passes through the material (the phong model's shadow rays pass kt of it). */
     default boolean transmits() {
         return false;

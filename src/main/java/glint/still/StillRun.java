@@ -5,6 +5,7 @@ import glint.image.FrameBuffer;
 import glint.image.ImageWriter;
 import glint.image.PartFile;
 import glint.image.PartGuard;
+import glint.image.ViewTransform;
 import glint.render.LightTransport;
 import glint.render.RenderScene;
 import glint.render.Tracer;
@@ -56,6 +57,7 @@ public final class StillRun implements ImageWriter.Watcher, AutoCloseable {
     // files written, with the fraction of the one being written (one value: never ahead); below 0: not yet
     private volatile double filesWritten = -1;
     private int fileWriting; // the writing thread's: the index of the file being written
+    private volatile ViewTransform view = ViewTransform.STANDARD; // the PNG's: the config's that rendered the frame
 
     private StillRun(List<Path> images, List<PartFile> parts, PartGuard guard) {
         this.images = images;
@@ -112,6 +114,7 @@ public final class StillRun implements ImageWriter.Watcher, AutoCloseable {
      */
     public FrameBuffer render(RenderScene scene, Config config, Steps steps) throws StillRefused {
         checkSize(config);
+        view = config.view();
         MemoryCheck.check(config, MemoryCheck.STILL_BYTES_PER_PIXEL, Runtime.getRuntime());
         FrameBuffer frame = new FrameBuffer(config.displayWidth(), config.displayHeight());
         Tracer t;
@@ -129,7 +132,10 @@ public final class StillRun implements ImageWriter.Watcher, AutoCloseable {
         }
     }
 
-    /** Writes each image to its hidden file, then renames them all into place, unless cancelled before. */
+    /**
+     * Writes each image to its hidden file (a PNG through the view transform of the config {@link #render} was
+     * given), then renames them all into place, unless cancelled before.
+     */
     public void write(FrameBuffer frame, Steps steps) throws IOException {
         filesWritten = 0;
         steps.step("writing the image", this::writtenFraction);
@@ -139,7 +145,7 @@ public final class StillRun implements ImageWriter.Watcher, AutoCloseable {
             Path image = images.get(i), part = parts.get(i).path();
             OutputFile.keepPermissions(image, part);
             try {
-                ImageWriter.writeTemporary(frame, image, part, this);
+                ImageWriter.writeTemporary(frame, view, image, part, this);
             } catch (InterruptedIOException e) {
                 throw e;
             } catch (IOException e) {

@@ -6,6 +6,7 @@ import static org.junit.jupiter.api.Assertions.assertThrows;
 import static org.junit.jupiter.api.Assertions.assertTimeoutPreemptively;
 import static org.junit.jupiter.api.Assertions.assertTrue;
 
+import glint.image.ViewTransform;
 import glint.input.InputException;
 import glint.render.Shading;
 import java.io.IOException;
@@ -85,6 +86,8 @@ class ConfigLoaderTest {
                 turn_speed=90
                 target_fps=24
                 free_flight=true
+                exposure=-1.5
+                tone=standard
                 max_image_pixels=1000000
                 max_scene_bytes=4096
                 max_objects=10
@@ -92,15 +95,35 @@ class ConfigLoaderTest {
                 max_recursion=8
                 """);
         assertEquals(new Config(true, 1e-6, 1.5, 4, 640, 480, 7, "My Glint", "scenes/other.yaml", 3,
-                Shading.PHONG, 16, 0.01, 3.5, 90, 24, new Limits(1_000_000, 4096, 10, 2, 8), true), c);
+                Shading.PHONG, 16, 0.01, 3.5, 90, 24, new Limits(1_000_000, 4096, 10, 2, 8), true)
+                .withView(new ViewTransform(-1.5, ViewTransform.Tone.STANDARD)), c);
+    }
+
+    @Test
+    void theViewTransformIsNeutralAtNoExposureUnlessTheConfigSaysOtherwise() throws InputException {
+        assertEquals(new ViewTransform(0, ViewTransform.Tone.NEUTRAL), parse("").view());
+        assertEquals(new ViewTransform(16, ViewTransform.Tone.NEUTRAL), parse("exposure=16\n").view());
+        assertEquals(new ViewTransform(-16, ViewTransform.Tone.STANDARD), parse("exposure=-16\ntone=standard\n").view());
+        assertEquals(new ViewTransform(0.25, ViewTransform.Tone.NEUTRAL), parse("exposure=+.25\ntone=neutral\n").view());
+    }
+
+    @Test
+    void aBadExposureOrToneIsReportedAtItsLine() {
+        assertError("config.properties:2:1: exposure: expected a number of stops from -16 to 16, got '17'",
+                "debug=false\nexposure=17\n");
+        assertError("config.properties:1:1: exposure: expected a number of stops from -16 to 16, got 'bright'",
+                "exposure=bright\n");
+        assertError("config.properties:1:1: tone: unknown tone curve 'filmic' (expected one of: standard, neutral)",
+                "tone=filmic\n");
+        assertError("config.properties:1:1: tone: unknown tone curve 'nuetral' (did you mean 'neutral'?)", "tone=nuetral\n");
     }
 
     @Test
     void everyKeyOfKeysIsTestedAbove() {
         assertEquals(List.of("debug", "epsilon", "display_scale", "screen_divider", "display_height",
                 "recursion_max", "display_width", "name", "scene", "threads", "shading", "integrator", "samples",
-                "min_weight", "move_speed", "turn_speed", "target_fps", "free_flight", "max_image_pixels", "max_scene_bytes",
-                "max_objects", "max_lights", "max_recursion"), List.copyOf(ConfigLoader.KEYS));
+                "min_weight", "move_speed", "turn_speed", "target_fps", "free_flight", "exposure", "tone", "max_image_pixels",
+                "max_scene_bytes", "max_objects", "max_lights", "max_recursion"), List.copyOf(ConfigLoader.KEYS));
     }
 
     @Test
@@ -162,7 +185,8 @@ class ConfigLoaderTest {
     void unknownKeyFarFromAnyListsTheKeys() {
         assertError("config.properties:1:1: unknown key 'colour' (expected one of: debug, epsilon, display_scale, "
                 + "screen_divider, display_height, recursion_max, display_width, name, scene, threads, shading, "
-                + "integrator, samples, min_weight, move_speed, turn_speed, target_fps, free_flight, max_image_pixels, max_scene_bytes, max_objects, "
+                + "integrator, samples, min_weight, move_speed, turn_speed, target_fps, free_flight, exposure, tone, "
+                + "max_image_pixels, max_scene_bytes, max_objects, "
                 + "max_lights, max_recursion)", "colour=red\n");
     }
 
@@ -407,7 +431,8 @@ class ConfigLoaderTest {
         // a key holding a line break and a terminal escape: one line, nothing the terminal acts on
         assertError("config.properties:1:1: unknown key 'a\\nb\\u001b[2J' (expected one of: debug, epsilon, "
                 + "display_scale, screen_divider, display_height, recursion_max, display_width, name, scene, threads, "
-                + "shading, integrator, samples, min_weight, move_speed, turn_speed, target_fps, free_flight, max_image_pixels, "
+                + "shading, integrator, samples, min_weight, move_speed, turn_speed, target_fps, free_flight, exposure, tone, "
+                + "max_image_pixels, "
                 + "max_scene_bytes, max_objects, max_lights, max_recursion)", "a\\nb\u001b[2J=1\n");
     }
 

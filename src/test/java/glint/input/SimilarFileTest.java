@@ -21,6 +21,15 @@ class SimilarFileTest {
         assertEquals("default.yaml", TextFiles.closestFileName("defualt.yaml", SCENES));
     }
 
+    /** .yml is the other common ending of YAML: the scene of the same name, or a letter off, is meant. */
+    @Test
+    void theYmlEndingMeansTheYamlFile() {
+        assertEquals("glass.yaml", TextFiles.closestFileName("glass.yml", SCENES));
+        assertEquals("glass.yaml", TextFiles.closestFileName("glas.yml", SCENES));
+        assertEquals("metals.yml", TextFiles.closestFileName("metals.yaml", List.of("metals.yml")));
+        assertEquals("default.yaml", TextFiles.closestFileName("DEFAULT.YML", SCENES));
+    }
+
     @Test
     void aNameUnlikeAnyOrOfAnotherKindHasNoSuggestion() {
         assertNull(TextFiles.closestFileName("nope.properties", List.of("empty.properties")));
@@ -36,6 +45,9 @@ class SimilarFileTest {
         InputException e = TextFiles.unreadable(missing.toString(), new java.nio.file.NoSuchFileException(missing.toString()));
         assertEquals(missing + ": no such file (did you mean '" + dir.resolve("default.yaml") + "'?)", e.getMessage());
         Path other = dir.resolve("other.yaml");
+        Path yml = dir.resolve("default.yml");
+        assertEquals(yml + ": no such file (did you mean '" + dir.resolve("default.yaml") + "'?)",
+                TextFiles.unreadable(yml.toString(), new java.nio.file.NoSuchFileException(yml.toString())).getMessage());
         assertEquals(other + ": no such file",
                 TextFiles.unreadable(other.toString(), new java.nio.file.NoSuchFileException(other.toString())).getMessage());
     }

@@ -992,12 +992,41 @@ class SceneLoaderErrorTest {
     }
 
     @Test
-    void yamlSyntaxErrorHasAPosition() {
-        // the unclosed "[" meets "}" at column 47
-        assertError("scenes/x.yaml:2:47: YAML syntax error: expected ',' or ']', but got } "
-                + "(while parsing a flow sequence)", """
+    void anUnclosedListIsReportedWhereItOpens() {
+        // the unclosed "[" at column 28 meets "}" at column 47
+        assertError("scenes/x.yaml:2:28: this list, opened with '[', is not closed: add the ']' that ends it "
+                + "(at line 2, column 47 it was still open and '}' came instead of ',' or ']')", """
                 objects:
                   - {type: sphere, center: [0, 1, 0, radius: 1}
+                """);
+    }
+
+    /** A list left open at the end of a line: the parser finds out on a later line; the error points at the list. */
+    @Test
+    void aListLeftOpenAtTheEndOfItsLineIsReportedOnThatLine() {
+        assertError("scenes/x.yaml:8:13: this list, opened with '[', is not closed: add the ']' that ends it "
+                + "(at line 9, column 10 it was still open and ':' came instead of ',' or ']')", """
+                lights:
+                  - {type: point, position: [-5, 8, -6], intensity: 100}
+                objects:
+                  - {type: sphere, center: [0, 1, 0], radius: 1}
+                  - {type: sphere, center: [2, 1, 0], radius: 1}
+                  - {type: plane, point: [0, 0, 0], normal: [0, 1, 0]}
+                camera:
+                  position: [0, 1, -5
+                  look_at: [0, 1, 0]
+                """);
+        assertError("scenes/x.yaml:1:9: this mapping, opened with '{', is not closed: add the '}' that ends it "
+                + "(at line 2, column 1 it was still open and other text came instead of ',' or '}')", """
+                camera: {position: [0, 1, -5]
+                objects: []
+                """);
+    }
+
+    @Test
+    void yamlSyntaxErrorHasAPosition() {
+        assertError("scenes/x.yaml:1:11: YAML syntax error: mapping values are not allowed here", """
+                objects: a: b
                 """);
     }
 

@@ -1,5 +1,6 @@
 package glint.ui.capture;
 
+import glint.image.ViewTransform;
 import glint.input.InputException;
 import glint.math.Vector3d;
 import glint.scene.Camera;
@@ -34,13 +35,27 @@ public final class CameraBlock {
      * returns why, and says so on {@code err}.
      */
     public static String print(Camera camera, java.io.PrintWriter out, java.io.PrintWriter err) {
-        String text = blocks(camera);
+        return print(camera, null, out, err);
+    }
+
+    /**
+     * {@link #print(Camera, java.io.PrintWriter, java.io.PrintWriter)} with, last, a comment saying the view
+     * transform the picture is seen with, as the keys of a scene's {@code render:} block:
+     * {@code # seen with render: {exposure: 1.5, tone: neutral}}.
+     */
+    public static String print(Camera camera, ViewTransform view, java.io.PrintWriter out, java.io.PrintWriter err) {
+        String text = blocks(camera) + (view == null ? "" : seenWith(view) + "\n");
         String failed = Printing.print(out, text);
         if (failed == null) {
             return text.strip();
         }
         err.println("glint: camera not printed: " + failed);
         return "camera not printed: " + failed;
+    }
+
+    /** The view transform as a comment of {@code render:} keys. */
+    static String seenWith(ViewTransform view) {
+        return "# seen with render: {exposure: " + number(view.exposure()) + ", tone: " + view.tone().key() + "}";
     }
 
     /** The camera as an item of a scene's {@code views:} list, indented as under the key: {@code - {...}}. */

@@ -2,6 +2,7 @@ package glint.ui.capture;
 
 import glint.config.Config;
 import glint.config.JarCommand;
+import glint.image.ViewTransform;
 import glint.render.RenderScene;
 import glint.scene.Camera;
 import glint.still.StillRefused;
@@ -69,9 +70,10 @@ public final class StillRender implements AutoCloseable {
         String config = configFile == null ? "" : " --config " + JarCommand.word(configFile.toString());
         String recipe = "still: the same image headless, with this camera in " + scenePath + ":\n"
                 + String.format(Locale.ROOT, "  %s%s --scene %s --width %d --height %d --spp %d"
-                        + " --shading %s --integrator %s --depth %d --output %s%n", JarCommand.java(), config,
-                        JarCommand.word(scenePath.toString()), still.displayWidth(), still.displayHeight(),
-                        still.samples(), still.shading().key(), still.transport().key(), still.recursionMax(),
+                        + " --shading %s --integrator %s --depth %d --exposure %s --tone %s --output %s%n",
+                        JarCommand.java(), config, JarCommand.word(scenePath.toString()), still.displayWidth(),
+                        still.displayHeight(), still.samples(), still.shading().key(), still.transport().key(),
+                        still.recursionMax(), ViewTransform.stops(still.view().exposure()), still.view().tone().key(),
                         JarCommand.word(png.getFileName().toString()))
                 + CameraBlock.yaml(printed);
         Path pfmFile = pfm ? png.resolveSibling(png.getFileName().toString().replaceFirst("\\.png$", ".pfm")) : null;

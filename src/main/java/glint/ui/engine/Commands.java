@@ -50,6 +50,9 @@ final class Commands {
             case TOGGLE_INTEGRATOR -> status.note(view.toggleTransport());
             case DEPTH_UP -> status.note(view.stepDepth(1));
             case DEPTH_DOWN -> status.note(view.stepDepth(-1));
+            case EXPOSURE_UP -> status.note(view.stepExposure(1));
+            case EXPOSURE_DOWN -> status.note(view.stepExposure(-1));
+            case TOGGLE_TONE -> status.note(view.toggleTone());
             case APERTURE_WIDER -> status.note(view.stepAperture(1));
             case APERTURE_NARROWER -> status.note(view.stepAperture(-1));
             case SCREENSHOT -> status.note(captures.screenshot());
@@ -63,7 +66,7 @@ final class Commands {
                 status.note("the scene's camera");
             }
             case VIEW -> goToView(in.view());
-            case PRINT_CAMERA -> status.note(CameraBlock.print(view.camera(), out, status.log()));
+            case PRINT_CAMERA -> status.note(CameraBlock.print(view.camera(), view.settings().view(), out, status.log()));
             case NEXT_SCENE -> browser.open(1);
             case PREVIOUS_SCENE -> browser.open(-1);
             case RENDER_STILL, RENDER_STILL_PFM -> status.note(captures.still(action == Action.RENDER_STILL_PFM, out));

@@ -299,6 +299,9 @@ public final class Engine implements Runnable, SceneWatcher.Listener {
         if (!running) {
             return 0;
         }
+        if (view.takeRetoned()) { // the exposure or the tone: the frame on screen encoded again, not traced again
+            maker.retone();
+        }
         reloads.takePending();
         view.resized(input.viewWidth(), input.viewHeight());
         if (in.wheelNotches() != 0) {

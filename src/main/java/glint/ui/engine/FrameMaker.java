@@ -48,6 +48,7 @@ final class FrameMaker implements AutoCloseable {
     boolean moving(long start) {
         ResolutionGovernor.Size s = size.fit(governor.scale());
         BufferedImage image;
+        renderer.viewTransform(view.settings().view());
         try {
             image = renderer.renderMoving(view.compiled(), s.width(), s.height());
         } catch (RuntimeException | OutOfMemoryError e) {
@@ -71,6 +72,7 @@ final class FrameMaker implements AutoCloseable {
         int done = view.passesDone();
         int count = Refinement.inOneCall(pacing.passes(done, samples, start), done, pattern); // quick: several at once
         BufferedImage image;
+        renderer.viewTransform(view.settings().view());
         try {
             image = renderer.renderPasses(view.compiled(), s.width(), s.height(), pattern, done, count);
         } catch (RuntimeException | OutOfMemoryError e) {
@@ -84,6 +86,18 @@ final class FrameMaker implements AutoCloseable {
         pacing.passesDone(view.passesDone(), count, samples, start, end, s, config.debug() ? err : null);
         frames.show(image, end, end - start, view.passesDone(), false);
         return true;
+    }
+
+    /**
+     * The exposure or the tone changed: the frame on screen is encoded again through the view transform now and
+     * shown, nothing traced (the refinement goes on from where it was). Nothing happens before the first frame.
+     */
+    void retone() {
+        renderer.viewTransform(view.settings().view());
+        BufferedImage image = renderer.again();
+        if (image != null) {
+            frames.replace(image);
+        }
     }
 
     /**

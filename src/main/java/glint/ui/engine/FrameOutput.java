@@ -63,6 +63,12 @@ final class FrameOutput {
         }
     }
 
+    /** Shows {@code image} in place of the last one (the same frame encoded again), with the same figures. */
+    void replace(BufferedImage image) {
+        lastImage = image;
+        presentStatus();
+    }
+
     /** Shows the last image again with the current messages and settings. */
     void presentStatus() {
         FrameStats s = lastStats;
@@ -109,7 +115,8 @@ final class FrameOutput {
                 samplesDone, Refinement.passes(seen.still()), moving, renderer.threads(), seen.shading(),
                 seen.transport(), noise, seen.depth(),
                 view.controller().speed(), source.scenePath().toString(), status.message(), status.error(),
-                size.sizeLimit(), faults.overlayLine(), view.camera().aperture() > 0 ? view.controller().lensNote() : "");
+                size.sizeLimit(), faults.overlayLine(), view.camera().aperture() > 0 ? view.controller().lensNote() : "",
+                seen.view().describe());
     }
 
     private void publish() {

@@ -1,6 +1,7 @@
 package glint.ui.frames;
 
 import glint.image.FrameBuffer;
+import glint.image.ViewTransform;
 
 /**
  * Progressive refinement while the camera is still: adds the sample passes of one view and keeps their
@@ -58,6 +59,12 @@ final class Accumulator {
      * done on different threads at once.
      */
     void addAndEncode(FrameBuffer pass, int[] rgb, int from, int to) {
+        addAndEncode(pass, rgb, from, to, ViewTransform.STANDARD);
+    }
+
+    /** {@link #addAndEncode(FrameBuffer, int[], int, int)} with the average encoded through a view transform. */
+    void addAndEncode(FrameBuffer pass, int[] rgb, int from, int to, ViewTransform view) {
+        double[] scratch = new double[3];
         float[] in = pass.rgb();
         double[] s = sum;
         double inverse = 1.0 / passes;
@@ -74,12 +81,38 @@ final class Accumulator {
             s[i] = r;
             s[i + 1] = g;
             s[i + 2] = b;
-            rgb[p] = SrgbEncoder.pixel((float) (r * inverse), (float) (g * inverse), (float) (b * inverse), x, y);
+            rgb[p] = SrgbEncoder.pixel((float) (r * inverse), (float) (g * inverse), (float) (b * inverse), x, y, view,
+                    scratch);
             if (++x == width) {
                 x = 0;
                 y++;
             }
         }
+    }
+
+    /** Encodes pixels {@code from} to {@code to} of the average so far again, through a view transform. */
+    void encode(int[] rgb, int from, int to, ViewTransform view) {
+        double[] s = sum;
+        double inverse = 1.0 / passes;
+        double[] scratch = new double[3];
+        int x = from % width, y = from / width;
+        for (int p = from, i = 3 * from; p < to; p++, i += 3) {
+            rgb[p] = SrgbEncoder.pixel((float) (s[i] * inverse), (float) (s[i + 1] * inverse),
+                    (float) (s[i + 2] * inverse), x, y, view, scratch);
+            if (++x == width) {
+                x = 0;
+                y++;
+            }
+        }
+    }
+
+    /** The average's size. */
+    int width() {
+        return width;
+    }
+
+    int height() {
+        return height;
     }
 
     /**

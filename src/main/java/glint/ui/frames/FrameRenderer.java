@@ -1,6 +1,7 @@
 package glint.ui.frames;
 
 import glint.image.FrameBuffer;
+import glint.image.ViewTransform;
 import glint.render.RenderScene;
 import glint.render.Tracer;
 import java.awt.image.BufferedImage;
@@ -51,6 +52,9 @@ public final class FrameRenderer implements AutoCloseable {
     private FrameBuffer buffer;
     private final Accumulator accumulator = new Accumulator();
     private PixelRanges ranges;
+    private ViewTransform view = ViewTransform.STANDARD; // the engine sets the view's before each frame
+    private boolean lastMoving = true; // what the last frame was: a moving one (in buffer) or the still's average
+    private boolean anyFrame;
 
     public FrameRenderer(int threads, int divider) {
         this(threads, divider, TraceCall.TRACER);
@@ -78,13 +82,44 @@ public final class FrameRenderer implements AutoCloseable {
         divider = newDivider;
     }
 
+    /** The view transform frames are encoded through from now on. */
+    public void viewTransform(ViewTransform transform) {
+        view = transform;
+    }
+
+    /**
+     * The last frame again, encoded through the view transform now (the exposure or the tone changed): nothing
+     * is traced. Null before the first frame.
+     */
+    public BufferedImage again() {
+        if (!anyFrame) {
+            return null;
+        }
+        ViewTransform v = view;
+        if (lastMoving) {
+            FrameBuffer frame = buffer;
+            BufferedImage image = SrgbEncoder.newImage(frame.width(), frame.height());
+            int[] pixels = SrgbEncoder.pixels(image);
+            ranges.run(frame.width() * frame.height(), (from, to) -> SrgbEncoder.encode(frame, pixels, from, to, v));
+            return image;
+        }
+        BufferedImage image = SrgbEncoder.newImage(accumulator.width(), accumulator.height());
+        int[] pixels = SrgbEncoder.pixels(image);
+        ranges.run(accumulator.width() * accumulator.height(), (from, to) -> accumulator.encode(pixels, from, to, v));
+        return image;
+    }
+
     /** A frame with one sample per pixel, through the pixel centres. */
     public BufferedImage renderMoving(RenderScene scene, int width, int height) {
         FrameBuffer frame = buffer(width, height);
+        anyFrame = false;
         call.trace(tracer, scene, frame, 1, TraceCall.WHOLE_FRAME, 1, divider);
         BufferedImage image = SrgbEncoder.newImage(width, height);
         int[] pixels = SrgbEncoder.pixels(image);
-        ranges.run(width * height, (from, to) -> SrgbEncoder.encode(frame, pixels, from, to));
+        ViewTransform v = view;
+        ranges.run(width * height, (from, to) -> SrgbEncoder.encode(frame, pixels, from, to, v));
+        lastMoving = true;
+        anyFrame = true;
         return image;
     }
 
@@ -102,11 +137,15 @@ public final class FrameRenderer implements AutoCloseable {
             accumulator.reset(width, height);
         }
         FrameBuffer frame = buffer(width, height);
+        anyFrame = false;
         call.trace(tracer, scene, frame, samples, pass, count, divider);
         BufferedImage image = SrgbEncoder.newImage(width, height);
         int[] pixels = SrgbEncoder.pixels(image);
         accumulator.beginPasses(count);
-        ranges.run(width * height, (from, to) -> accumulator.addAndEncode(frame, pixels, from, to));
+        ViewTransform v = view;
+        ranges.run(width * height, (from, to) -> accumulator.addAndEncode(frame, pixels, from, to, v));
+        lastMoving = false;
+        anyFrame = true;
         return image;
     }
 

@@ -3,6 +3,7 @@ package glint.ui.frames;
 import glint.image.Dither;
 import glint.image.FrameBuffer;
 import glint.image.Srgb;
+import glint.image.ViewTransform;
 import java.awt.image.BufferedImage;
 import java.awt.image.DataBufferInt;
 
@@ -11,7 +12,9 @@ import java.awt.image.DataBufferInt;
  * codes of {@link Srgb#to8Bit(double, int)} (so a saved PNG equals what the window shows): the rounded code
  * from a table by the top bits of the linear value, corrected by the exact threshold of the next code,
  * then the dithered code, one of the two codes around the value, by the exact threshold of the upper one
- * at the pixel's dither level.
+ * at the pixel's dither level. Through a view transform other than the plain one, the exposure scales the
+ * value first (the standard curve then takes the same tables) or the transform encodes it itself
+ * ({@link ViewTransform#pixel}), as a PNG's writer does.
  */
 final class SrgbEncoder {
 
@@ -81,10 +84,26 @@ final class SrgbEncoder {
                 | code(b, Dither.channel(levels, 2));
     }
 
+    /** Pixel (x, y) of linear red, green and blue through a view transform, as 0xRRGGBB, dithered. */
+    static int pixel(float r, float g, float b, int x, int y, ViewTransform view, double[] scratch) {
+        if (view.isIdentity()) {
+            return pixel(r, g, b, x, y);
+        }
+        if (view.tone() == ViewTransform.Tone.STANDARD) {
+            return pixel(view.exposed(r), view.exposed(g), view.exposed(b), x, y);
+        }
+        return view.pixel(r, g, b, Dither.levels(x, y), scratch);
+    }
+
     /** A new image of the frame. */
     static BufferedImage toImage(FrameBuffer frame) {
+        return toImage(frame, ViewTransform.STANDARD);
+    }
+
+    /** A new image of the frame through a view transform. */
+    static BufferedImage toImage(FrameBuffer frame, ViewTransform view) {
         BufferedImage image = newImage(frame.width(), frame.height());
-        encode(frame, pixels(image), 0, frame.width() * frame.height());
+        encode(frame, pixels(image), 0, frame.width() * frame.height(), view);
         return image;
     }
 
@@ -100,11 +119,17 @@ final class SrgbEncoder {
 
     /** Encodes pixels {@code from} (inclusive) to {@code to} (exclusive) of the frame into {@code pixels}. */
     static void encode(FrameBuffer frame, int[] pixels, int from, int to) {
+        encode(frame, pixels, from, to, ViewTransform.STANDARD);
+    }
+
+    /** Encodes pixels {@code from} (inclusive) to {@code to} (exclusive) of the frame through a view transform. */
+    static void encode(FrameBuffer frame, int[] pixels, int from, int to, ViewTransform view) {
         float[] rgb = frame.rgb();
         int width = frame.width();
         int x = from % width, y = from / width;
+        double[] scratch = new double[3];
         for (int p = from, i = 3 * from; p < to; p++, i += 3) {
-            pixels[p] = pixel(rgb[i], rgb[i + 1], rgb[i + 2], x, y);
+            pixels[p] = pixel(rgb[i], rgb[i + 1], rgb[i + 2], x, y, view, scratch);
             if (++x == width) {
                 x = 0;
                 y++;

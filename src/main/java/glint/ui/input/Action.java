@@ -24,6 +24,8 @@ public enum Action {
     /** Widen / narrow the lens's aperture a step. */
     APERTURE_WIDER(Kind.COMMAND), APERTURE_NARROWER(Kind.COMMAND),
     TOGGLE_SHADING(Kind.COMMAND), TOGGLE_INTEGRATOR(Kind.COMMAND), DEPTH_UP(Kind.COMMAND), DEPTH_DOWN(Kind.COMMAND),
+    /** Half a stop of exposure brighter / darker; the other tone curve. */
+    EXPOSURE_UP(Kind.COMMAND), EXPOSURE_DOWN(Kind.COMMAND), TOGGLE_TONE(Kind.COMMAND),
     SCREENSHOT(Kind.COMMAND), RELOAD(Kind.COMMAND), QUIT(Kind.COMMAND),
     TOGGLE_OVERLAY(Kind.COMMAND), TOGGLE_HELP(Kind.COMMAND),
     /** Takes the roll out of the camera. */

@@ -56,7 +56,11 @@ public final class KeyBindings {
             key(Action.TOGGLE_INTEGRATOR, "I", "switch integrator: whitted / path / bdpt (light that bounces)",
                     KeyEvent.VK_I),
             typed(Action.DEPTH_UP, "+ (or =)", "recursion depth + 1", "+="),
-            typed(Action.DEPTH_DOWN, "-", "recursion depth - 1", "-_"),
+            typed(Action.DEPTH_DOWN, "- (or _)", "recursion depth - 1", "-_"),
+            typed(Action.EXPOSURE_UP, ". (or >)", "exposure + 1/2 stop: brighter", ".>"),
+            typed(Action.EXPOSURE_DOWN, ", (or <)", "exposure - 1/2 stop: darker", ",<"),
+            key(Action.TOGGLE_TONE, "T", "switch tone curve: neutral / standard (clamped at white)",
+                    KeyEvent.VK_T),
             typed(Action.APERTURE_WIDER, "]", "widen the aperture: a pinhole to 1/"
                     + fmt(1 / CameraController.FIRST_APERTURE) + " of the focus, x"
                     + String.format(java.util.Locale.ROOT, "%.2f", CameraController.APERTURE_STEP), "]"),

@@ -28,12 +28,24 @@ import glint.render.Shading;
  *                      empty when the window is within the limits
  * @param renderError   why the last frame could not be rendered (the engine tries again), or empty
  * @param lens          the camera's lens, {@code aperture 0.1  focus 5.3}, or empty for a pinhole
+ * @param view          the view transform, {@code exposure +1  tone neutral}, or empty when not shown
  */
 public record FrameStats(double fps, double msPerFrame, int renderWidth, int renderHeight, int viewWidth,
                          int viewHeight, int samplesDone, int samplesTotal, boolean moving, int threads,
                          Shading shading, LightTransport transport, double noise, int depth, double speed,
                          String scene, String message, String error, String sizeLimit, String renderError,
-                         String lens) {
+                         String lens, String view) {
+
+    /** Figures without the view transform's line. */
+    public FrameStats(double fps, double msPerFrame, int renderWidth, int renderHeight, int viewWidth,
+                      int viewHeight, int samplesDone, int samplesTotal, boolean moving, int threads,
+                      Shading shading, LightTransport transport, double noise, int depth, double speed,
+                      String scene, String message, String error, String sizeLimit, String renderError,
+                      String lens) {
+        this(fps, msPerFrame, renderWidth, renderHeight, viewWidth, viewHeight, samplesDone, samplesTotal, moving,
+                threads, shading, transport, noise, depth, speed, scene, message, error, sizeLimit, renderError, lens,
+                "");
+    }
 
     /** Figures of a Whitted frame through a pinhole, whose noise is not estimated. */
     public FrameStats(double fps, double msPerFrame, int renderWidth, int renderHeight, int viewWidth,

@@ -45,6 +45,9 @@ public final class OverlayText {
         lines.add(normal(String.format(Locale.ROOT, "shading %s   %sdepth %d   %sspeed %s/s", s.shading().key(),
                 s.transport().physical() ? "integrator " + s.transport().key() + "   " : "", s.depth(),
                 s.lens().isEmpty() ? "" : s.lens() + "   ", number(s.speed()))));
+        if (!s.view().isEmpty()) {
+            lines.add(normal(s.view()));
+        }
         lines.add(normal(s.scene()));
         if (!s.message().isEmpty()) {
             for (String line : s.message().split("\n")) { // a camera block (key C) is several lines

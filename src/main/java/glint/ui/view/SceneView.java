@@ -27,6 +27,7 @@ public final class SceneView {
     private Camera fileCamera;
     private RenderScene compiled; // null: compile again before the next frame
     private boolean needFrame = true;
+    private boolean retoned; // the view transform changed: the frame on screen is to be encoded again
     private int passesDone;
 
     private volatile Camera cameraNow;
@@ -138,6 +139,32 @@ public final class SceneView {
             invalidate();
         }
         return note;
+    }
+
+    /**
+     * The exposure keys: half a stop brighter (+1) or darker (-1); the frame on screen is encoded again, not
+     * rendered again ({@link #takeRetoned}). Returns what the overlay says.
+     */
+    public String stepExposure(int step) {
+        String note = seen.stepExposure(step);
+        retoned = true;
+        status.changed();
+        return note;
+    }
+
+    /** T: the other tone curve; the frame on screen is encoded again. Returns what the overlay says. */
+    public String toggleTone() {
+        String note = seen.toggleTone();
+        retoned = true;
+        status.changed();
+        return note;
+    }
+
+    /** Whether the view transform changed since this was last asked (the frame on screen is to be encoded again). */
+    public boolean takeRetoned() {
+        boolean was = retoned;
+        retoned = false;
+        return was;
     }
 
     /** F5 read the config again: its settings (under the scene's block) and flying speeds replace the user's. */

@@ -2,6 +2,7 @@ package glint.ui.view;
 
 import glint.config.Config;
 import glint.config.Flags;
+import glint.image.ViewTransform;
 import glint.input.InputException;
 import glint.render.LightTransport;
 import glint.render.RenderSettings;
@@ -11,8 +12,9 @@ import glint.ui.frames.ResolutionGovernor;
 
 /**
  * What the window sees a scene with: config.properties under the scene's {@code render:} block, under the
- * command line's flags ({@link Flags#effective}); and on top, the shading, integrator and depth the user
- * picked with M, I, + and -, which hold until the scene's or the config's value for them changes. Others
+ * command line's flags ({@link Flags#effective}); and on top, the shading, integrator, depth and view transform
+ * the user picked with M, I, + and -, the exposure keys and T, which hold until the scene's or the config's
+ * value for them changes. Others
  * read it; only its {@link SceneView} changes it, and starts the frame over when it does. Engine thread only.
  */
 public final class ViewSettings {
@@ -23,6 +25,7 @@ public final class ViewSettings {
     private Shading shading; // the shading, integrator and depth on screen: the scene's, or the user's
     private LightTransport transport;
     private int depth;
+    private ViewTransform view; // the exposure and tone on screen: the scene's, or the user's
     private String blockError = "";
 
     public ViewSettings(Config base, Flags flags) {
@@ -32,6 +35,7 @@ public final class ViewSettings {
         this.shading = base.shading();
         this.depth = base.recursionMax();
         this.transport = base.transport();
+        this.view = base.view();
     }
 
     /** A scene (a new one, or a new version of it) is on screen from now on. */
@@ -53,6 +57,9 @@ public final class ViewSettings {
                 shading = Shading.COOK_TORRANCE;
             }
         }
+        if (!seen.view().equals(config.view())) {
+            view = seen.view();
+        }
         config = seen;
     }
 
@@ -62,6 +69,7 @@ public final class ViewSettings {
         config = seenWith(scene);
         shading = config.shading();
         transport = config.transport();
+        view = config.view();
         depth = config.recursionMax(); // at most max_recursion: the config loader and the block refuse more
     }
 
@@ -85,6 +93,11 @@ public final class ViewSettings {
         return depth;
     }
 
+    /** The view transform on screen: the scene's, or the user's (the exposure keys and T). */
+    public ViewTransform view() {
+        return view;
+    }
+
     /** Why the scene's render: block was left out (beyond the config's limits), or empty. */
     String blockError() {
         return blockError;
@@ -97,7 +110,7 @@ public final class ViewSettings {
 
     /** The scene's settings with the shading, integrator and depth on screen. */
     public Config still() {
-        return config.withShading(shading).withTransport(transport).withRecursionMax(depth);
+        return config.withShading(shading).withTransport(transport).withRecursionMax(depth).withView(view);
     }
 
     /**
@@ -122,6 +135,26 @@ public final class ViewSettings {
             return "integrator " + transport.key() + ", shading cook-torrance (" + transport.key() + " needs it)";
         }
         return "integrator " + transport.key();
+    }
+
+    /** Half a stop of exposure brighter (+1) or darker (-1), within 16 stops; returns what the overlay says. */
+    String stepExposure(int step) {
+        double next = Math.max(-ViewTransform.MAX_EXPOSURE, Math.min(ViewTransform.MAX_EXPOSURE,
+                view.exposure() + EXPOSURE_STEP * step));
+        if (next == view.exposure()) {
+            return "exposure stays " + ViewTransform.stops(next) + " (from -16 to +16 stops)";
+        }
+        view = view.withExposure(next);
+        return "exposure " + ViewTransform.stops(next);
+    }
+
+    /** The stops one key press of exposure changes. */
+    public static final double EXPOSURE_STEP = 0.5;
+
+    /** The other tone curve; returns what the overlay says. */
+    String toggleTone() {
+        view = view.withTone(view.tone().other());
+        return "tone " + view.tone().key();
     }
 
     /**

@@ -117,6 +117,8 @@ class EngineStillTest {
         input.command(Action.ZOOM_IN); // not a command: ignored
         engine.step();
         input.command(Action.TOGGLE_SHADING); // what is on screen: phong
+        input.command(Action.EXPOSURE_UP); // half a stop brighter, in the standard curve
+        input.command(Action.TOGGLE_TONE);
         input.command(Action.RENDER_STILL_PFM);
         stepUntil("still: wrote ");
         List<Path> written = files();
@@ -137,6 +139,7 @@ class EngineStillTest {
         String args = command.group(1).replace("--scene " + sceneFile, "--scene " + pasted)
                 + " --config " + config + " --output " + headless;
         assertTrue(args.contains("--shading phong"), args);
+        assertTrue(args.contains("--exposure +0.5 --tone standard"), args);
         StringWriter mainErr = new StringWriter();
         assertEquals(0, Main.run(args.split(" "), new PrintWriter(new StringWriter(), true),
                 new PrintWriter(mainErr, true)), mainErr::toString);

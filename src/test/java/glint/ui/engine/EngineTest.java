@@ -9,6 +9,7 @@ import static org.junit.jupiter.api.Assertions.assertTrue;
 import glint.config.Config;
 import glint.image.FrameBuffer;
 import glint.image.ImageWriter;
+import glint.image.ViewTransform;
 import glint.input.InputException;
 import glint.math.Vector3d;
 import glint.render.RenderScene;
@@ -87,6 +88,51 @@ class EngineTest {
         }
     }
 
+    /**
+     * The exposure keys and T change the picture at once, by encoding the frame on screen again: no pass is
+     * traced (the refinement stays complete), and the overlay shows the view transform.
+     */
+    @Test
+    void exposureAndToneKeysEncodeTheFrameOnScreenAgain() {
+        refine();
+        BufferedImage before = presenter.last().image();
+        assertEquals("exposure 0  tone neutral", lastStats().view());
+        input.command(Action.EXPOSURE_UP);
+        input.command(Action.EXPOSURE_UP);
+        assertEquals(Engine.IDLE, engine.step(), "nothing traced: the refinement is complete");
+        assertEquals(4, lastStats().samplesDone());
+        assertEquals("exposure +1  tone neutral", lastStats().view());
+        BufferedImage brighter = presenter.last().image();
+        int lighter = 0;
+        for (int y = 0; y < H; y++) {
+            for (int x = 0; x < W; x++) {
+                int a = before.getRGB(x, y) & 0xff, b = brighter.getRGB(x, y) & 0xff;
+                assertTrue(b >= a, "pixel " + x + "," + y + " darker a stop up");
+                lighter += b > a ? 1 : 0;
+            }
+        }
+        assertTrue(lighter > W * H / 2, "most pixels lighter: " + lighter);
+        input.command(Action.TOGGLE_TONE);
+        input.command(Action.EXPOSURE_DOWN);
+        input.command(Action.EXPOSURE_DOWN);
+        assertEquals(Engine.IDLE, engine.step());
+        assertEquals("exposure 0  tone standard", lastStats().view());
+        FrameBuffer still = new FrameBuffer(W, H);
+        try (Tracer tracer = new Tracer(2)) {
+            tracer.render(RenderScene.compile(engine.scene(), config.renderSettings()), still, 4, 0, 8);
+        }
+        BufferedImage standard = ImageWriter.toImage(still, ViewTransform.STANDARD);
+        BufferedImage shown = presenter.last().image();
+        for (int y = 0; y < H; y++) {
+            for (int x = 0; x < W; x++) {
+                for (int shift = 0; shift <= 16; shift += 8) {
+                    int d = Math.abs((standard.getRGB(x, y) >> shift & 0xff) - (shown.getRGB(x, y) >> shift & 0xff));
+                    assertTrue(d <= 1, "the standard curve's still image, at pixel " + x + "," + y);
+                }
+            }
+        }
+    }
+
     @Test
     void stillViewRefinesToTheStillImageThenIdles() throws InputException {
         for (int pass = 1; pass <= 4; pass++) {
@@ -112,7 +158,7 @@ class EngineTest {
         try (Tracer tracer = new Tracer(2)) {
             tracer.render(RenderScene.compile(scene, config.renderSettings()), still, 4, 0, 8);
         }
-        BufferedImage expected = ImageWriter.toImage(still);
+        BufferedImage expected = ImageWriter.toImage(still, config.view()); // the same view transform as a PNG's
         int differing = 0;
         for (int y = 0; y < H; y++) {
             for (int x = 0; x < W; x++) {

@@ -8,6 +8,7 @@ import glint.config.Config;
 import glint.config.Flags;
 import glint.image.FrameBuffer;
 import glint.image.Srgb;
+import glint.image.ViewTransform;
 import glint.input.InputException;
 import glint.render.LightTransport;
 import glint.render.RenderScene;
@@ -71,7 +72,8 @@ class PathRefinementTest {
 
     @BeforeEach
     void open() throws IOException, InputException {
-        config = Config.defaults().withSize(W, H).withSamples(4).withThreads(2);
+        config = Config.defaults().withSize(W, H).withSamples(4).withThreads(2)
+                .withView(ViewTransform.STANDARD); // pixels compared with the plain sRGB encoding
         Path file = dir.resolve("scene.yaml");
         Files.writeString(file, TestScenes.sphere(0.4, 0.5, 0.8)); // a sky: every matte point sees it
         SceneSource source = new SceneSource(file, () -> config);

@@ -5,6 +5,7 @@ import static org.junit.jupiter.api.Assertions.assertTrue;
 
 import glint.config.Config;
 import glint.image.Srgb;
+import glint.image.ViewTransform;
 import glint.math.Vector3d;
 import glint.scene.Scene;
 import glint.ui.Poll;
@@ -51,7 +52,8 @@ class SceneReloadTest {
     void open() throws Exception {
         file = dir.resolve("scene.yaml");
         Files.writeString(file, TestScenes.sphere(0.1, 0.2, 0.3));
-        Config config = Config.defaults().withSize(W, H).withSamples(1).withThreads(2);
+        Config config = Config.defaults().withSize(W, H).withSamples(1).withThreads(2)
+                .withView(ViewTransform.STANDARD); // pixels compared with the plain sRGB encoding
         SceneSource source = new SceneSource(file, () -> config);
         watcher = new SceneWatcher(source, timer);
         Scene scene = source.loadScene();
