@@ -49,7 +49,7 @@ final class AccuracyChart {
     private AccuracyChart() {
     }
 
-    /** The methods against physics: ray casting, Whitted along depth and along samples, the path tracer. */
+    /** The methods against physics: ray casting, Whitted along depth and along samples, the path and bdpt tracers. */
     static List<Series> methodSeries() {
         StudyConfig shipped = StudyConfig.shipped();
         return List.of(
@@ -62,7 +62,9 @@ final class AccuracyChart {
                         c -> isWhittedAlong(c, StudyConfig.Knob.SAMPLES, shipped.depth()), StudyConfig::samples,
                         c -> "s" + c.samples(), 3),
                 new Series("path s1-1024", StudyConfig::isPath, StudyConfig::samples,
-                        c -> "s" + c.samples(), 0));
+                        c -> "s" + c.samples(), 0),
+                new Series("bdpt s1-256", c -> c.method() == StudyConfig.Method.BDPT, StudyConfig::samples,
+                        c -> "s" + c.samples(), 4));
     }
 
     /** Whitted against its own converged image: along depth, samples and min_weight from the shipped default. */

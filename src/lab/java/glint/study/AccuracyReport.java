@@ -73,7 +73,9 @@ final class AccuracyReport {
                    Measurement pathWinsFlip) {
     }
 
-    static Verdict verdict(String scene, List<Measurement> ms) {
+    /** The verdict between Whitted and the path tracer; the bidirectional tracer's points are left out of it. */
+    static Verdict verdict(String scene, List<Measurement> all) {
+        List<Measurement> ms = all.stream().filter(m -> m.config().method() != StudyConfig.Method.BDPT).toList();
         Measurement best = null;
         for (Measurement m : ms) {
             if (!m.config().isPath() && (best == null || m.relMse() < best.relMse())) {

@@ -11,7 +11,7 @@ import glint.render.Shading;
  * One method of the speed/accuracy study: an integrator with its depth and samples, and the knobs
  * of Whitted's that trade render time for accuracy.
  *
- * @param transport Whitted's integrator (depth 1: ray casting) or the path tracer
+ * @param transport Whitted's integrator (depth 1: ray casting), the path tracer or the bidirectional one
  * @param shading   cook-torrance (the reference model) or phong
  * @param depth     recursion_max
  * @param samples   stratified samples per pixel (a perfect square)
@@ -68,6 +68,13 @@ public record StudyConfig(LightTransport transport, Shading shading, int depth, 
         return path(shipped().depth(), samples);
     }
 
+    /** The bidirectional path tracer at the shipped depth, as {@code --integrator bdpt} renders. */
+    public static StudyConfig bdpt(int samples) {
+        StudyConfig s = shipped();
+        return new StudyConfig(LightTransport.BDPT, Shading.COOK_TORRANCE, s.depth(), samples, s.minWeight(),
+                GlassFresnel.EXACT, Pruning.ROULETTE);
+    }
+
     private static StudyConfig path(int depth, int samples) {
         StudyConfig s = shipped();
         return new StudyConfig(LightTransport.PATH, Shading.COOK_TORRANCE, depth, samples, s.minWeight(),
@@ -91,14 +98,20 @@ public record StudyConfig(LightTransport transport, Shading shading, int depth, 
         return transport == LightTransport.PATH;
     }
 
-    /** The method's family: ray casting (Whitted at depth 1), Whitted or path. */
+    /** Whether it solves the rendering equation: the path tracer or the bidirectional one. */
+    public boolean isPhysical() {
+        return transport.physical();
+    }
+
+    /** The method's family: ray casting (Whitted at depth 1), Whitted, path or bdpt. */
     public Method method() {
-        return isPath() ? Method.PATH : depth == 1 ? Method.RAY_CASTING : Method.WHITTED;
+        return transport == LightTransport.BDPT ? Method.BDPT : isPath() ? Method.PATH
+                : depth == 1 ? Method.RAY_CASTING : Method.WHITTED;
     }
 
     /** The families of methods, each with its name in the charts and tables. */
     public enum Method {
-        RAY_CASTING("ray casting"), WHITTED("Whitted"), PATH("path");
+        RAY_CASTING("ray casting"), WHITTED("Whitted"), PATH("path"), BDPT("bdpt");
 
         private final String title;
 
@@ -167,8 +180,8 @@ public record StudyConfig(LightTransport transport, Shading shading, int depth, 
      * and "cut" for the plain cut-off; the path tracer's: "path d16 s64".
      */
     public String label() {
-        if (isPath()) {
-            return "path d" + depth + " s" + samples;
+        if (isPhysical()) {
+            return transport.key() + " d" + depth + " s" + samples;
         }
         StringBuilder b = new StringBuilder();
         b.append('d').append(depth).append(" s").append(samples).append(" w").append(Numbers.sci(minWeight));
@@ -190,6 +203,7 @@ public record StudyConfig(LightTransport transport, Shading shading, int depth, 
             case RAY_CASTING -> "ray casting s" + samples;
             case WHITTED -> "Whitted d" + depth + " s" + samples;
             case PATH -> "path s" + samples + (depth == shipped().depth() ? "" : " d" + depth);
+            case BDPT -> "bdpt s" + samples + (depth == shipped().depth() ? "" : " d" + depth);
         };
     }
 

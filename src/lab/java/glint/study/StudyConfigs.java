@@ -9,7 +9,7 @@ import java.util.List;
 /**
  * The methods the speed/accuracy study measures. Against physics ({@link #methods}): ray casting
  * (Whitted at depth 1) at 1 to 64 samples, Whitted at depths 2 to 16 and at 1 to 64 samples, the
- * path tracer at 1 to 1024 samples. Against Whitted's own converged image ({@link #whittedKnobs}):
+ * path tracer at 1 to 1024 samples, the bidirectional one at 1 to 256. Against Whitted's own converged image ({@link #whittedKnobs}):
  * besides depth and samples, Whitted's other knobs turned one at a time from the shipped default
  * (pruning weight, the plain cut-off, Schlick's glass Fresnel, the phong model).
  */
@@ -19,6 +19,7 @@ public final class StudyConfigs {
     private static final int[] WHITTED_DEPTHS = {2, 3, 5, 8, 16};
     private static final int[] WHITTED_SAMPLES = {1, 4, 16, 64};
     private static final int[] PATH_SAMPLES = {1, 4, 16, 64, 256, 1024};
+    private static final int[] BDPT_SAMPLES = {1, 4, 16, 64, 256};
 
     private StudyConfigs() {
     }
@@ -32,7 +33,7 @@ public final class StudyConfigs {
 
     /** The methods compared against the converged path-traced image, cheapest family first. */
     public static List<StudyConfig> methods() {
-        return methods(RAY_CASTING_SAMPLES, WHITTED_DEPTHS, WHITTED_SAMPLES, PATH_SAMPLES);
+        return methods(RAY_CASTING_SAMPLES, WHITTED_DEPTHS, WHITTED_SAMPLES, PATH_SAMPLES, BDPT_SAMPLES);
     }
 
     /** Whitted's knobs besides depth and samples, each turned alone from the shipped default. */
@@ -50,20 +51,23 @@ public final class StudyConfigs {
      */
     public static boolean againstWhitted(StudyConfig config) {
         StudyConfig shipped = StudyConfig.shipped();
-        return !config.isPath() && (config.depth() != 1 || config.samples() == shipped.samples());
+        return !config.isPhysical() && (config.depth() != 1 || config.samples() == shipped.samples());
     }
 
     /**
      * A smaller set for a short run, every family still there: ray casting at 1 and 4 samples, Whitted
-     * at depths 2 and 16 and at 1 sample, the path tracer at 1 to 64 samples, and the cut-off.
+     * at depths 2 and 16 and at 1 sample, the path tracer at 1 to 64 samples, the bidirectional one at 1 to 16,
+     * and the cut-off.
      */
     public static List<StudyConfig> quick() {
-        List<StudyConfig> list = methods(new int[] {1, 4}, new int[] {2, 16}, new int[] {1}, new int[] {1, 4, 16, 64});
+        List<StudyConfig> list = methods(new int[] {1, 4}, new int[] {2, 16}, new int[] {1}, new int[] {1, 4, 16, 64},
+                new int[] {1, 4, 16});
         list.add(StudyConfig.shipped().cutOff());
         return list;
     }
 
-    private static List<StudyConfig> methods(int[] rayCasting, int[] depths, int[] whittedSamples, int[] path) {
+    private static List<StudyConfig> methods(int[] rayCasting, int[] depths, int[] whittedSamples, int[] path,
+                                             int[] bdpt) {
         LinkedHashSet<StudyConfig> all = new LinkedHashSet<>();
         StudyConfig shipped = StudyConfig.shipped();
         for (int samples : rayCasting) {
@@ -77,6 +81,9 @@ public final class StudyConfigs {
         }
         for (int samples : path) {
             all.add(StudyConfig.path(samples));
+        }
+        for (int samples : bdpt) {
+            all.add(StudyConfig.bdpt(samples));
         }
         return new ArrayList<>(all);
     }

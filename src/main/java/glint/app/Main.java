@@ -21,7 +21,8 @@ import picocli.CommandLine.Option;
 @Command(name = "glint", mixinStandardHelpOptions = true, version = "Glint 0.1.0",
         description = "Interactive ray tracer for spheres and planes.%n"
                 + "Fly through a scene in the window with Whitted's integrator (the default);%n"
-                + "render stills with the path tracer (--integrator path): light that bounces.%n"
+                + "render stills with the path tracer (--integrator path): light that bounces;%n"
+                + "with caustics (light through glass, off mirrors) with --integrator bdpt.%n"
                 + "Without --output or --bench, opens the window on the scene.",
         sortOptions = false)
 public final class Main implements Callable<Integer> {
@@ -59,7 +60,7 @@ public final class Main implements Callable<Integer> {
     @Option(names = "--shading", paramLabel = "MODEL", description = "cook-torrance or phong")
     String shading;
 
-    @Option(names = "--integrator", paramLabel = "NAME", description = "whitted (direct light, mirrors, glass) or path (light that bounces)")
+    @Option(names = "--integrator", paramLabel = "NAME", description = "whitted (direct light, mirrors, glass), path (light that bounces) or bdpt (and caustics)")
     String integrator;
 
     @Option(names = "--exposure", paramLabel = "STOPS",

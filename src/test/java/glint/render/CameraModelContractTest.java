@@ -127,6 +127,68 @@ class CameraModelContractTest {
         }
     }
 
+    /**
+     * Light tracing's view of the camera: a point on a camera ray (film point and lens point given) is seen by
+     * {@code sees} with the same lens numbers at that film point, from that lens point, with the ray's own
+     * direction density as its importance.
+     */
+    @ParameterizedTest
+    @MethodSource("models")
+    void aPointOnACameraRayIsSeenAtItsFilmPointFromItsLensPoint(Class<?> model) {
+        SplittableRandom random = new SplittableRandom(64);
+        double[] o = new double[3], d = new double[3];
+        CameraSight sight = new CameraSight();
+        for (int trial = 0; trial < TRIALS; trial++) {
+            Camera scene = CASES.get(model).apply(random);
+            CameraModel camera = CameraModel.of(scene);
+            int width = 1 + random.nextInt(900), height = 1 + random.nextInt(700);
+            double px = random.nextDouble(0, width), py = random.nextDouble(0, height);
+            double u = random.nextDouble(), v = random.nextDouble();
+            ray(camera, px, py, u, v, width, height, o, d);
+            double t = Math.exp(random.nextDouble(-3, 5));
+            double qx = o[0] + t * d[0], qy = o[1] + t * d[1], qz = o[2] + t * d[2];
+            String where = "film point " + px + ", " + py + " at " + t + " of " + scene;
+            assertTrue(camera.sees(qx, qy, qz, u, v, width, height, sight), where);
+            double pixels = 1e-7 * Math.max(width, height) * (1 + camera.eye().length() / t);
+            assertEquals(px, sight.filmX, pixels, where);
+            assertEquals(py, sight.filmY, pixels, where);
+            assertEquals(o[0], sight.lensX, 1e-9 * (1 + camera.eye().length()), where);
+            assertEquals(t, sight.distance, 1e-9 * (t + camera.eye().length()), where);
+            assertEquals(-d[0], sight.towardX, 1e-6 * (1 + camera.eye().length() / t), where);
+            double pdf = camera.directionPdf(o[0], o[1], o[2], d[0], d[1], d[2], width, height);
+            assertEquals(pdf, sight.importance, 1e-6 * pdf, where);
+            assertTrue(!camera.sees(o[0] - d[0], o[1] - d[1], o[2] - d[2], u, v, width, height, sight),
+                    "behind the lens: " + where);
+        }
+    }
+
+    /**
+     * The direction density of the camera's rays is one over the whole sphere: its mean over directions
+     * uniform on the sphere, times 4 pi, is 1 (from the lens centre and, for a lens, from a point off it).
+     */
+    @ParameterizedTest
+    @MethodSource("models")
+    void theDirectionDensityIntegratesToOne(Class<?> model) {
+        SplittableRandom random = new SplittableRandom(65);
+        for (int trial = 0; trial < 6; trial++) {
+            Camera scene = CASES.get(model).apply(random);
+            CameraModel camera = CameraModel.of(scene);
+            int width = 40 + random.nextInt(600), height = 40 + random.nextInt(400);
+            double[] o = new double[3], d = new double[3];
+            ray(camera, width / 2.0, height / 2.0, random.nextDouble(), random.nextDouble(), width, height, o, d);
+            int n = 2_000_000;
+            double sum = 0, sum2 = 0;
+            for (int i = 0; i < n; i++) {
+                double[] w = RandomScenes.unitVector(random);
+                double p = 4 * Math.PI * camera.directionPdf(o[0], o[1], o[2], w[0], w[1], w[2], width, height);
+                sum += p;
+                sum2 += p * p;
+            }
+            double mean = sum / n, error = Math.sqrt((sum2 / n - mean * mean) / n);
+            assertEquals(1, mean, 5 * error + 1e-3, scene + " at " + width + " x " + height);
+        }
+    }
+
     /** The lens point's first number: the square's corners and centre, then random ones. */
     private static double lensU(int k, SplittableRandom random) {
         return k == 0 ? 0 : k == 1 ? 0.5 : k == 2 ? Math.nextDown(1.0) : random.nextDouble();

@@ -29,13 +29,22 @@ class PathReferenceTest {
             "brushed-metals, 256, 3.12e-2, 3.20"})
     void matchesThePhysicallyBasedReferenceWithinTheBound(String name, int samples, double relMseBound,
                                                           double levelsBound) throws Exception {
+        assertWithinBound(LightTransport.PATH, name, samples, relMseBound, levelsBound);
+    }
+
+    /**
+     * Renders reference scene {@code name} with {@code transport} at the reference's size, {@code samples}
+     * samples, depth 64 and cook-torrance, and asserts its relative MSE and mean 8-bit error within the bounds.
+     */
+    static void assertWithinBound(LightTransport transport, String name, int samples, double relMseBound,
+                                  double levelsBound) throws Exception {
         Path folder = Path.of("src/test/resources/reference-pt");
         FrameBuffer reference = PfmReader.read(folder.resolve(name + ".pfm"));
         int width = reference.width(), height = reference.height(); // 400 x 300, or 200 x 150 (the README)
         assertEquals(width * 3, height * 4);
         Config defaults = Config.defaults();
         RenderSettings settings = new RenderSettings(Shading.COOK_TORRANCE, 64, defaults.minWeight(),
-                defaults.epsilon()).withTransport(LightTransport.PATH);
+                defaults.epsilon()).withTransport(transport);
         FrameBuffer frame = new FrameBuffer(width, height);
         try (Tracer tracer = new Tracer(2)) {
             tracer.render(RenderScene.compile(SceneLoader.load(folder.resolve(name + ".yaml")), settings), frame, samples, 0,
@@ -43,8 +52,8 @@ class PathReferenceTest {
         }
         double relMse = RelativeMse.of(frame, reference);
         double levels = ImageErrors.meanLevels(frame, reference);
-        System.out.printf("reference-pt %s: relMSE %.3e (bound %.1e), 8-bit %.3f (bound %.2f)%n", name, relMse,
-                relMseBound, levels, levelsBound);
+        System.out.printf("reference-pt %s, %s: relMSE %.3e (bound %.1e), 8-bit %.3f (bound %.2f)%n", transport.key(),
+                name, relMse, relMseBound, levels, levelsBound);
         assertTrue(relMse <= relMseBound, name + ": relMSE " + relMse + " exceeds " + relMseBound);
         assertTrue(levels <= levelsBound, name + ": mean 8-bit error " + levels + " exceeds " + levelsBound);
     }

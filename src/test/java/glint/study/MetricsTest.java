@@ -58,7 +58,7 @@ class MetricsTest {
         assertEquals("w1e-3", StudyConfig.ct(16, 4, 1e-3).knobLabel());
         assertEquals("shipped", shipped.knobLabel());
         assertEquals(StudyConfigs.full().size(), new java.util.HashSet<>(StudyConfigs.full()).size());
-        assertEquals(23, StudyConfigs.full().size());
+        assertEquals(28, StudyConfigs.full().size());
     }
 
     @Test
@@ -76,18 +76,26 @@ class MetricsTest {
         assertEquals(glint.render.LightTransport.WHITTED, StudyConfig.whitted(8, 4).settings().transport());
         assertEquals(64, StudyConfig.pathReference(4096).depth());
         assertEquals("path s4096 d64", StudyConfig.pathReference(4096).methodLabel());
+        assertEquals("bdpt s16", StudyConfig.bdpt(16).methodLabel());
+        assertEquals(StudyConfig.Method.BDPT, StudyConfig.bdpt(16).method());
+        assertEquals(glint.render.LightTransport.BDPT, StudyConfig.bdpt(16).settings().transport());
     }
 
-    /** Every family of methods against physics: ray casting, Whitted along depth and samples, the path up to 1024 samples. */
+    /**
+     * Every family of methods against physics: ray casting, Whitted along depth and samples, the path up to 1024
+     * samples, bdpt up to 256.
+     */
     @Test
     void theMethodsSpanEveryFamilyAndTheQuickSetIsPartOfTheFullOne() {
         List<StudyConfig> methods = StudyConfigs.methods();
-        assertEquals(18, methods.size());
+        assertEquals(23, methods.size());
         assertTrue(methods.contains(StudyConfig.whitted(1, 1)));
         assertTrue(methods.contains(StudyConfig.whitted(2, 4)));
         assertTrue(methods.contains(StudyConfig.whitted(16, 64)));
         assertTrue(methods.contains(StudyConfig.path(1)));
         assertTrue(methods.contains(StudyConfig.path(1024)));
+        assertTrue(methods.contains(StudyConfig.bdpt(1)));
+        assertTrue(methods.contains(StudyConfig.bdpt(256)));
         assertTrue(methods.contains(StudyConfig.shipped()));
         List<StudyConfig> full = StudyConfigs.full();
         for (StudyConfig config : StudyConfigs.quick()) {

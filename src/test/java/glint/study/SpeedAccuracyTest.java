@@ -116,7 +116,7 @@ class SpeedAccuracyTest {
         for (Measurement m : physics) {
             if (m.config().isPath()) {
                 pathErrors.add(m.relMse());
-            } else {
+            } else if (!m.config().isPhysical()) {
                 bestWhitted = Math.min(bestWhitted, m.relMse());
             }
         }
