@@ -10,6 +10,7 @@ import glint.still.StillRun;
 import java.io.IOException;
 import java.io.InterruptedIOException;
 import java.io.PrintWriter;
+import java.nio.charset.StandardCharsets;
 import java.nio.file.Path;
 import java.util.ArrayList;
 import java.util.List;
@@ -19,6 +20,7 @@ import java.util.concurrent.CancellationException;
 import java.util.concurrent.CountDownLatch;
 import java.util.concurrent.TimeUnit;
 import java.util.concurrent.atomic.AtomicReference;
+import java.util.zip.CRC32;
 
 /**
  * The window's render key: the view rendered as a still image through the pipeline {@code --output} uses
@@ -66,7 +68,7 @@ public final class StillRender implements AutoCloseable {
     static Job job(RenderScene scene, Camera printed, Config still, Path scenePath, Path configFile,
                    Screenshots folder, boolean pfm) {
         // named after the scene: phong-classic-20261202-153000-123.png, in the screenshots' folder
-        Path png = folder.name(scenePath.getFileName().toString().replaceFirst("\\.[^.]*$", ""), ".png");
+        Path png = folder.name(stem(scenePath), ".png");
         String config = configFile == null ? "" : " --config " + JarCommand.word(configFile.toString());
         String recipe = "still: the same image headless, with this camera in " + scenePath + ":\n"
                 + String.format(Locale.ROOT, "  %s%s --scene %s --width %d --height %d --spp %d"
@@ -78,6 +80,36 @@ public final class StillRender implements AutoCloseable {
                 + CameraBlock.yaml(printed);
         Path pfmFile = pfm ? png.resolveSibling(png.getFileName().toString().replaceFirst("\\.png$", ".pfm")) : null;
         return new Job(scene, still, png, pfmFile, StillRun.describe(still, false), recipe);
+    }
+
+    /** The most bytes (UTF-8) of a scene's name a still's name begins with; a file's name may have 255. */
+    static final int STEM_BYTES = 100;
+
+    /**
+     * What a still's name begins with: the scene file's name without its extension, or, when that is longer
+     * than {@link #STEM_BYTES}, its first characters and a code of the whole ({@code aaaa-1a2b3c4d}), so that
+     * the still's name fits the file system and two scenes whose long names differ only at the end still name
+     * their stills apart.
+     */
+    static String stem(Path scenePath) {
+        String name = scenePath.getFileName().toString().replaceFirst("\\.[^.]*$", "");
+        byte[] utf8 = name.getBytes(StandardCharsets.UTF_8);
+        if (utf8.length <= STEM_BYTES) {
+            return name;
+        }
+        CRC32 code = new CRC32();
+        code.update(utf8);
+        String suffix = String.format(Locale.ROOT, "-%08x", code.getValue());
+        StringBuilder start = new StringBuilder();
+        int bytes = suffix.length();
+        for (int c : name.codePoints().toArray()) {
+            bytes += new String(Character.toChars(c)).getBytes(StandardCharsets.UTF_8).length;
+            if (bytes > STEM_BYTES) {
+                break;
+            }
+            start.appendCodePoint(c);
+        }
+        return start + suffix;
     }
 
     /** Whether an overlay line says a still is under way (which Enter or Esc then cancels). Any thread. */

@@ -183,6 +183,32 @@ class EngineStillTest {
         assertArrayEquals(Files.readAllBytes(headless), Files.readAllBytes(png), "the window's still and the headless one");
     }
 
+    /**
+     * A scene whose name is 245 characters long (250 with .yaml, which the file system takes): its stills' names
+     * keep the first part of it and a code of the whole, within the file system's 255 bytes, and two such scenes
+     * that differ only at the end still name their stills apart.
+     */
+    @Test
+    void aStillOfASceneWithALongNameHasAShortenedNameOfItsOwn() throws Exception {
+        List<String> stems = new java.util.ArrayList<>();
+        for (String end : new String[] {"-one", "-two"}) {
+            sceneFile = Files.writeString(dir.resolve("a".repeat(241) + end + ".yaml"), TestScenes.sphere(0.1, 0.2, 0.3));
+            open(4);
+            List<Path> before = files();
+            input.command(Action.RENDER_STILL);
+            stepUntilMatches("still: (wrote|not written) .*");
+            assertTrue(message().startsWith("still: wrote "), message());
+            Path png = files().stream().filter(p -> !before.contains(p)).findFirst().orElseThrow();
+            String file = png.getFileName().toString();
+            assertTrue(file.matches("a{91}-[0-9a-f]{8}-\\d{8}-\\d{6}-\\d{3}\\.png"), file);
+            assertTrue(out.toString().contains(" --output " + file + "\n"), out::toString);
+            stems.add(file.substring(0, 100));
+            out.getBuffer().setLength(0);
+        }
+        assertFalse(stems.get(0).equals(stems.get(1)), stems::toString);
+        assertEquals("", err.toString());
+    }
+
     /** After Page Down onto a scene that does not load, the view is the old scene's: no still, and why. */
     @Test
     void aStillIsRefusedWhileTheSceneFileDoesNotLoadAsShown() throws Exception {
