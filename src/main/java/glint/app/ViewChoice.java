@@ -49,7 +49,8 @@ final class ViewChoice {
     /** {@code view 2 'from above'}: the chosen view, for a report line; empty for the scene's camera. */
     String describe(Scene scene) {
         int i = given == null ? -1 : indexIn(scene.views());
-        return i < 0 ? "" : "view " + (i + 1) + " " + InputException.quote(scene.views().get(i).name());
+        // scene text, printed on standard output: escaped, so a line break or a terminal's escape shows as written
+        return i < 0 ? "" : InputException.printable("view " + (i + 1) + " " + InputException.quote(scene.views().get(i).name()));
     }
 
     /** Where the chosen view is in {@code views}: by its number, or else by its name; -1 when it is not there. */

@@ -3,6 +3,7 @@ package glint.ui.capture;
 import glint.config.Config;
 import glint.config.JarCommand;
 import glint.image.ViewTransform;
+import glint.input.InputException;
 import glint.render.RenderScene;
 import glint.scene.Camera;
 import glint.still.StillRefused;
@@ -53,7 +54,7 @@ public final class StillRender implements AutoCloseable {
 
         /** The files written, for the overlay and the report: {@code a.png} or {@code a.png and a.pfm}. */
         String files() {
-            return png + (pfm != null ? " and " + pfm : "");
+            return InputException.printable(png + (pfm != null ? " and " + pfm : ""));
         }
 
         List<Path> images() {
@@ -70,7 +71,8 @@ public final class StillRender implements AutoCloseable {
         // named after the scene: phong-classic-20261202-153000-123.png, in the screenshots' folder
         Path png = folder.name(stem(scenePath), ".png");
         String config = configFile == null ? "" : " --config " + JarCommand.word(configFile.toString());
-        String recipe = "still: the same image headless, with this camera in " + scenePath + ":\n"
+        String recipe = "still: the same image headless, with this camera in "
+                + InputException.printable(scenePath.toString()) + ":\n"
                 + String.format(Locale.ROOT, "  %s%s --scene %s --width %d --height %d --spp %d"
                         + " --shading %s --integrator %s --depth %d --exposure %s --tone %s --output %s%n",
                         JarCommand.java(), config, JarCommand.word(scenePath.toString()), still.displayWidth(),
@@ -89,10 +91,14 @@ public final class StillRender implements AutoCloseable {
      * What a still's name begins with: the scene file's name without its extension, or, when that is longer
      * than {@link #STEM_BYTES}, its first characters and a code of the whole ({@code aaaa-1a2b3c4d}), so that
      * the still's name fits the file system and two scenes whose long names differ only at the end still name
-     * their stills apart.
+     * their stills apart. Control characters (a line break, a terminal's escape) become {@code _}.
      */
     static String stem(Path scenePath) {
         String name = scenePath.getFileName().toString().replaceFirst("\\.[^.]*$", "");
+        StringBuilder plain = new StringBuilder(); // a line break or a terminal's escape in a name: _
+        name.codePoints().mapToObj(Character::toString)
+                .forEach(c -> plain.append(InputException.printable(c).equals(c) ? c : "_"));
+        name = plain.toString();
         byte[] utf8 = name.getBytes(StandardCharsets.UTF_8);
         if (utf8.length <= STEM_BYTES) {
             return name;

@@ -209,6 +209,27 @@ class EngineStillTest {
         assertEquals("", err.toString());
     }
 
+    /**
+     * A scene file whose name holds a line break and a terminal's escape: the still's name has neither, and the
+     * report prints the scene's name escaped, its command in bash's quotes, every line as it reads.
+     */
+    @Test
+    void aSceneNameWithALineBreakAndAnEscapeIsPrintedEscaped() throws Exception {
+        sceneFile = Files.writeString(dir.resolve("ball\nnew\u001b[2J.yaml"), TestScenes.sphere(0.1, 0.2, 0.3));
+        open(4);
+        input.command(Action.RENDER_STILL);
+        stepUntilMatches("still: (wrote|not written) .*");
+        String file = files().get(0).getFileName().toString();
+        assertTrue(file.matches("ball_new_\\[2J-\\d{8}-\\d{6}-\\d{3}\\.png"), file);
+        String printed = out.toString();
+        assertTrue(printed.contains("\nstill: the same image headless, with this camera in " + dir
+                + "/ball\\nnew\\u001b[2J.yaml:\n"), printed);
+        assertTrue(printed.contains(" --scene $'" + dir + "/ball\\nnew\\u001b[2J.yaml' "), printed);
+        assertTrue(printed.contains(" --output \"" + file + "\"\n"), printed);
+        assertFalse(printed.contains("\u001b"), printed);
+        assertEquals(8, printed.lines().count(), printed); // wrote, the same image, the command, the camera block
+    }
+
     /** After Page Down onto a scene that does not load, the view is the old scene's: no still, and why. */
     @Test
     void aStillIsRefusedWhileTheSceneFileDoesNotLoadAsShown() throws Exception {
