@@ -73,6 +73,10 @@ final class ViewChoice {
             return views.get(i);
         }
         String what = "--view " + (isNumber() ? given : InputException.quote(given)) + ": ";
+        if (given.indexOf('\uFFFD') >= 0 && FileNames.asciiLocale()) { // café typed under LC_ALL=C: its bytes are lost
+            throw new InputException("glint", 0, 0, what + "the name is not ASCII, and the locale (" + FileNames.locale()
+                    + ") allows only ASCII arguments; " + FileNames.FIX);
+        }
         if (views.isEmpty()) {
             throw new InputException("glint", 0, 0, what + InputException.quotePath(file)
                     + " has no views (a scene lists them under views:, docs/scene-format.md#views)");
