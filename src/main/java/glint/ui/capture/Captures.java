@@ -59,6 +59,9 @@ public final class Captures implements AutoCloseable {
             return stills.cancel();
         }
         String refusal = view.stillRefusal();
+        if (refusal.isEmpty()) { // saved since, loading, not on screen yet: the command would read the new file
+            refusal = source.changedSince(view.scene());
+        }
         if (!refusal.isEmpty()) { // its headless command would not give the image on screen
             return "still not rendered: the headless command would not give this view: " + refusal;
         }

@@ -50,6 +50,7 @@ class EngineStillTest {
     private Path sceneFile;
     private Path shots;
     private Engine engine;
+    private SceneSource source; // the engine's
 
     @BeforeEach
     void start() throws IOException, InputException {
@@ -76,7 +77,7 @@ class EngineStillTest {
         if (engine != null) {
             engine.close();
         }
-        SceneSource source = new SceneSource(sceneFile, () -> config);
+        source = new SceneSource(sceneFile, () -> config);
         engine = new Engine(config, source.loadScene(), source, input, presenter, new Screenshots(folder), clock,
                 new PrintWriter(err, true));
         engine.printTo(new PrintWriter(out, true));
@@ -228,6 +229,26 @@ class EngineStillTest {
         assertTrue(printed.contains(" --output \"" + file + "\"\n"), printed);
         assertFalse(printed.contains("\u001b"), printed);
         assertEquals(8, printed.lines().count(), printed); // wrote, the same image, the command, the camera block
+    }
+
+    /**
+     * The scene file saved again, a version that loads but is not on screen yet (the watcher takes it after two
+     * reads): the command would render the new file, so the still is refused and why; once shown, it is rendered.
+     */
+    @Test
+    void aStillIsRefusedWhileASavedVersionThatLoadsIsNotShownYet() throws Exception {
+        Files.writeString(sceneFile, TestScenes.sphere(0.6, 0.2, 0.3));
+        input.command(Action.RENDER_STILL);
+        engine.step();
+        assertEquals("still not rendered: the headless command would not give this view: '" + sceneFile
+                + "' changed on disk since it was shown; the new version is shown within a second (or its error), then"
+                + " Enter renders it", message());
+        assertEquals(List.of(), files());
+        engine.loaded(sceneFile, source.loadScene()); // what the watcher does: shown at the engine's next turn
+        engine.step();
+        input.command(Action.RENDER_STILL);
+        stepUntilMatches("still: (wrote|not written) .*");
+        assertTrue(message().startsWith("still: wrote "), message());
     }
 
     /** After Page Down onto a scene that does not load, the view is the old scene's: no still, and why. */
