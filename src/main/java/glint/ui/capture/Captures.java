@@ -94,6 +94,14 @@ public final class Captures implements AutoCloseable {
         return stills.stop();
     }
 
+    /**
+     * Cancels a still under way at once, its hidden files deleted, without waiting for its thread (any thread);
+     * returns whether one was under way.
+     */
+    public boolean cancelNow() {
+        return stills.cancelNow();
+    }
+
     @Override
     public void close() {
         stop();

@@ -13,7 +13,6 @@ import java.io.InterruptedIOException;
 import java.io.PrintWriter;
 import java.nio.charset.StandardCharsets;
 import java.nio.file.Path;
-import java.util.ArrayList;
 import java.util.List;
 import java.util.Locale;
 import java.util.Optional;
@@ -124,8 +123,9 @@ public final class StillRender implements AutoCloseable {
     }
 
     private final Runnable changed;
-    private final List<Still> stills = new ArrayList<>(); // every still whose thread may still run
-    private Still current; // the last one started
+    // every still whose thread may still run, and the last one started: read by any thread (cancelNow)
+    private final List<Still> stills = new java.util.concurrent.CopyOnWriteArrayList<>();
+    private volatile Still current;
 
     /** @param changed wakes the engine when a still is written, fails or stops */
     public StillRender(Runnable changed) {
@@ -180,6 +180,18 @@ public final class StillRender implements AutoCloseable {
         return stopped;
     }
 
+    /**
+     * Cancels every still at once, without waiting for their threads (any thread: the window ends while the
+     * engine's thread is held in a frame that never ends); returns whether a still under way was cancelled.
+     * Their hidden files are deleted now.
+     */
+    boolean cancelNow() {
+        Still s = current;
+        boolean cancelled = s != null && s.underWay() && s.cancel();
+        stills.forEach(Still::cancel);
+        return cancelled;
+    }
+
     @Override
     public void close() {
         stop();
@@ -200,6 +212,8 @@ public final class StillRender implements AutoCloseable {
         // set under this object's lock: the run once opened, and whether the still was cancelled (before or since)
         private volatile StillRun run;
         private volatile boolean cancelled;
+        // its end said (written or failed), while its thread still cleans up: no more progress lines after it
+        private volatile boolean over;
 
         Still(Job job, Still previous, PrintWriter out, PrintWriter err) {
             this.job = job;
@@ -210,7 +224,7 @@ public final class StillRender implements AutoCloseable {
         }
 
         boolean underWay() {
-            return !cancelled && ended.getCount() > 0;
+            return !cancelled && !over && ended.getCount() > 0;
         }
 
         /**
@@ -268,6 +282,7 @@ public final class StillRender implements AutoCloseable {
         private void failed(String why) {
             err.println("glint: still not written: " + why);
             news.set("still not written: " + why);
+            over = true;
         }
 
         /** Waits until the still before this one (cancelled) has let go of its frame, or this one is cancelled. */
@@ -299,6 +314,7 @@ public final class StillRender implements AutoCloseable {
                 err.println("glint: still: wrote " + files + "; its report not printed: " + failed);
             }
             news.set("still: wrote " + files + (failed == null ? "" : "; its report not printed: " + failed));
+            over = true;
         }
     }
 }

@@ -152,6 +152,9 @@ public final class GlintWindow {
         try {
             engine.awaitStopping();
             engineThread.join(QUIT_WAIT_MILLIS); // a frame that never ends is left to the end of the program
+            if (engineThread.isAlive()) { // held in it: a still under way is cancelled from here, and said
+                engine.abandon();
+            }
         } finally {
             close();
         }
