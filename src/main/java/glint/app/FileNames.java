@@ -29,7 +29,7 @@ final class FileNames {
     }
 
     /** Whether file names are ASCII only (the locale is the POSIX one). */
-    private static boolean asciiLocale() {
+    static boolean asciiLocale() {
         try {
             String charset = System.getProperty("sun.jnu.encoding");
             return charset != null && Charset.forName(charset).equals(StandardCharsets.US_ASCII);

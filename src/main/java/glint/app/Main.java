@@ -13,6 +13,7 @@ import java.nio.file.Path;
 import java.util.ArrayList;
 import java.util.List;
 import java.util.concurrent.Callable;
+import java.util.concurrent.atomic.AtomicBoolean;
 import picocli.CommandLine;
 import picocli.CommandLine.Command;
 import picocli.CommandLine.Option;
@@ -87,10 +88,11 @@ public final class Main implements Callable<Integer> {
     private PrintWriter err = new PrintWriter(System.err, true);
 
     public static void main(String[] args) {
-        PrintWriter err = new PrintWriter(System.err, true);
+        AtomicBoolean noted = new AtomicBoolean(); // a character the locale cannot show is said once
+        PrintWriter err = LocaleWriter.standardError(noted);
         ThreadFailures failures = ThreadFailures.install(err); // every thread's error: one line, status 1
         Interrupts.handleOtherEndingSignals();
-        System.exit(failures.status(run(args, Output.standard(), err, failures)));
+        System.exit(failures.status(run(args, Output.standard(noted, err), err, failures)));
     }
 
     /** Runs the program and returns its exit status; nothing is written but to out and err. */

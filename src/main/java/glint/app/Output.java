@@ -12,6 +12,7 @@ import java.nio.charset.Charset;
 import java.nio.file.Files;
 import java.nio.file.Path;
 import java.util.Locale;
+import java.util.concurrent.atomic.AtomicBoolean;
 import java.util.function.BooleanSupplier;
 
 /**
@@ -96,18 +97,25 @@ final class Output extends PrintWriter {
      *               write to a pipe means its reader has gone
      */
     Output(OutputStream stream, BooleanSupplier isPipe) {
-        this(new Recorder(stream), isPipe);
+        this(new Recorder(stream), isPipe, new AtomicBoolean(), null);
     }
 
-    private Output(Recorder recorder, BooleanSupplier isPipe) {
-        super(new java.io.BufferedWriter(new java.io.OutputStreamWriter(recorder, Charset.defaultCharset())), true);
+    /**
+     * @param noted  whether a character the locale cannot carry was said already, by this stream or another
+     * @param noteTo where that is said ({@link LocaleWriter})
+     */
+    private Output(Recorder recorder, BooleanSupplier isPipe, AtomicBoolean noted, PrintWriter noteTo) {
+        super(new java.io.BufferedWriter(LocaleWriter.of(recorder, Charset.defaultCharset(), noted, noteTo)), true);
         this.recorder = recorder;
         this.isPipe = isPipe;
     }
 
-    /** The program's standard output (file descriptor 1). */
-    static Output standard() {
-        return new Output(new FileOutputStream(FileDescriptor.out), Output::standardOutputIsPipe);
+    /**
+     * The program's standard output (file descriptor 1): in the locale's charset, a character it cannot carry
+     * written as its code and said once on {@code err} ({@link LocaleWriter}).
+     */
+    static Output standard(AtomicBoolean noted, PrintWriter err) {
+        return new Output(new Recorder(new FileOutputStream(FileDescriptor.out)), Output::standardOutputIsPipe, noted, err);
     }
 
     @Override

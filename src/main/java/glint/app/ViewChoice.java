@@ -49,7 +49,8 @@ final class ViewChoice {
     /** {@code view 2 'from above'}: the chosen view, for a report line; empty for the scene's camera. */
     String describe(Scene scene) {
         int i = given == null ? -1 : indexIn(scene.views());
-        return i < 0 ? "" : "view " + (i + 1) + " " + InputException.quote(scene.views().get(i).name());
+        // scene text, printed on standard output: escaped, so a line break or a terminal's escape shows as written
+        return i < 0 ? "" : InputException.printable("view " + (i + 1) + " " + InputException.quote(scene.views().get(i).name()));
     }
 
     /** Where the chosen view is in {@code views}: by its number, or else by its name; -1 when it is not there. */
@@ -72,6 +73,10 @@ final class ViewChoice {
             return views.get(i);
         }
         String what = "--view " + (isNumber() ? given : InputException.quote(given)) + ": ";
+        if (given.indexOf('\uFFFD') >= 0 && FileNames.asciiLocale()) { // café typed under LC_ALL=C: its bytes are lost
+            throw new InputException("glint", 0, 0, what + "the name is not ASCII, and the locale (" + FileNames.locale()
+                    + ") allows only ASCII arguments; " + FileNames.FIX);
+        }
         if (views.isEmpty()) {
             throw new InputException("glint", 0, 0, what + InputException.quotePath(file)
                     + " has no views (a scene lists them under views:, docs/scene-format.md#views)");

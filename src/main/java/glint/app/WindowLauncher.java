@@ -88,9 +88,9 @@ final class WindowLauncher {
 
     /** What the window would refuse before it opens: a window too large, a scene that does not load or a render: block beyond the limits. */
     private static void checkInputs(Path scenePath, Config config, Flags flags) throws InputException {
-        String tooLarge = config.limits().imageSizeProblem(config.displayWidth(), config.displayHeight());
+        InputException tooLarge = config.sizeRefusal(); // the window's size: the config's, or --width x --height
         if (tooLarge != null) {
-            throw new InputException("glint", 0, 0, "display_width x display_height: " + tooLarge);
+            throw tooLarge;
         }
         Scene scene = SceneLoader.load(scenePath, config.limits().scene());
         flags.effective(config, scene.render());

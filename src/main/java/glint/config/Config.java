@@ -1,6 +1,7 @@
 package glint.config;
 
 import glint.image.ViewTransform;
+import glint.input.InputException;
 import glint.render.LightTransport;
 import glint.render.RenderSettings;
 import glint.render.Shading;
@@ -33,12 +34,30 @@ import java.util.function.Consumer;
  * @param transport      the integrator: Whitted or path tracing (key {@code integrator})
  * @param view           the view transform of the 8-bit images: exposure and tone curve (keys {@code exposure},
  *                       {@code tone})
+ * @param sizeSetAt      where a config file set the image size (or lowered the limit the default size breaks),
+ *                       for a refusal of a size beyond the limit; null when none did, or once the size was set
+ *                       elsewhere (a scene's render: block, --width), which is checked there
  */
 public record Config(boolean debug, double epsilon, double displayScale, int screenDivider,
                      int displayWidth, int displayHeight, int recursionMax, String name,
                      String scene, int threads, Shading shading, int samples, double minWeight,
                      double moveSpeed, double turnSpeed, double targetFps, Limits limits,
-                     boolean freeFlight, LightTransport transport, ViewTransform view) {
+                     boolean freeFlight, LightTransport transport, ViewTransform view, Place sizeSetAt) {
+
+    /** A line and column of a config file. */
+    public record Place(String file, int line, int column) {
+    }
+
+    /** A config whose size no config file set. */
+    public Config(boolean debug, double epsilon, double displayScale, int screenDivider,
+                  int displayWidth, int displayHeight, int recursionMax, String name,
+                  String scene, int threads, Shading shading, int samples, double minWeight,
+                  double moveSpeed, double turnSpeed, double targetFps, Limits limits, boolean freeFlight,
+                  LightTransport transport, ViewTransform view) {
+        this(debug, epsilon, displayScale, screenDivider, displayWidth, displayHeight, recursionMax, name, scene,
+                threads, shading, samples, minWeight, moveSpeed, turnSpeed, targetFps, limits, freeFlight,
+                transport, view, null);
+    }
 
     /** A config of the default view transform. */
     public Config(boolean debug, double epsilon, double displayScale, int screenDivider,
@@ -85,11 +104,32 @@ public record Config(boolean debug, double epsilon, double displayScale, int scr
         return threads > 0 ? threads : Runtime.getRuntime().availableProcessors();
     }
 
+    /** This config at another size, set elsewhere than a config file (checked where it is set). */
     public Config withSize(int width, int height) {
         return with(c -> {
             c.displayWidth = width;
             c.displayHeight = height;
+            c.sizeSetAt = null;
         });
+    }
+
+    /** This config with its size set at {@code place} of a config file. */
+    public Config withSizeSetAt(Place place) {
+        return with(c -> c.sizeSetAt = place);
+    }
+
+    /**
+     * Why this config's image size is beyond its limit ({@code max_image_pixels}), positioned where a config
+     * file set it; null when it is within. Asked of the settings a scene is rendered with, after the render:
+     * block and the flags, which may set another size.
+     */
+    public InputException sizeRefusal() {
+        String problem = limits.imageSizeProblem(displayWidth, displayHeight);
+        if (problem == null) {
+            return null;
+        }
+        Place at = sizeSetAt != null ? sizeSetAt : new Place("glint", 0, 0);
+        return new InputException(at.file(), at.line(), at.column(), "display_width x display_height: " + problem);
     }
 
     public Config withSamples(int newSamples) {
@@ -165,6 +205,7 @@ public record Config(boolean debug, double epsilon, double displayScale, int scr
         boolean freeFlight;
         LightTransport transport;
         ViewTransform view;
+        Place sizeSetAt;
 
         Copy(Config c) {
             debug = c.debug;
@@ -187,12 +228,13 @@ public record Config(boolean debug, double epsilon, double displayScale, int scr
             freeFlight = c.freeFlight;
             transport = c.transport;
             view = c.view;
+            sizeSetAt = c.sizeSetAt;
         }
 
         Config build() {
             return new Config(debug, epsilon, displayScale, screenDivider, displayWidth, displayHeight, recursionMax,
                     name, scene, threads, shading, samples, minWeight, moveSpeed, turnSpeed, targetFps, limits,
-                    freeFlight, transport, view);
+                    freeFlight, transport, view, sizeSetAt);
         }
     }
 

@@ -85,10 +85,6 @@ public final class ConfigLoader {
         // the default depth yields to a lower max_recursion; a depth the file sets must be within it
         int depth = integer("recursion_max", Math.min(d.recursionMax(), limits.maxRecursion()), 1, limits.maxRecursion());
         int width = integer("display_width", d.displayWidth(), 1, 65536);
-        String sizeProblem = limits.imageSizeProblem(width, height);
-        if (sizeProblem != null) {
-            throw error(sizeKey(), "display_width x display_height: " + sizeProblem);
-        }
         String name = entries.containsKey("name") ? value("name") : d.name();
         String scene = entries.containsKey("scene") ? value("scene") : d.scene();
         if (scene.isEmpty()) {
@@ -108,14 +104,25 @@ public final class ConfigLoader {
         boolean freeFlight = bool("free_flight", d.freeFlight());
         ViewTransform view = new ViewTransform(number("exposure", d.view().exposure(), -ViewTransform.MAX_EXPOSURE,
                 ViewTransform.MAX_EXPOSURE, "a number of stops from -16 to 16"), tone(d.view().tone()));
+        // a size beyond the limit is refused on the settings a scene is rendered with, where a render: block or a
+        // flag may have set another (Config.sizeRefusal), at the line that set it
         return new Config(debug, epsilon, displayScale, divider, width, height, depth, name, scene, threads,
-                shading, samples, minWeight, moveSpeed, turnSpeed, targetFps, limits, freeFlight, transport, view);
+                shading, samples, minWeight, moveSpeed, turnSpeed, targetFps, limits, freeFlight, transport, view,
+                sizePlace());
     }
 
-    /** The key an image too large is refused at: the size where the file sets it, else the limit that the defaults break. */
-    private String sizeKey() {
-        return entries.containsKey("display_width") ? "display_width"
-                : entries.containsKey("display_height") ? "display_height" : "max_image_pixels";
+    /**
+     * Where an image too large is refused: the size where the file sets it, else the limit that the defaults
+     * break; null when the file sets neither.
+     */
+    private Config.Place sizePlace() {
+        for (String key : List.of("display_width", "display_height", "max_image_pixels")) {
+            PropertiesText.Entry e = entries.get(key);
+            if (e != null) {
+                return new Config.Place(file, e.line(), e.column());
+            }
+        }
+        return null;
     }
 
     private Limits limits(Limits d) throws InputException {

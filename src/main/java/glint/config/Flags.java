@@ -57,6 +57,10 @@ public record Flags(Integer width, Integer height, Integer samples, Integer thre
     /** {@link #effective(Config, RenderBlock)}, each note of a setting that yielded told to {@code notes}. */
     public Config effective(Config config, RenderBlock render, Consumer<String> notes) throws InputException {
         Config result = apply(withBlock(config, render, this));
+        InputException tooLarge = result.sizeRefusal(); // the config's own size, which neither the block nor a flag set
+        if (tooLarge != null) {
+            throw tooLarge;
+        }
         Rank integratorRank = integrator != null ? Rank.FLAG : render.integrator() != null ? Rank.BLOCK : Rank.CONFIG;
         Rank shadingRank = shading != null ? Rank.FLAG : render.shading() != null ? Rank.BLOCK : Rank.CONFIG;
         if (!result.transport().physical() || result.shading() != Shading.PHONG) {

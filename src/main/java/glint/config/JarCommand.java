@@ -1,5 +1,6 @@
 package glint.config;
 
+import glint.input.InputException;
 import java.nio.file.Files;
 import java.nio.file.Path;
 import java.util.regex.Pattern;
@@ -52,11 +53,17 @@ public final class JarCommand {
 
     /**
      * A word of a command as a POSIX shell reads it back: as it is when plain, otherwise in double
-     * quotes, with {@code \ " $ `} escaped ({@code "/home/me/my jars/glint.jar"}).
+     * quotes, with {@code \ " $ `} escaped ({@code "/home/me/my jars/glint.jar"}); one with a line break or
+     * another control character as bash's {@code $'...'} with escapes ({@code $'a\nb.yaml'}), so the command is
+     * one line that prints as it reads.
      */
     public static String word(String text) {
         if (PLAIN.matcher(text).matches()) {
             return text;
+        }
+        String escaped = text.replace("\\", "\\\\").replace("'", "\\'");
+        if (!InputException.printable(escaped).equals(escaped)) { // a line break, a terminal's escape: as bash reads them
+            return "$'" + InputException.printable(escaped) + "'";
         }
         return '"' + text.replaceAll("([\\\\\"$`])", "\\\\$1") + '"';
     }

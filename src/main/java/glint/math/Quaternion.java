@@ -17,6 +17,23 @@ public record Quaternion(double w, double x, double y, double z) {
     }
 
     /**
+     * The rotation by the vector's length, in radians, about its direction; the zero vector is no turn.
+     * Any finite vector gives a unit quaternion, however long (its length need not be a finite double):
+     * the half angle is computed from the vector scaled by its largest component.
+     */
+    public static Quaternion fromRotationVector(Vector3d v) {
+        double largest = Math.max(Math.abs(v.x()), Math.max(Math.abs(v.y()), Math.abs(v.z())));
+        if (largest == 0) {
+            return IDENTITY;
+        }
+        Vector3d scaled = v.scale(1 / largest);
+        double length = scaled.length(); // from 1 to sqrt(3)
+        double half = largest / 2 * length;
+        double s = Math.sin(half) / length;
+        return new Quaternion(Math.cos(half), scaled.x() * s, scaled.y() * s, scaled.z() * s);
+    }
+
+    /**
      * The rotation taking the camera frame to a frame looking along {@code forward} with {@code up}
      * as near to its up axis as possible. Both must be non-zero and not parallel.
      */

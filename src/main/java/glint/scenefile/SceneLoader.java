@@ -110,7 +110,7 @@ public final class SceneLoader {
     }
 
     /** The file's text: a regular file (never a FIFO or device), within the size limit, UTF-8. */
-    static String read(Path path, SceneLimits limits) throws InputException {
+    public static String read(Path path, SceneLimits limits) throws InputException {
         byte[] bytes = TextFiles.readBounded(path, limits.maxFileBytes(), size -> tooBigProblem(size, limits));
         return TextFiles.utf8(path.toString(), bytes);
     }

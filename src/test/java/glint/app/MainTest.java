@@ -471,7 +471,8 @@ class MainTest {
     @Test
     void aWindowSizeOfADoubleMaxImageIsRefusedNotOverflowed() throws IOException {
         Path cfg = write("huge.properties", "max_image_pixels=700000000\ndisplay_width=65536\ndisplay_height=65536\n");
-        Result r = run("--config", cfg.toString(), "--output", dir.resolve("o.png").toString());
+        Result r = run("--config", cfg.toString(), "--scene", Path.of("scenes/default.yaml").toAbsolutePath().toString(),
+                "--output", dir.resolve("o.png").toString());
         assertEquals(2, r.status());
         // 65536 x 65536 = 4,294,967,296 pixels: computed in long, not wrapped to 0 in int
         assertEquals(cfg + ":2:1: display_width x display_height: 65536x65536 is 4295.0 megapixels; the largest "

@@ -63,6 +63,23 @@ class RenderBlockRankingTest {
         assertTrue(width.contains("(16x24, 9 spp, "), "a flag replaces only what it names: " + width);
     }
 
+    /** The limits hold for the result: a config's own size beyond them yields to the flags or a block that set another. */
+    @Test
+    void aConfigWhoseOwnSizeBreaksItsLimitRendersAtTheSizeOfTheFlagsOrTheBlock() throws IOException {
+        Path config = Files.writeString(dir.resolve("big.properties"), "display_width=20000\ndisplay_height=20000\n");
+        Path plain = Files.writeString(dir.resolve("plain.yaml"), SCENE);
+        assertTrue(still(plain, config, "--width", "40", "--height", "30").contains("(40x30, 4 spp, "), "the flags' size");
+        Path sized = Files.writeString(dir.resolve("sized.yaml"), SCENE + "render: {width: 32, height: 24}\n");
+        assertTrue(still(sized, config).contains("(32x24, 4 spp, "), "the block's size");
+        StringWriter err = new StringWriter();
+        int status = Main.run(new String[] {"--scene", plain.toString(), "--config", config.toString(), "--output",
+            dir.resolve("big.png").toString()}, new PrintWriter(new StringWriter(), true), new PrintWriter(err, true));
+        assertEquals(2, status);
+        assertEquals(config + ":1:1: display_width x display_height: 20000x20000 is 400.0 megapixels; the largest image "
+                + "allowed is 33.2 megapixels (config key max_image_pixels)" + System.lineSeparator(), err.toString());
+        assertTrue(!Files.exists(dir.resolve("big.png")));
+    }
+
     @Test
     void phongClassicIsSeenInPhongWithTheShippedConfig() {
         Path root = Path.of("").toAbsolutePath();

@@ -97,6 +97,18 @@ class ViewOptionTest {
                 + "depth 16)", r.out().lines().findFirst().orElse(""));
     }
 
+    /** A view's name is scene text: on standard output it is quoted and escaped, never a line break or a terminal's escape. */
+    @Test
+    void benchPrintsAViewsNameEscaped() throws IOException {
+        Path odd = Files.writeString(dir.resolve("odd.yaml"), "views:\n  - {name: \"clear\\e[2J\\nwrote x.png\", "
+                + VIEW_1 + "}\n" + OBJECTS);
+        Result r = run("--scene", odd.toString(), "--view", "1", "--threads", "1", "--bench", "1");
+        assertEquals(0, r.status(), r.err());
+        assertEquals("timing 1 frame of " + odd + ", view 1 'clear\\u001b[2J\\nwrote x.png' (32x24, 4 spp, 1 threads, "
+                + "cook-torrance, depth 16)", r.out().lines().findFirst().orElse(""));
+        assertEquals(3, r.out().lines().count(), r.out());
+    }
+
     private void assertRefused(String expected, String... args) {
         Path png = dir.resolve("refused.png");
         String[] all = java.util.Arrays.copyOf(args, args.length + 2);

@@ -29,6 +29,13 @@ class ConfigLoaderTest {
         assertEquals(expected, e.getMessage());
     }
 
+    /** A size beyond the limit, refused on the settings a scene is rendered with (no block, no flag), at its line. */
+    private static void assertSizeError(String expected, String text) {
+        InputException e = assertThrows(InputException.class,
+                () -> Flags.NONE.effective(parse(text), glint.scene.RenderBlock.NONE));
+        assertEquals(expected, e.getMessage());
+    }
+
     // ---------------------------------------------------------------- defaults
 
     @Test
@@ -96,7 +103,8 @@ class ConfigLoaderTest {
                 """);
         assertEquals(new Config(true, 1e-6, 1.5, 4, 640, 480, 7, "My Glint", "scenes/other.yaml", 3,
                 Shading.PHONG, 16, 0.01, 3.5, 90, 24, new Limits(1_000_000, 4096, 10, 2, 8), true)
-                .withView(new ViewTransform(-1.5, ViewTransform.Tone.STANDARD)), c);
+                .withView(new ViewTransform(-1.5, ViewTransform.Tone.STANDARD))
+                .withSizeSetAt(new Config.Place("config.properties", 7, 1)), c); // display_width's line
     }
 
     @Test
@@ -362,12 +370,30 @@ class ConfigLoaderTest {
     void anImageLargerThanTheLimitIsRefusedWhereItsSizeIsSet() {
         // 7680 x 4320 = 33,177,600 pixels is the default limit; one more row is too many, 7680 pixels
         // more, which megapixels to one decimal would round away (33.2 and 33.2): so the pixels are shown
-        assertError("config.properties:2:1: display_width x display_height: 7680x4321 is 33,185,280 pixels; "
+        assertSizeError("config.properties:2:1: display_width x display_height: 7680x4321 is 33,185,280 pixels; "
                 + "the largest image allowed is 33,177,600 pixels (config key max_image_pixels)",
                 "display_height=4321\ndisplay_width=7680\n");
-        assertError("config.properties:2:1: display_width x display_height: 7680x4400 is 33.8 megapixels; "
+        assertSizeError("config.properties:2:1: display_width x display_height: 7680x4400 is 33.8 megapixels; "
                 + "the largest image allowed is 33.2 megapixels (config key max_image_pixels)",
                 "display_height=4400\ndisplay_width=7680\n");
+    }
+
+    /**
+     * One order: defaults, config, block, flags, then the limits on the result. A config whose own size breaks
+     * its own limit loads; a render: block's size or --width and --height in its place are what is checked.
+     */
+    @Test
+    void aConfigsSizeBeyondItsLimitYieldsToABlockOrFlagsThatSetAnother() throws InputException {
+        Config config = parse("display_width=20000\ndisplay_height=20000\n");
+        Flags size = new Flags(100, 80, null, null, null, null);
+        assertEquals(100, size.effective(config, glint.scene.RenderBlock.NONE).displayWidth());
+        assertEquals(80, size.effective(config, glint.scene.RenderBlock.NONE).displayHeight());
+        glint.scene.RenderBlock block = glint.scenefile.SceneLoader.parse("s.yaml",
+                "render: {width: 64, height: 48}\n").render();
+        assertEquals(64, Flags.NONE.effective(config, block).displayWidth());
+        assertSizeError("config.properties:1:1: display_width x display_height: 20000x20000 is 400.0 megapixels; "
+                + "the largest image allowed is 33.2 megapixels (config key max_image_pixels)",
+                "display_width=20000\ndisplay_height=20000\n");
     }
 
     @Test
@@ -378,7 +404,7 @@ class ConfigLoaderTest {
 
     @Test
     void aLimitLoweredBelowTheDefaultImageIsRefusedAtTheLimit() {
-        assertError("config.properties:2:1: display_width x display_height: 800x600 is 0.5 megapixels; "
+        assertSizeError("config.properties:2:1: display_width x display_height: 800x600 is 0.5 megapixels; "
                 + "the largest image allowed is 0.0 megapixels (config key max_image_pixels)",
                 "threads=1\nmax_image_pixels=100\n");
     }

@@ -36,4 +36,19 @@ class JarCommandTest {
         assertEquals("\"a\\\"b\\$c\\`d\\\\e\"", JarCommand.word("a\"b$c`d\\e"));
         assertEquals("\"it's.yaml\"", JarCommand.word("it's.yaml"));
     }
+
+    /** A line break or a terminal's escape in a word: one printable line that bash reads back as the same bytes. */
+    @Test
+    void aWordWithAControlCharacterIsWrittenAsBashReadsItBack() throws Exception {
+        assertEquals("$'a\\nb.yaml'", JarCommand.word("a\nb.yaml"));
+        assertEquals("$'it\\'s\\u001b[2J \\\\.yaml'", JarCommand.word("it's\u001b[2J \\.yaml"));
+        java.io.File bash = new java.io.File("/bin/bash");
+        org.junit.jupiter.api.Assumptions.assumeTrue(bash.canExecute(), "bash is here");
+        for (String word : new String[] {"a\nb.yaml", "it's\u001b[2J \\.yaml", "tab\there\r\u0007$x`y\"z"}) {
+            Process p = new ProcessBuilder("/bin/bash", "-c", "printf %s " + JarCommand.word(word)).start();
+            String read = new String(p.getInputStream().readAllBytes(), java.nio.charset.StandardCharsets.UTF_8);
+            assertEquals(0, p.waitFor());
+            assertEquals(word, read, JarCommand.word(word));
+        }
+    }
 }

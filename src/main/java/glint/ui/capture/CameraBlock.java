@@ -64,7 +64,7 @@ public final class CameraBlock {
         String lens = camera.aperture() > 0
                 ? ", aperture: " + length(camera.aperture()) + ", focus: " + length(camera.focus()) : "";
         return "  - {position: " + vector(p) + ", look_at: " + vector(lookAt(camera))
-                + ", up: " + vector(camera.orientation().up()) + ", fov: " + number(camera.fovDegrees()) + lens + "}";
+                + ", up: " + vector(camera.orientation().up()) + ", fov: " + fov(camera.fovDegrees()) + lens + "}";
     }
 
     /** The camera a scene holding the printed block has: the block read back as the scene loader reads it. */
@@ -85,8 +85,19 @@ public final class CameraBlock {
                 + "  position: " + vector(p) + "\n"
                 + "  look_at: " + vector(lookAt(camera)) + "\n"
                 + "  up: " + vector(camera.orientation().up()) + "\n"
-                + "  fov: " + number(camera.fovDegrees()) + "\n"
+                + "  fov: " + fov(camera.fovDegrees()) + "\n"
                 + lens;
+    }
+
+    /**
+     * A field of view (strictly between 0 and 180 degrees): six decimals where they keep it within a
+     * millionth of itself and strictly inside that range, else the shortest decimal that reads back as
+     * it is, so 179.9999999 is not printed as 180 nor 1e-7 as 0, which no scene takes.
+     */
+    static String fov(double degrees) {
+        String six = number(degrees);
+        double read = Double.parseDouble(six);
+        return read > 0 && read < 180 && Math.abs(read - degrees) <= 1e-6 * degrees ? six : whole(degrees);
     }
 
     /** A length (above 0): six decimals when they keep it (1e-3 to 1e15), else whole, as {@link #vector}. */

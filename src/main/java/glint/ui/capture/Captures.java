@@ -59,6 +59,9 @@ public final class Captures implements AutoCloseable {
             return stills.cancel();
         }
         String refusal = view.stillRefusal();
+        if (refusal.isEmpty()) { // saved since, loading, not on screen yet: the command would read the new file
+            refusal = source.changedSince(view.scene());
+        }
         if (!refusal.isEmpty()) { // its headless command would not give the image on screen
             return "still not rendered: the headless command would not give this view: " + refusal;
         }
@@ -89,6 +92,14 @@ public final class Captures implements AutoCloseable {
      */
     public boolean stop() {
         return stills.stop();
+    }
+
+    /**
+     * Cancels a still under way at once, its hidden files deleted, without waiting for its thread (any thread);
+     * returns whether one was under way.
+     */
+    public boolean cancelNow() {
+        return stills.cancelNow();
     }
 
     @Override

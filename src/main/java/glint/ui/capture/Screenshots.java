@@ -3,6 +3,8 @@ package glint.ui.capture;
 import glint.image.ImageWriter;
 import glint.image.PartFile;
 import glint.image.PartGuard;
+import glint.input.InputException;
+import glint.still.OutputFile;
 import glint.ui.frames.ResolutionGovernor;
 import glint.ui.screen.WindowImages;
 import java.awt.image.BufferedImage;
@@ -26,16 +28,28 @@ public final class Screenshots {
 
     private static final DateTimeFormatter STAMP = DateTimeFormatter.ofPattern("yyyyMMdd-HHmmss-SSS");
 
+    /** Opens the stream a screenshot's PNG is written to, on its hidden file. */
+    @FunctionalInterface
+    interface Opener {
+        OutputStream open(Path part) throws IOException;
+    }
+
     private final Path folder;
     private final Supplier<LocalDateTime> now;
+    private final Opener opener;
 
     public Screenshots(Path folder) {
         this(folder, LocalDateTime::now);
     }
 
     Screenshots(Path folder, Supplier<LocalDateTime> now) {
+        this(folder, now, part -> Files.newOutputStream(part, StandardOpenOption.WRITE));
+    }
+
+    Screenshots(Path folder, Supplier<LocalDateTime> now, Opener opener) {
         this.folder = folder;
         this.now = now;
+        this.opener = opener;
     }
 
     public Path folder() {
@@ -48,7 +62,7 @@ public final class Screenshots {
      */
     public Path save(BufferedImage image) throws IOException {
         return save("glint", ".png", part -> {
-            try (OutputStream out = Files.newOutputStream(part, StandardOpenOption.WRITE)) {
+            try (OutputStream out = opener.open(part)) {
                 ImageWriter.writePng(image, out);
             }
         });
@@ -84,13 +98,22 @@ public final class Screenshots {
         // not Files.createTempFile: its file is private (0600), and the image would keep that mode
         PartFile part = PartFile.beside(folder.resolve(prefix + extension));
         PartGuard guard = PartGuard.of(List.of(part.path()), ENDED);
+        Path file = name(prefix, extension);
         try {
             content.writeTo(part.path());
-            return Files.move(part.path(), name(prefix, extension), StandardCopyOption.ATOMIC_MOVE);
+            return Files.move(part.path(), Files.exists(file) ? name(prefix, extension) : file,
+                    StandardCopyOption.ATOMIC_MOVE);
+        } catch (IOException e) { // a full disk: the file, and the system's reason, not the encoder's words
+            throw new IOException("cannot write " + InputException.quotePath(file) + ": " + OutputFile.reason(cause(e)), e);
         } finally {
             part.close(); // gone already if it was renamed; else deleted, wherever the folder is now
             guard.close();
         }
+    }
+
+    /** What the PNG encoder met, under its "I/O error writing PNG file!". */
+    private static IOException cause(IOException e) {
+        return e instanceof javax.imageio.IIOException && e.getCause() instanceof IOException met ? met : e;
     }
 
     /** What a guard says if the program ends too abruptly to delete a screenshot's hidden file itself. */

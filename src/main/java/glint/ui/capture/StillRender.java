@@ -3,6 +3,7 @@ package glint.ui.capture;
 import glint.config.Config;
 import glint.config.JarCommand;
 import glint.image.ViewTransform;
+import glint.input.InputException;
 import glint.render.RenderScene;
 import glint.scene.Camera;
 import glint.still.StillRefused;
@@ -10,8 +11,8 @@ import glint.still.StillRun;
 import java.io.IOException;
 import java.io.InterruptedIOException;
 import java.io.PrintWriter;
+import java.nio.charset.StandardCharsets;
 import java.nio.file.Path;
-import java.util.ArrayList;
 import java.util.List;
 import java.util.Locale;
 import java.util.Optional;
@@ -19,6 +20,7 @@ import java.util.concurrent.CancellationException;
 import java.util.concurrent.CountDownLatch;
 import java.util.concurrent.TimeUnit;
 import java.util.concurrent.atomic.AtomicReference;
+import java.util.zip.CRC32;
 
 /**
  * The window's render key: the view rendered as a still image through the pipeline {@code --output} uses
@@ -51,7 +53,7 @@ public final class StillRender implements AutoCloseable {
 
         /** The files written, for the overlay and the report: {@code a.png} or {@code a.png and a.pfm}. */
         String files() {
-            return png + (pfm != null ? " and " + pfm : "");
+            return InputException.printable(png + (pfm != null ? " and " + pfm : ""));
         }
 
         List<Path> images() {
@@ -66,9 +68,10 @@ public final class StillRender implements AutoCloseable {
     static Job job(RenderScene scene, Camera printed, Config still, Path scenePath, Path configFile,
                    Screenshots folder, boolean pfm) {
         // named after the scene: phong-classic-20261202-153000-123.png, in the screenshots' folder
-        Path png = folder.name(scenePath.getFileName().toString().replaceFirst("\\.[^.]*$", ""), ".png");
+        Path png = folder.name(stem(scenePath), ".png");
         String config = configFile == null ? "" : " --config " + JarCommand.word(configFile.toString());
-        String recipe = "still: the same image headless, with this camera in " + scenePath + ":\n"
+        String recipe = "still: the same image headless, with this camera in "
+                + InputException.printable(scenePath.toString()) + ":\n"
                 + String.format(Locale.ROOT, "  %s%s --scene %s --width %d --height %d --spp %d"
                         + " --shading %s --integrator %s --depth %d --exposure %s --tone %s --output %s%n",
                         JarCommand.java(), config, JarCommand.word(scenePath.toString()), still.displayWidth(),
@@ -80,14 +83,49 @@ public final class StillRender implements AutoCloseable {
         return new Job(scene, still, png, pfmFile, StillRun.describe(still, false), recipe);
     }
 
+    /** The most bytes (UTF-8) of a scene's name a still's name begins with; a file's name may have 255. */
+    static final int STEM_BYTES = 100;
+
+    /**
+     * What a still's name begins with: the scene file's name without its extension, or, when that is longer
+     * than {@link #STEM_BYTES}, its first characters and a code of the whole ({@code aaaa-1a2b3c4d}), so that
+     * the still's name fits the file system and two scenes whose long names differ only at the end still name
+     * their stills apart. Control characters (a line break, a terminal's escape) become {@code _}.
+     */
+    static String stem(Path scenePath) {
+        String name = scenePath.getFileName().toString().replaceFirst("\\.[^.]*$", "");
+        StringBuilder plain = new StringBuilder(); // a line break or a terminal's escape in a name: _
+        name.codePoints().mapToObj(Character::toString)
+                .forEach(c -> plain.append(InputException.printable(c).equals(c) ? c : "_"));
+        name = plain.toString();
+        byte[] utf8 = name.getBytes(StandardCharsets.UTF_8);
+        if (utf8.length <= STEM_BYTES) {
+            return name;
+        }
+        CRC32 code = new CRC32();
+        code.update(utf8);
+        String suffix = String.format(Locale.ROOT, "-%08x", code.getValue());
+        StringBuilder start = new StringBuilder();
+        int bytes = suffix.length();
+        for (int c : name.codePoints().toArray()) {
+            bytes += new String(Character.toChars(c)).getBytes(StandardCharsets.UTF_8).length;
+            if (bytes > STEM_BYTES) {
+                break;
+            }
+            start.appendCodePoint(c);
+        }
+        return start + suffix;
+    }
+
     /** Whether an overlay line says a still is under way (which Enter or Esc then cancels). Any thread. */
     public static boolean underWay(String overlayLine) {
         return overlayLine.startsWith(RENDERING) || overlayLine.startsWith(WRITING);
     }
 
     private final Runnable changed;
-    private final List<Still> stills = new ArrayList<>(); // every still whose thread may still run
-    private Still current; // the last one started
+    // every still whose thread may still run, and the last one started: read by any thread (cancelNow)
+    private final List<Still> stills = new java.util.concurrent.CopyOnWriteArrayList<>();
+    private volatile Still current;
 
     /** @param changed wakes the engine when a still is written, fails or stops */
     public StillRender(Runnable changed) {
@@ -142,6 +180,18 @@ public final class StillRender implements AutoCloseable {
         return stopped;
     }
 
+    /**
+     * Cancels every still at once, without waiting for their threads (any thread: the window ends while the
+     * engine's thread is held in a frame that never ends); returns whether a still under way was cancelled.
+     * Their hidden files are deleted now.
+     */
+    boolean cancelNow() {
+        Still s = current;
+        boolean cancelled = s != null && s.underWay() && s.cancel();
+        stills.forEach(Still::cancel);
+        return cancelled;
+    }
+
     @Override
     public void close() {
         stop();
@@ -162,6 +212,8 @@ public final class StillRender implements AutoCloseable {
         // set under this object's lock: the run once opened, and whether the still was cancelled (before or since)
         private volatile StillRun run;
         private volatile boolean cancelled;
+        // its end said (written or failed), while its thread still cleans up: no more progress lines after it
+        private volatile boolean over;
 
         Still(Job job, Still previous, PrintWriter out, PrintWriter err) {
             this.job = job;
@@ -172,7 +224,7 @@ public final class StillRender implements AutoCloseable {
         }
 
         boolean underWay() {
-            return !cancelled && ended.getCount() > 0;
+            return !cancelled && !over && ended.getCount() > 0;
         }
 
         /**
@@ -230,6 +282,7 @@ public final class StillRender implements AutoCloseable {
         private void failed(String why) {
             err.println("glint: still not written: " + why);
             news.set("still not written: " + why);
+            over = true;
         }
 
         /** Waits until the still before this one (cancelled) has let go of its frame, or this one is cancelled. */
@@ -261,6 +314,7 @@ public final class StillRender implements AutoCloseable {
                 err.println("glint: still: wrote " + files + "; its report not printed: " + failed);
             }
             news.set("still: wrote " + files + (failed == null ? "" : "; its report not printed: " + failed));
+            over = true;
         }
     }
 }

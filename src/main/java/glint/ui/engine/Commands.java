@@ -98,6 +98,6 @@ final class Commands {
             return;
         }
         view.goTo(views.get(index).camera());
-        status.note("view " + (index + 1) + ": " + views.get(index).name());
+        status.note("view " + (index + 1) + ": " + glint.input.InputException.printable(views.get(index).name()));
     }
 }

@@ -88,6 +88,7 @@ public final class Engine implements Runnable, SceneWatcher.Listener {
     private volatile long turns;
     /** What standard error says if the loop's end cancels a still under way. */
     private volatile String stillCancelled = "glint: still cancelled, nothing written (the window closed)";
+    private final java.util.concurrent.locks.ReentrantLock stillEnding = new java.util.concurrent.locks.ReentrantLock();
 
     public Engine(Config config, Scene scene, SceneSource source, InputState input, Presenter presenter,
                   Screenshots screenshots, Clock clock, PrintWriter err) {
@@ -179,6 +180,34 @@ public final class Engine implements Runnable, SceneWatcher.Listener {
         stop();
     }
 
+    /**
+     * The window ends while this engine's thread is held in a frame that never ends (any thread): a still under
+     * way is cancelled at once, its hidden files deleted, and standard error says so, once. If the engine's own
+     * thread is ending it just then, that thread says it.
+     */
+    public void abandon() {
+        if (stillEnding.tryLock()) {
+            try {
+                endStill(false);
+            } finally {
+                stillEnding.unlock();
+            }
+        }
+    }
+
+    /** Cancels a still under way and says so, once whichever thread comes first; waits for its threads if {@code wait}. */
+    private void endStill(boolean wait) {
+        stillEnding.lock();
+        try {
+            if (wait ? captures.stop() : captures.cancelNow()) {
+                err.println(stillCancelled);
+                err.flush();
+            }
+        } finally {
+            stillEnding.unlock();
+        }
+    }
+
     /** Where key C prints the camera block (standard output unless a test says otherwise). */
     public void printTo(PrintWriter printer) {
         commands.printTo(printer);
@@ -256,10 +285,7 @@ public final class Engine implements Runnable, SceneWatcher.Listener {
         } finally {
             running = false;
             stopping.countDown();
-            if (captures.stop()) { // a still under way is cancelled, and its hidden files deleted, before the end
-                err.println(stillCancelled);
-                err.flush();
-            }
+            endStill(true); // a still under way is cancelled, and its hidden files deleted, before the end
             maker.close();
             finished.countDown();
         }

@@ -30,7 +30,10 @@ public final class CameraController {
     /** A level camera's view stays this many degrees below straight up and above straight down. */
     public static final double PITCH_LIMIT_DEGREES = 1;
 
-    /** The field of view the zoom keys keep to, in degrees. */
+    /**
+     * The field of view the zoom keys keep to, in degrees. A scene's view outside them (0.5, 170) is kept;
+     * the keys move it toward them.
+     */
     public static final double MIN_FOV = 1, MAX_FOV = 150;
     /** Holding a zoom key halves or doubles the field of view each second. */
     public static final double ZOOM_FACTOR_PER_SECOND = 2;
@@ -219,7 +222,9 @@ public final class CameraController {
         if (seconds == 0) {
             return false;
         }
-        double fov = Math.max(MIN_FOV, Math.min(MAX_FOV, fovDegrees * Math.pow(ZOOM_FACTOR_PER_SECOND, -seconds)));
+        double fov = fovDegrees * Math.pow(ZOOM_FACTOR_PER_SECOND, -seconds);
+        // toward the bound, never past it; a scene's fov beyond it (170, 0.5) zooms back from where it is
+        fov = seconds > 0 ? Math.max(Math.min(MIN_FOV, fovDegrees), fov) : Math.min(Math.max(MAX_FOV, fovDegrees), fov);
         boolean changed = fov != fovDegrees;
         fovDegrees = fov;
         return changed;
@@ -262,12 +267,14 @@ public final class CameraController {
         if (freeFlight) {
             // In the camera frame: +yaw about +y turns forward towards right; looking up is a negative
             // turn about +x; rolling left (right side up) is a positive turn about +z.
-            Vector3d rotation = new Vector3d(-pitchUp, yaw, rollLeft);
-            orientation = orientation.multiply(Quaternion.fromAxisAngle(rotation, rotation.length())).normalize();
+            Vector3d rotation = new Vector3d(finite(-pitchUp), finite(yaw), finite(rollLeft));
+            orientation = orientation.multiply(Quaternion.fromRotationVector(rotation)).normalize();
             return true;
         }
         Quaternion q = orientation;
-        double pitch = boundedPitch(q, pitchUp); // yaw about the world's up does not change the height
+        yaw = finite(yaw);
+        rollLeft = finite(rollLeft);
+        double pitch = boundedPitch(q, finite(pitchUp)); // yaw about the world's up does not change the height
         if (rollLeft == 0 && yaw == 0 && pitch == 0) {
             return false; // at the bound
         }
@@ -316,6 +323,14 @@ public final class CameraController {
         }
         double pitch = Math.max(low, Math.min(high, s + pitchUp)) - s;
         return Math.abs(pitch) < 1e-12 ? 0 : pitch; // at the bound: no turn, not a rounding error's worth
+    }
+
+    /**
+     * A turn in radians as a finite number: a turn_speed near the largest double held for long is more
+     * than a double, and a turn of any size is a finite number of whole turns and a remainder anyway.
+     */
+    private static double finite(double radians) {
+        return Math.max(-Double.MAX_VALUE, Math.min(Double.MAX_VALUE, radians));
     }
 
     /** The largest coordinate's size, NaN or infinity when there is one. */

@@ -21,6 +21,7 @@ public final class SceneSource {
     private volatile SceneLimits limits = SceneLimits.DEFAULT;
     private final Flags flags;
     private final Path configFile;
+    private volatile Loaded lastLoaded;
 
     public SceneSource(Path scenePath, ConfigSource configSource) {
         this(scenePath, configSource, Flags.NONE);
@@ -72,9 +73,39 @@ public final class SceneSource {
         return loadScene(scenePath);
     }
 
-    /** Reads {@code file} as the window's scene, within these limits. */
+    /** Reads {@code file} as the window's scene, within these limits; remembers its text if it is the window's file. */
     public Scene loadScene(Path file) throws InputException {
-        return SceneLoader.load(file, limits);
+        String text = SceneLoader.read(file, limits);
+        Scene scene = SceneLoader.parse(file.toString(), text, limits);
+        if (file.equals(scenePath)) { // not a load of a file the window left (Page Down) that ended late
+            lastLoaded = new Loaded(file, scene, text);
+        }
+        return scene;
+    }
+
+    /**
+     * Why the scene file on disk is not the scene {@code shown} (a save that loads but is not on screen yet,
+     * or one that no longer loads), in words for the still it refuses; empty when it is the same text.
+     */
+    public String changedSince(Scene shown) {
+        Loaded last = lastLoaded;
+        if (last == null) { // nothing was loaded here: nothing to compare
+            return "";
+        }
+        String changed = InputException.quotePath(scenePath) + " changed on disk since it was shown; the new version"
+                + " is shown within a second (or its error), then Enter renders it";
+        if (last.scene() != shown || !last.file().equals(scenePath)) {
+            return changed;
+        }
+        try {
+            return SceneLoader.read(scenePath, limits).equals(last.text()) ? "" : changed;
+        } catch (InputException e) {
+            return e.getMessage();
+        }
+    }
+
+    /** The last scene loaded from the window's file, and the text it was read from. */
+    private record Loaded(Path file, Scene scene, String text) {
     }
 
     public Config loadConfig() throws InputException {

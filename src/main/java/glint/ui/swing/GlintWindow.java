@@ -75,9 +75,9 @@ public final class GlintWindow {
 
     private static GlintWindow open(Config config, SceneSource source, Screenshots screenshots, PrintWriter out,
                                     PrintWriter err, WindowHooks hooks) throws InputException, UnavailableException {
-        String tooLarge = config.limits().imageSizeProblem(config.displayWidth(), config.displayHeight());
+        InputException tooLarge = config.sizeRefusal();
         if (tooLarge != null) { // refused before any memory or window is taken
-            throw new InputException("glint", 0, 0, "display_width x display_height: " + tooLarge);
+            throw tooLarge;
         }
         oneLineErrors(err);
         source.limits(config.limits().scene());
@@ -152,6 +152,9 @@ public final class GlintWindow {
         try {
             engine.awaitStopping();
             engineThread.join(QUIT_WAIT_MILLIS); // a frame that never ends is left to the end of the program
+            if (engineThread.isAlive()) { // held in it: a still under way is cancelled from here, and said
+                engine.abandon();
+            }
         } finally {
             close();
         }

@@ -137,4 +137,22 @@ class CameraBlockTest {
         String block = CameraBlock.yaml(far);
         assertEquals(far.position(), SceneLoader.parse("c.yaml", block).camera().position(), block);
     }
+
+    /** Any fov a scene may have, 0 and 180 excluded, prints as a number the scene reader takes and reads back as it. */
+    @Test
+    void aFieldOfViewNearZeroOrNear180PrintsAsANumberThatReadsBack() throws InputException {
+        for (double fov : new double[] {179.9999999, 1e-7, 179.9999996, 4e-7, 0.0012345678, Math.nextDown(180.0),
+                Double.MIN_VALUE}) {
+            Camera camera = Camera.lookAt(Vector3d.ZERO, Vector3d.UNIT_Z, Vector3d.UNIT_Y, fov);
+            Scene read = SceneLoader.parse("pasted.yaml", CameraBlock.blocks(camera));
+            assertEquals(fov, read.camera().fovDegrees(), "the camera block of fov " + fov);
+            assertEquals(fov, read.views().get(0).camera().fovDegrees(), "the views item of fov " + fov);
+        }
+        assertTrue(CameraBlock.yaml(Camera.lookAt(Vector3d.ZERO, Vector3d.UNIT_Z, Vector3d.UNIT_Y, 179.9999999))
+                .contains("  fov: 179.9999999\n"));
+        assertTrue(CameraBlock.yaml(Camera.lookAt(Vector3d.ZERO, Vector3d.UNIT_Z, Vector3d.UNIT_Y, 1e-7))
+                .contains("  fov: 1.0E-7\n"));
+        assertTrue(CameraBlock.yaml(Camera.lookAt(Vector3d.ZERO, Vector3d.UNIT_Z, Vector3d.UNIT_Y, 42.4264068712))
+                .contains("  fov: 42.426407\n"), "six decimals where they keep it");
+    }
 }

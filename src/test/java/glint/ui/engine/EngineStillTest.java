@@ -50,6 +50,7 @@ class EngineStillTest {
     private Path sceneFile;
     private Path shots;
     private Engine engine;
+    private SceneSource source; // the engine's
 
     @BeforeEach
     void start() throws IOException, InputException {
@@ -76,7 +77,7 @@ class EngineStillTest {
         if (engine != null) {
             engine.close();
         }
-        SceneSource source = new SceneSource(sceneFile, () -> config);
+        source = new SceneSource(sceneFile, () -> config);
         engine = new Engine(config, source.loadScene(), source, input, presenter, new Screenshots(folder), clock,
                 new PrintWriter(err, true));
         engine.printTo(new PrintWriter(out, true));
@@ -181,6 +182,73 @@ class EngineStillTest {
         assertEquals(0, Main.run(args.split(" "), new PrintWriter(new StringWriter(), true),
                 new PrintWriter(mainErr, true)), mainErr::toString);
         assertArrayEquals(Files.readAllBytes(headless), Files.readAllBytes(png), "the window's still and the headless one");
+    }
+
+    /**
+     * A scene whose name is 245 characters long (250 with .yaml, which the file system takes): its stills' names
+     * keep the first part of it and a code of the whole, within the file system's 255 bytes, and two such scenes
+     * that differ only at the end still name their stills apart.
+     */
+    @Test
+    void aStillOfASceneWithALongNameHasAShortenedNameOfItsOwn() throws Exception {
+        List<String> stems = new java.util.ArrayList<>();
+        for (String end : new String[] {"-one", "-two"}) {
+            sceneFile = Files.writeString(dir.resolve("a".repeat(241) + end + ".yaml"), TestScenes.sphere(0.1, 0.2, 0.3));
+            open(4);
+            List<Path> before = files();
+            input.command(Action.RENDER_STILL);
+            stepUntilMatches("still: (wrote|not written) .*");
+            assertTrue(message().startsWith("still: wrote "), message());
+            Path png = files().stream().filter(p -> !before.contains(p)).findFirst().orElseThrow();
+            String file = png.getFileName().toString();
+            assertTrue(file.matches("a{91}-[0-9a-f]{8}-\\d{8}-\\d{6}-\\d{3}\\.png"), file);
+            assertTrue(out.toString().contains(" --output " + file + "\n"), out::toString);
+            stems.add(file.substring(0, 100));
+            out.getBuffer().setLength(0);
+        }
+        assertFalse(stems.get(0).equals(stems.get(1)), stems::toString);
+        assertEquals("", err.toString());
+    }
+
+    /**
+     * A scene file whose name holds a line break and a terminal's escape: the still's name has neither, and the
+     * report prints the scene's name escaped, its command in bash's quotes, every line as it reads.
+     */
+    @Test
+    void aSceneNameWithALineBreakAndAnEscapeIsPrintedEscaped() throws Exception {
+        sceneFile = Files.writeString(dir.resolve("ball\nnew\u001b[2J.yaml"), TestScenes.sphere(0.1, 0.2, 0.3));
+        open(4);
+        input.command(Action.RENDER_STILL);
+        stepUntilMatches("still: (wrote|not written) .*");
+        String file = files().get(0).getFileName().toString();
+        assertTrue(file.matches("ball_new_\\[2J-\\d{8}-\\d{6}-\\d{3}\\.png"), file);
+        String printed = out.toString();
+        assertTrue(printed.contains("\nstill: the same image headless, with this camera in " + dir
+                + "/ball\\nnew\\u001b[2J.yaml:\n"), printed);
+        assertTrue(printed.contains(" --scene $'" + dir + "/ball\\nnew\\u001b[2J.yaml' "), printed);
+        assertTrue(printed.contains(" --output \"" + file + "\"\n"), printed);
+        assertFalse(printed.contains("\u001b"), printed);
+        assertEquals(8, printed.lines().count(), printed); // wrote, the same image, the command, the camera block
+    }
+
+    /**
+     * The scene file saved again, a version that loads but is not on screen yet (the watcher takes it after two
+     * reads): the command would render the new file, so the still is refused and why; once shown, it is rendered.
+     */
+    @Test
+    void aStillIsRefusedWhileASavedVersionThatLoadsIsNotShownYet() throws Exception {
+        Files.writeString(sceneFile, TestScenes.sphere(0.6, 0.2, 0.3));
+        input.command(Action.RENDER_STILL);
+        engine.step();
+        assertEquals("still not rendered: the headless command would not give this view: '" + sceneFile
+                + "' changed on disk since it was shown; the new version is shown within a second (or its error), then"
+                + " Enter renders it", message());
+        assertEquals(List.of(), files());
+        engine.loaded(sceneFile, source.loadScene()); // what the watcher does: shown at the engine's next turn
+        engine.step();
+        input.command(Action.RENDER_STILL);
+        stepUntilMatches("still: (wrote|not written) .*");
+        assertTrue(message().startsWith("still: wrote "), message());
     }
 
     /** After Page Down onto a scene that does not load, the view is the old scene's: no still, and why. */

@@ -364,4 +364,24 @@ class CameraControllerTest {
         assertTrue(c.stepAperture(-1));
         assertEquals(0.5 / Math.sqrt(2), c.camera().aperture(), 1e-15);
     }
+
+    /** turn_speed takes any positive number: 1e300 degrees a second turns the camera somewhere, never to NaN. */
+    @Test
+    void aTurnSpeedOf1e300KeepsTheCameraAUnitQuaternionInFreeFlightAndLevel() {
+        for (boolean freeFlight : new boolean[] {true, false}) {
+            CameraController c = new CameraController(new Camera(Vector3d.ZERO, Quaternion.IDENTITY, 60), SPEED, 1e300);
+            c.setFreeFlight(freeFlight);
+            for (Action key : new Action[] {Action.YAW_RIGHT, Action.PITCH_UP, Action.ROLL_LEFT}) {
+                c.apply(hold(key, 1.0 / 60));
+                c.apply(new InputFrame.Builder().hold(Action.YAW_LEFT, 0.02).hold(Action.PITCH_DOWN, 0.03)
+                        .hold(Action.ROLL_RIGHT, 0.01).build());
+                Quaternion q = c.camera().orientation();
+                assertEquals(1, q.norm(), 1e-12, () -> "free flight " + freeFlight + ", after " + key + ": " + q);
+            }
+        }
+        CameraController largest = free();
+        largest.setSpeeds(SPEED, Double.MAX_VALUE);
+        largest.apply(new InputFrame.Builder().hold(Action.YAW_RIGHT, 100).hold(Action.PITCH_UP, 100).build());
+        assertEquals(1, largest.camera().orientation().norm(), 1e-12, "the largest double, held 100 s");
+    }
 }

@@ -42,6 +42,25 @@ class CameraToolsTest {
         assertVector(pitched.orientation().up(), free.camera().position(), EPS); // along its own up
     }
 
+    /** A scene's view beyond the keys' range: zooming moves it toward the range, never jumps to its bound. */
+    @Test
+    void zoomMovesAFieldOfViewOutsideItsRangeTowardTheRangeNeverPastOrAway() {
+        Camera wide = Camera.lookAt(Vector3d.ZERO, Vector3d.UNIT_Z, Vector3d.UNIT_Y, 170);
+        CameraController c = new CameraController(wide, 2, 60);
+        assertFalse(c.apply(new InputFrame.Builder().hold(Action.ZOOM_OUT, 0.1).build()), "X: no wider, not 150");
+        assertEquals(170, c.camera().fovDegrees());
+        assertTrue(c.apply(new InputFrame.Builder().hold(Action.ZOOM_IN, 0.1).build()));
+        assertEquals(170 * Math.pow(2, -0.1), c.camera().fovDegrees(), EPS, "Z narrows it from where it is");
+        Camera narrow = Camera.lookAt(Vector3d.ZERO, Vector3d.UNIT_Z, Vector3d.UNIT_Y, 0.5);
+        CameraController n = new CameraController(narrow, 2, 60);
+        assertFalse(n.apply(new InputFrame.Builder().hold(Action.ZOOM_IN, 0.1).build()), "Z: no narrower, not 1");
+        assertEquals(0.5, n.camera().fovDegrees());
+        assertTrue(n.apply(new InputFrame.Builder().hold(Action.ZOOM_OUT, 0.5).build()));
+        assertEquals(0.5 * Math.sqrt(2), n.camera().fovDegrees(), EPS, "X widens it from where it is");
+        n.apply(new InputFrame.Builder().hold(Action.ZOOM_OUT, 60).build());
+        assertEquals(CameraController.MAX_FOV, n.camera().fovDegrees(), "and stops at the bound it moved toward");
+    }
+
     @Test
     void zoomKeysHalveAndDoubleTheFieldOfViewEachSecondWithinBounds() {
         CameraController c = new CameraController(Camera.defaults(), 2, 60);

@@ -187,4 +187,64 @@ class WindowFaultTest {
             }
         });
     }
+
+    /** Frames traced as usual until the test holds them: the next one then never ends, until it is released. */
+    private static final class HeldTrace implements FrameRenderer.TraceCall {
+        volatile boolean hold;
+        final CountDownLatch entered = new CountDownLatch(1);
+        final CountDownLatch release = new CountDownLatch(1);
+
+        @Override
+        public void trace(Tracer tracer, RenderScene scene, FrameBuffer target, int samples, int pass, int count,
+                          int divider) {
+            if (!hold) {
+                FrameRenderer.TraceCall.TRACER.trace(tracer, scene, target, samples, pass, count, divider);
+                return;
+            }
+            entered.countDown();
+            try {
+                release.await();
+            } catch (InterruptedException e) {
+                Thread.currentThread().interrupt();
+            }
+        }
+    }
+
+    private List<Path> stillParts() {
+        try (var files = Files.list(dir)) {
+            return files.filter(p -> p.getFileName().toString().matches("\\.scene-.*\\.png\\.[0-9a-f]+\\.part")).toList();
+        } catch (java.io.IOException e) {
+            throw new java.io.UncheckedIOException(e);
+        }
+    }
+
+    /**
+     * The window closed while a still renders and the engine is held in a frame that never ends: the still is
+     * cancelled by the window's end itself, its hidden file deleted before the program ends, and standard error
+     * says so once, in the words of any other close (not the guard's "the program ended before the still was
+     * written").
+     */
+    @Test
+    void closingTheWindowWhileAFrameNeverEndsCancelsTheStillUnderWayAndSaysSoOnce() throws Exception {
+        HeldTrace held = new HeldTrace();
+        Config config = Config.defaults().withSize(W, H).withSamples(4096).withThreads(2); // a still of minutes
+        try {
+            open(config, new WindowHooks(held, p -> p));
+            Poll.until(() -> shown() != null, 20_000, () -> "a frame; err: " + err);
+            window.input().command(glint.ui.input.Action.RENDER_STILL);
+            Poll.until(() -> stillParts().size() == 1, 20_000, () -> "the still's hidden file; err: " + err);
+            held.hold = true; // the next refinement pass never ends
+            assertTrue(held.entered.await(20, TimeUnit.SECONDS), "a frame held");
+            SwingUtilities.invokeAndWait(() -> window.frame().dispatchEvent(
+                    new WindowEvent(window.frame(), WindowEvent.WINDOW_CLOSING)));
+            assertTimeoutPreemptively(Duration.ofSeconds(10), () -> assertEquals(0, window.awaitExit()),
+                    () -> "the window ended; err: " + err);
+            assertEquals(List.of(), stillParts(), "the still's hidden file is deleted before the program ends");
+            assertEquals(List.of("glint: still cancelled, nothing written (the window closed)"),
+                    err.toString().lines().toList());
+            window = null;
+        } finally {
+            held.release.countDown();
+        }
+    }
 }
