@@ -17,7 +17,8 @@ import glint.shading.Surface;
  * (s, t) taking the light subpath's first s vertices and the camera's first t:
  * <ul>
  * <li>s = 0: the camera subpath itself, where it meets a light's body or escapes to light at infinity;
- * <li>s = 1: a camera vertex joined to a point sampled on a light (next-event estimation);
+ * <li>s = 1: a camera vertex joined to a point sampled on every light, as the path integrator's
+ * next-event estimation;
  * <li>t = 1: a light vertex joined to a point of the camera's lens, its light added at the pixel the
  * camera sees it at ({@link Splats}: light tracing);
  * <li>otherwise: the two subpaths' last vertices joined by a shadow ray.
@@ -31,7 +32,7 @@ final class BdptIntegrator extends Integrator {
 
     /** Random dimensions of the light subpath: which light, its ray (two pairs), then 3 a vertex. */
     private static final int LIGHT_PATH = 1 << 22;
-    /** Random dimensions of the light samples of s = 1, 3 for each camera vertex: which light, the point. */
+    /** Random dimensions of the light samples of s = 1: a pair for each light at each camera vertex. */
     private static final int LIGHT_SAMPLE = 2 << 22;
     /** Random dimensions of the lens points of t = 1, one pair for each light vertex. */
     private static final int LENS_SAMPLE = 3 << 22;
@@ -120,7 +121,12 @@ final class BdptIntegrator extends Integrator {
                     splat(s);
                     continue;
                 }
-                if (connect(s, tv)) {
+                if (s == 1) {
+                    lightSampled(camera[tv - 1], tv);
+                    r += radiance.r;
+                    g += radiance.g;
+                    b += radiance.b;
+                } else if (connect(s, tv)) {
                     r += radiance.r;
                     g += radiance.g;
                     b += radiance.b;
@@ -287,9 +293,6 @@ final class BdptIntegrator extends Integrator {
         if (!pt.connectible) {
             return false;
         }
-        if (s == 1) {
-            return lightSampled(pt, t);
-        }
         BdptVertex qs = light[s - 1];
         if (!qs.connectible) {
             return false;
@@ -352,17 +355,31 @@ final class BdptIntegrator extends Integrator {
     }
 
     /**
-     * s = 1: camera vertex pt joined to a point of a light chosen by its power, sampled as seen from pt
-     * (from its far side where the light is behind a surface that lets light through), weighted.
+     * s = 1: camera vertex pt joined to a point sampled on each light and on the sky, each weighted, summed
+     * into {@link #radiance} (0 where pt cannot be joined).
      */
-    private boolean lightSampled(BdptVertex pt, int t) {
-        int dimension = LIGHT_SAMPLE + (t - 1) * DIMENSIONS_PER_VERTEX;
-        int k = weights.choose(random.single(dimension));
-        if (k < 0) {
-            return false;
+    private void lightSampled(BdptVertex pt, int t) {
+        double r = 0, g = 0, b = 0;
+        if (pt.connectible) {
+            Lights all = scene.lightsAndSky;
+            for (int k = 0, n = all.count(); k < n; k++) {
+                if (lightSampled(pt, t, k)) {
+                    r += f2.r;
+                    g += f2.g;
+                    b += f2.b;
+                }
+            }
         }
-        random.pair(dimension + 1);
+        radiance.set(r, g, b);
+    }
+
+    /**
+     * Camera vertex pt joined to a point of light k sampled as seen from pt (from its far side where the
+     * light is behind a surface that lets light through), its weighted light into {@link #f2}.
+     */
+    private boolean lightSampled(BdptVertex pt, int t, int k) {
         Lights all = scene.lightsAndSky;
+        random.pair(LIGHT_SAMPLE + (t - 1) * all.count() + k);
         Surface s = pt.surface;
         boolean near = true;
         LightSample ls = lightSample;
@@ -391,8 +408,8 @@ final class BdptIntegrator extends Integrator {
         }
         weights.lightVertex(k, s, near, ls, sampledLight);
         double w = weights.weight(1, t, camera, light, sampledLight, sampledCamera);
-        double kk = Math.abs(cosine) * visible * w / weights.chance(k);
-        radiance.set(pt.betaR * f.r * ls.irradianceR * kk, pt.betaG * f.g * ls.irradianceG * kk,
+        double kk = Math.abs(cosine) * visible * w;
+        f2.set(pt.betaR * f.r * ls.irradianceR * kk, pt.betaG * f.g * ls.irradianceG * kk,
                 pt.betaB * f.b * ls.irradianceB * kk);
         return true;
     }

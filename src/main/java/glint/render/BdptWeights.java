@@ -14,7 +14,10 @@ import glint.shading.Surface;
  * (chosen by power), the sphere around the scene that light from infinity crosses, the densities with
  * which either end reaches a vertex, and the multiple importance sampling weight of a strategy: the
  * power heuristic over every strategy that makes the same path, worked out as a chain of density
- * ratios along it (Veach 1997, 10.2; pbrt's BDPT computes it the same way). A strategy the integrator
+ * ratios along it (Veach 1997, 10.2; pbrt's BDPT computes it the same way). Next-event estimation (s = 1)
+ * samples every light at every camera point, as the path integrator does, while a light subpath starts from
+ * one light chosen by power: the light end of a path is denser under s = 1 by {@link #nextEventFactor}. A
+ * strategy the integrator
  * has not got (a light point seen by the camera directly, s = t = 1; a light path ending on the lens,
  * t = 0) never counts. One per render thread.
  */
@@ -359,12 +362,16 @@ final class BdptWeights {
         if (qs != null) {
             qs.delta = false;
         }
+        // next-event estimation's light end is denser by q: its strategy's term counts q^2 more, and
+        // every other term q^2 less where next-event estimation is the strategy weighed
+        double q = nextEventFactor(s == 0 ? pt : s == 1 ? sampledLight : light[0]);
+        double nextEvent = q * q, others = s == 1 ? 1 / nextEvent : 1;
         double sum = 0, ratio = 1;
         for (int i = t - 1; i > 0; i--) {
             BdptVertex v = camera[i];
             ratio *= v.pdfRev / nonZero(v.pdfFwd);
             if (!v.delta && !camera[i - 1].delta) {
-                sum += ratio * ratio;
+                sum += ratio * ratio * (s + t - i == 1 ? nextEvent : others);
             }
         }
         ratio = 1;
@@ -373,7 +380,7 @@ final class BdptWeights {
             ratio *= v.pdfRev / nonZero(v.pdfFwd);
             boolean deltaBefore = i > 0 ? light[i - 1].delta : v.deltaLight;
             if (!v.delta && !deltaBefore) {
-                sum += ratio * ratio;
+                sum += ratio * ratio * (i == 1 ? nextEvent : others);
             }
         }
         pt.pdfRev = ptRev;
@@ -389,6 +396,26 @@ final class BdptWeights {
             }
         }
         return 1 / (1 + sum);
+    }
+
+    /**
+     * How much denser next-event estimation, which samples every light at every camera point, makes the light
+     * end of a path than a light subpath does, which starts from a light chosen by power: 1 / its chance for a
+     * light's point (or a delta light's direction); for a direction to light at infinity, the sum of the
+     * lights' densities of that direction over the sum weighted by their chances.
+     */
+    double nextEventFactor(BdptVertex end) {
+        if (end.kind == BdptVertex.FAR && !end.deltaLight) {
+            double every = 0, chosen = 0;
+            for (int k = 0, n = lights.countAtInfinity(); k < n; k++) {
+                int i = lights.atInfinity(k);
+                double pdf = lights.pdf(i, 0, 0, 0, end.farX, end.farY, end.farZ);
+                every += pdf;
+                chosen += chance[i] * pdf;
+            }
+            return chosen > 0 ? every / chosen : 1;
+        }
+        return end.light >= 0 && chance[end.light] > 0 ? 1 / chance[end.light] : 1;
     }
 
     /**
