@@ -1,0 +1,221 @@
+package glint.study;
+
+import glint.config.Config;
+import glint.image.FrameBuffer;
+import glint.image.PfmReader;
+import glint.render.LightTransport;
+import glint.render.RenderScene;
+import glint.render.RenderSettings;
+import glint.render.Shading;
+import glint.render.Tracer;
+import glint.scene.Scene;
+import glint.scenefile.SceneLoader;
+import java.io.IOException;
+import java.nio.file.Files;
+import java.nio.file.Path;
+import java.util.ArrayList;
+import java.util.List;
+import java.util.Locale;
+import org.knowm.xchart.XYChart;
+
+/**
+ * The bidirectional integrator where the path tracer fails, measured (docs/accuracy.md, "Caustics"):
+ * <ol>
+ * <li>on scenes with caustics (caustic-lamp against the independent reference; scenes/caustics.yaml
+ * against bdpt's own image at {@link #REFERENCE_SAMPLES}), error against render CPU for both, and bdpt's
+ * relMSE and FLIP over the path tracer's at the same render CPU (the path's interpolated on log axes);
+ * <li>the caustic under caustic-lamp's glass ball: its mean radiance against the reference's;
+ * <li>relMSE falling with the samples on the default and metals scenes at 100 x 75, each against bdpt's
+ * own image at 4096 samples (no firefly plateau);
+ * <li>sky-and-sun, whose reference lacks the caustic of its glass ball under the sun: by how much.
+ * </ol>
+ * Usage: {@code java -cp target/benchmarks.jar glint.study.BdptStudy [--docs]}; --docs writes the chart to
+ * docs/images. Depth 64, 2 render threads, cook-torrance; render CPU is the render threads' CPU time.
+ */
+public final class BdptStudy {
+
+    static final int DEPTH = 64;
+    /** Samples of a converged bdpt image, where no independent one exists. */
+    static final int REFERENCE_SAMPLES = 4096;
+    private static final Path REFERENCES = Path.of("src/test/resources/reference-pt");
+
+    private BdptStudy() {
+    }
+
+    /** One render: its method, samples, render CPU in ms and errors against the reference. */
+    record Point(LightTransport transport, int samples, double cpuMillis, double relMse, double flip) {
+    }
+
+    public static void main(String[] args) throws Exception {
+        boolean docs = List.of(args).contains("--docs");
+        Locale.setDefault(Locale.ROOT);
+        List<XYChart> charts = new ArrayList<>();
+        StringBuilder out = new StringBuilder();
+        out.append("| scene | bdpt samples | render CPU | bdpt relMSE / path's at that CPU | bdpt FLIP / path's |\n")
+                .append("|---|--:|--:|--:|--:|\n");
+        FrameBuffer causticLamp = PfmReader.read(REFERENCES.resolve("caustic-lamp.pfm"));
+        equalCpu("caustic-lamp", load(REFERENCES.resolve("caustic-lamp.yaml")), causticLamp, out, charts);
+        Scene caustics = load(Path.of("scenes/caustics.yaml"));
+        FrameBuffer causticsReference = render(caustics, LightTransport.BDPT, 200, 150, REFERENCE_SAMPLES).frame;
+        equalCpu("caustics", caustics, causticsReference, out, charts);
+        out.append('\n').append(causticUnderTheBall(causticLamp)).append('\n');
+        out.append(fallsWithSamples("default")).append(fallsWithSamples("metals"));
+        out.append('\n').append(skyAndSun());
+        System.out.print(out);
+        Path images = docs ? Path.of("docs/images") : Path.of("target/study-bdpt");
+        Files.createDirectories(images);
+        Charts.save(charts, 1, charts.size(), images.resolve("accuracy-caustics.png"));
+        System.out.println("chart: " + images.resolve("accuracy-caustics.png"));
+    }
+
+    /** Path at 16 to 1024 samples and bdpt at 4 to 256 against {@code reference}: a table row per bdpt point and a chart. */
+    static void equalCpu(String name, Scene scene, FrameBuffer reference, StringBuilder out, List<XYChart> charts) {
+        int w = reference.width(), h = reference.height();
+        List<Point> path = new ArrayList<>(), bdpt = new ArrayList<>();
+        for (int samples : new int[] {16, 64, 256, 1024}) {
+            path.add(point(scene, LightTransport.PATH, samples, reference));
+        }
+        for (int samples : new int[] {4, 16, 64, 256}) {
+            bdpt.add(point(scene, LightTransport.BDPT, samples, reference));
+        }
+        for (Point b : bdpt) {
+            out.append(String.format("| %s | %d | %.0f ms | %.2f | %.2f |%n", name, b.samples(), b.cpuMillis(),
+                    b.relMse() / atCpu(path, b.cpuMillis(), true), b.flip() / atCpu(path, b.cpuMillis(), false)));
+        }
+        for (List<Point> points : List.of(path, bdpt)) {
+            for (Point p : points) {
+                System.err.printf("%s %s s%d: %.0f ms, relMSE %.3e, FLIP %.4f%n", name, p.transport().key(),
+                        p.samples(), p.cpuMillis(), p.relMse(), p.flip());
+            }
+        }
+        XYChart chart = Charts.chart(name + ": relative MSE against render CPU", "render CPU (ms)", "relative MSE",
+                true, true, 600);
+        Charts.line(chart, "path s16-1024", cpu(path), errors(path, true), 0, false);
+        Charts.line(chart, "bdpt s4-256", cpu(bdpt), errors(bdpt, true), 4, false);
+        charts.add(chart);
+        XYChart flip = Charts.chart(name + ": FLIP against render CPU", "render CPU (ms)", "mean FLIP", true, true, 600);
+        Charts.line(flip, "path s16-1024", cpu(path), errors(path, false), 0, false);
+        Charts.line(flip, "bdpt s4-256", cpu(bdpt), errors(bdpt, false), 4, false);
+        charts.add(flip);
+    }
+
+    /** The path tracer's error at render CPU {@code cpu}: interpolated between its points on log axes, extrapolated past them. */
+    static double atCpu(List<Point> path, double cpu, boolean relMse) {
+        int i = 1;
+        while (i < path.size() - 1 && path.get(i).cpuMillis() < cpu) {
+            i++;
+        }
+        Point a = path.get(i - 1), b = path.get(i);
+        double ea = relMse ? a.relMse() : a.flip(), eb = relMse ? b.relMse() : b.flip();
+        double t = Math.log(cpu / a.cpuMillis()) / Math.log(b.cpuMillis() / a.cpuMillis());
+        return Math.exp(Math.log(ea) + t * (Math.log(eb) - Math.log(ea)));
+    }
+
+    /** The mean radiance of the caustic under caustic-lamp's glass ball (its brightest floor pixels) in bdpt, path and the reference. */
+    static String causticUnderTheBall(FrameBuffer reference) {
+        Scene scene = load(REFERENCES.resolve("caustic-lamp.yaml"));
+        FrameBuffer bdpt = render(scene, LightTransport.BDPT, 200, 150, 1024).frame;
+        FrameBuffer path = render(scene, LightTransport.PATH, 200, 150, 1024).frame;
+        // the caustic: pixels below the ball's centre whose reference is above 4x the floor's median there
+        List<Integer> spot = new ArrayList<>();
+        double[] floor = new double[reference.width() * (reference.height() - 110)];
+        int n = 0;
+        for (int y = 110; y < reference.height(); y++) {
+            for (int x = 0; x < reference.width(); x++) {
+                floor[n++] = luminance(reference, x, y);
+            }
+        }
+        java.util.Arrays.sort(floor);
+        double median = floor[floor.length / 2];
+        for (int y = 110; y < reference.height(); y++) {
+            for (int x = 60; x < 140; x++) {
+                if (luminance(reference, x, y) > 4 * median) {
+                    spot.add(y * reference.width() + x);
+                }
+            }
+        }
+        return String.format("caustic under caustic-lamp's glass ball (%d pixels): mean radiance reference %.3f, "
+                        + "bdpt 1024 %.3f (%+.1f %%), path 1024 %.3f (%+.1f %%)%n", spot.size(), mean(reference, spot),
+                mean(bdpt, spot), 100 * (mean(bdpt, spot) / mean(reference, spot) - 1), mean(path, spot),
+                100 * (mean(path, spot) / mean(reference, spot) - 1));
+    }
+
+    /** bdpt's relMSE at 16 and 256 samples against its own image at 4096, at 100 x 75: how far it falls. */
+    static String fallsWithSamples(String name) {
+        Scene scene = load(Path.of("scenes", name + ".yaml"));
+        FrameBuffer own = render(scene, LightTransport.BDPT, 100, 75, 4096).frame;
+        double at16 = RelativeMse.of(render(scene, LightTransport.BDPT, 100, 75, 16).frame, own);
+        double at256 = RelativeMse.of(render(scene, LightTransport.BDPT, 100, 75, 256).frame, own);
+        double path16 = RelativeMse.of(render(scene, LightTransport.PATH, 100, 75, 16).frame, own);
+        double path256 = RelativeMse.of(render(scene, LightTransport.PATH, 100, 75, 256).frame, own);
+        return String.format("%s at 100 x 75 against bdpt at 4096: bdpt relMSE %.3e at 16, %.3e at 256 (falls %.1fx);"
+                + " path %.3e at 16, %.3e at 256 (falls %.1fx)%n", name, at16, at256, at16 / at256, path16, path256,
+                path16 / path256);
+    }
+
+    /** sky-and-sun: bdpt at 256 against the reference, which lacks the sun's caustic under the glass ball. */
+    static String skyAndSun() throws IOException {
+        FrameBuffer reference = PfmReader.read(REFERENCES.resolve("sky-and-sun.pfm"));
+        Scene scene = load(REFERENCES.resolve("sky-and-sun.yaml"));
+        FrameBuffer bdpt = render(scene, LightTransport.BDPT, reference.width(), reference.height(), 256).frame;
+        FrameBuffer path = render(scene, LightTransport.PATH, reference.width(), reference.height(), 256).frame;
+        double bdptMean = mean(bdpt, null), pathMean = mean(path, null), refMean = mean(reference, null);
+        return String.format("sky-and-sun at 256 samples: relMSE bdpt %.3e, path %.3e; mean radiance bdpt %.4f, path "
+                        + "%.4f, reference %.4f (bdpt %+.2f %%: the caustic)%n", RelativeMse.of(bdpt, reference),
+                RelativeMse.of(path, reference), bdptMean, pathMean, refMean, 100 * (bdptMean / refMean - 1));
+    }
+
+    private static Point point(Scene scene, LightTransport transport, int samples, FrameBuffer reference) {
+        Rendered r = render(scene, transport, reference.width(), reference.height(), samples);
+        return new Point(transport, samples, r.cpuMillis, RelativeMse.of(r.frame, reference), Flip.of(r.frame, reference));
+    }
+
+    private record Rendered(FrameBuffer frame, double cpuMillis) {
+    }
+
+    static Rendered render(Scene scene, LightTransport transport, int w, int h, int samples) {
+        Config d = Config.defaults();
+        RenderSettings settings = new RenderSettings(Shading.COOK_TORRANCE, DEPTH, d.minWeight(), d.epsilon())
+                .withTransport(transport);
+        FrameBuffer frame = new FrameBuffer(w, h);
+        try (Tracer tracer = new Tracer(2)) {
+            RenderScene compiled = RenderScene.compile(scene, settings);
+            long before = tracer.renderCpuNanos();
+            tracer.render(compiled, frame, samples, 0, d.screenDivider());
+            return new Rendered(frame, (tracer.renderCpuNanos() - before) / 1e6);
+        }
+    }
+
+    private static Scene load(Path file) {
+        try {
+            return SceneLoader.load(file);
+        } catch (Exception e) {
+            throw new IllegalStateException("cannot load " + file + ": " + e.getMessage(), e);
+        }
+    }
+
+    private static double luminance(FrameBuffer f, int x, int y) {
+        return 0.2126 * f.get(x, y, 0) + 0.7152 * f.get(x, y, 1) + 0.0722 * f.get(x, y, 2);
+    }
+
+    /** The mean luminance over the given pixels (all where null). */
+    private static double mean(FrameBuffer f, List<Integer> pixels) {
+        double sum = 0;
+        int n = 0;
+        for (int i = 0; i < f.width() * f.height(); i++) {
+            if (pixels == null || pixels.contains(i)) {
+                sum += luminance(f, i % f.width(), i / f.width());
+                n++;
+            }
+        }
+        return sum / n;
+    }
+
+    private static double[] cpu(List<Point> points) {
+        return points.stream().mapToDouble(Point::cpuMillis).toArray();
+    }
+
+    private static double[] errors(List<Point> points, boolean relMse) {
+        return points.stream().mapToDouble(p -> relMse ? p.relMse() : p.flip()).toArray();
+    }
+}
