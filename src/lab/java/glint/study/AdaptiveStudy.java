@@ -31,7 +31,9 @@ import org.knowm.xchart.style.Styler;
  * 16 to 1024 samples a pixel and for adaptive stills of noise thresholds 10 % to 1 % (capped at 1024). Writes
  * the chart, a picture of where the samples went, and the table on standard output.
  *
- * <pre>java -cp target/benchmarks.jar glint.study.AdaptiveStudy [--quick] [OUT_DIR]</pre>
+ * <pre>java -cp target/benchmarks.jar glint.study.AdaptiveStudy [--quick] [OUT_DIR]
+ * java -cp target/benchmarks.jar glint.study.AdaptiveStudy --readout</pre>
+ * The second prints the window's noise readout on two scenes at 16 to 1024 samples a pixel.
  */
 public final class AdaptiveStudy {
 
@@ -56,6 +58,10 @@ public final class AdaptiveStudy {
     }
 
     public static void main(String[] args) throws Exception {
+        if (args.length > 0 && args[0].equals("--readout")) {
+            readout();
+            return;
+        }
         boolean quick = args.length > 0 && args[0].equals("--quick");
         Path out = Path.of(args.length > (quick ? 1 : 0) ? args[quick ? 1 : 0] : quick ? "target/adaptive-quick"
                 : "docs/images");
@@ -109,6 +115,28 @@ public final class AdaptiveStudy {
         all.addAll(flipCharts);
         Charts.save(all, 2, SUBJECTS.size(), out.resolve("accuracy-adaptive.png"));
         System.out.print(table);
+    }
+
+    /**
+     * The window's noise readout ({@link Convergence#relativeNoise}) on sky-and-sun at 200 x 150 at 16, 64, 256 and
+     * 1024 samples a pixel, every pixel sampled (no threshold): it should halve as the samples quadruple.
+     */
+    private static void readout() throws Exception {
+        Path dir = Path.of("src/test/resources/reference-pt");
+        for (String name : List.of("sky-and-sun", "bounce-box")) {
+            RenderScene compiled = RenderScene.compile(SceneLoader.load(dir.resolve(name + ".yaml")),
+                    new RenderSettings(Shading.COOK_TORRANCE, 64, 0.01, 1e-9).withTransport(LightTransport.PATH));
+            Convergence c = new Convergence(200, 150, 0, 1024);
+            StringBuilder line = new StringBuilder(name + ":");
+            try (Tracer tracer = new Tracer(THREADS)) {
+                c.refine(tracer, compiled, new FrameBuffer(200, 150), 8, () -> {
+                    if (c.passes() == 16 || c.passes() == 64 || c.passes() == 256 || c.passes() == 1024) {
+                        line.append(String.format(Locale.ROOT, " %d: %.2f %%", c.passes(), 100 * c.relativeNoise()));
+                    }
+                });
+            }
+            System.out.println(line);
+        }
     }
 
     private static Point point(String method, long cpuNanos, double meanSpp, FrameBuffer frame,
