@@ -71,7 +71,7 @@ public final class Main implements Callable<Integer> {
     String tone;
 
     @Option(names = "--noise", paramLabel = "T",
-            description = "path and bdpt: render each pixel until its noise is below T (0.01 = 1 %), up to --max-samples")
+            description = "path and bdpt: render each pixel until its noise is below T (0.01 = 1 %%), up to --max-samples")
     Double noise;
 
     @Option(names = "--max-samples", paramLabel = "N",
