@@ -144,11 +144,11 @@ public final class FrameRenderer implements AutoCloseable {
      */
     public BufferedImage renderPasses(RenderScene scene, int width, int height, int samples, int pass, int count,
                                       double threshold, int cap) {
+        anyFrame = false; // before the reset: memory running out there leaves no refinement to read
         if (pass == 0) {
             accumulator.reset(width, height, threshold, cap);
         }
         FrameBuffer frame = buffer(width, height);
-        anyFrame = false;
         tracer.traceOnly(accumulator.convergence().active());
         try {
             call.trace(tracer, scene, frame, samples, pass, count, divider);
