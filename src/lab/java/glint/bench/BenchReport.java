@@ -60,13 +60,16 @@ public final class BenchReport {
         Path docs = output(args);
         List<Result> results = read(Path.of(args[0]));
         Files.createDirectories(docs.resolve("images"));
+        List<Result> frames = results.stream().filter(r -> r.benchmark().endsWith("FrameBenchmark.renderFrame"))
+                .toList();
         for (String material : new String[] {"matte", "glass"}) {
-            List<Result> series = results.stream()
-                    .filter(r -> r.benchmark().endsWith("FrameBenchmark.renderFrame") && r.param("material").equals(material))
-                    .toList();
-            if (!series.isEmpty()) {
+            List<Result> series = frames.stream().filter(r -> r.param("material").equals(material)).toList();
+            if (distinct(series, "spheres") > 1) { // a chart along the spheres needs more than one count of them
                 writeChart(series, material, docs.resolve("images/bench-" + material + ".png"));
             }
+        }
+        if (frames.stream().map(Result::renderThreads).distinct().count() > 1) {
+            writeThreadsChart(frames, docs.resolve("images/bench-threads.png"));
         }
         Path page = docs.resolve("benchmarks.md");
         String table = table(results, args[0]);
@@ -137,6 +140,46 @@ public final class BenchReport {
             double[] x = line.stream().mapToDouble(r -> Double.parseDouble(r.param("spheres"))).toArray();
             double[] y = line.stream().mapToDouble(Result::median).toArray();
             chart.addSeries(threads + (threads == 1 ? " render thread" : " render threads"), x, y).setMarker(SeriesMarkers.CIRCLE);
+        }
+        BitmapEncoder.saveBitmap(chart, file.toString(), BitmapEncoder.BitmapFormat.PNG);
+    }
+
+    private static long distinct(List<Result> results, String param) {
+        return results.stream().map(r -> r.param(param)).distinct().count();
+    }
+
+    /**
+     * Frame time against the render threads, a line per scene (sphere count and material): each point the median
+     * of the benchmark's iterations, its error bar reaching the farther of the least and the greatest of them (a
+     * bar as wide as the iterations spread; JMH's 99.9 % error of a mean of 3 iterations is many times wider).
+     */
+    static void writeThreadsChart(List<Result> frames, Path file) throws IOException {
+        XYChart chart = new XYChartBuilder().width(800).height(500)
+                .title("Frame time against render threads (800x600, 1 spp, depth 5)")
+                .xAxisTitle("render threads").yAxisTitle("ms per frame (median; bar: least to greatest iteration)")
+                .build();
+        chart.getStyler().setLegendVisible(true);
+        chart.getStyler().setYAxisMin(0.0);
+        chart.getStyler().setXAxisDecimalPattern("#");
+        TreeSet<String> scenes = new TreeSet<>((a, b) -> {
+            String[] x = a.split(" "), y = b.split(" ");
+            int byMaterial = x[1].compareTo(y[1]);
+            return byMaterial != 0 ? byMaterial : Integer.compare(Integer.parseInt(x[0]), Integer.parseInt(y[0]));
+        });
+        frames.forEach(r -> scenes.add(r.param("spheres") + " " + r.param("material")));
+        for (String scene : scenes) {
+            String[] parts = scene.split(" ");
+            List<Result> line = frames.stream()
+                    .filter(r -> r.param("spheres").equals(parts[0]) && r.param("material").equals(parts[1]))
+                    .sorted((a, b) -> Integer.compare(Integer.parseInt(a.renderThreads()),
+                            Integer.parseInt(b.renderThreads())))
+                    .toList();
+            double[] x = line.stream().mapToDouble(r -> Double.parseDouble(r.renderThreads())).toArray();
+            double[] y = line.stream().mapToDouble(Result::median).toArray();
+            double[] bars = line.stream().mapToDouble(r -> Math.max(r.max() - r.median(), r.median() - r.min()))
+                    .toArray();
+            String name = parts[0] + " " + parts[1] + (parts[0].equals("1") ? " sphere" : " spheres");
+            chart.addSeries(name, x, y, bars).setMarker(SeriesMarkers.CIRCLE);
         }
         BitmapEncoder.saveBitmap(chart, file.toString(), BitmapEncoder.BitmapFormat.PNG);
     }

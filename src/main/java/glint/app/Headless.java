@@ -78,6 +78,10 @@ final class Headless {
         try {
             out.printf(Locale.ROOT, "wrote %s (%s) in %.1f ms%n", InputException.printable(output.toString()),
                     StillRun.describe(config, true), elapsed / 1e6);
+            String spent = still.samplesSpent();
+            if (!spent.isEmpty()) {
+                out.println("samples spent: " + spent);
+            }
             out.flush();
         } catch (Output.Failure e) { // the image is there all the same
             throw e.after(InputException.cutPath(output.toString()) + " was written");

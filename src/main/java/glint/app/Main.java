@@ -72,6 +72,14 @@ public final class Main implements Callable<Integer> {
             description = "neutral (highlights roll off to white, the default) or standard (clamped at white)")
     String tone;
 
+    @Option(names = "--noise", paramLabel = "T",
+            description = "path and bdpt: render each pixel until its noise is below T (0.01 = 1 %%), up to --max-samples")
+    Double noise;
+
+    @Option(names = "--max-samples", paramLabel = "N",
+            description = "the most samples a pixel gets from --noise and the window's refinement; default 1024")
+    Integer maxSamples;
+
     @Option(names = "--bench", paramLabel = "N", description = "render N frames of the still camera headless and time them")
     Integer bench;
 
@@ -348,7 +356,7 @@ public final class Main implements Callable<Integer> {
 
     /** The command line's settings, which rank above the scene's render: block and the config. */
     private Flags flags() {
-        return new Flags(width, height, spp, threads, depth, shading, integrator, exposure, tone);
+        return new Flags(width, height, spp, threads, depth, shading, integrator, exposure, tone, noise, maxSamples);
     }
 
     private Config overrides(Config c) throws InputException {

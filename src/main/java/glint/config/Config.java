@@ -34,6 +34,10 @@ import java.util.function.Consumer;
  * @param transport      the integrator: Whitted or path tracing (key {@code integrator})
  * @param view           the view transform of the 8-bit images: exposure and tone curve (keys {@code exposure},
  *                       {@code tone})
+ * @param noise          adaptive sampling's threshold, the relative noise a pixel of the path and bdpt integrators
+ *                       stops at: a still is rendered to it (instead of {@code samples} a pixel) when above 0, and
+ *                       the window refines to it at rest (to {@link glint.render.Convergence#WINDOW_NOISE} when 0)
+ * @param maxSamples     the most samples a pixel gets where adaptive sampling decides (key {@code max_samples})
  * @param sizeSetAt      where a config file set the image size (or lowered the limit the default size breaks),
  *                       for a refusal of a size beyond the limit; null when none did, or once the size was set
  *                       elsewhere (a scene's render: block, --width), which is checked there
@@ -42,13 +46,20 @@ public record Config(boolean debug, double epsilon, double displayScale, int scr
                      int displayWidth, int displayHeight, int recursionMax, String name,
                      String scene, int threads, Shading shading, int samples, double minWeight,
                      double moveSpeed, double turnSpeed, double targetFps, Limits limits,
-                     boolean freeFlight, LightTransport transport, ViewTransform view, Place sizeSetAt) {
+                     boolean freeFlight, LightTransport transport, ViewTransform view, double noise,
+                     int maxSamples, Place sizeSetAt) {
+
+    /**
+     * The default cap of adaptive sampling: 1024 samples a pixel, the most the speed/accuracy study renders
+     * (docs/accuracy.md), where the reference scenes are within FLIP 0.02 of their converged images.
+     */
+    public static final int MAX_SAMPLES = 1024;
 
     /** A line and column of a config file. */
     public record Place(String file, int line, int column) {
     }
 
-    /** A config whose size no config file set. */
+    /** A config without adaptive stills, capped at {@link #MAX_SAMPLES}, whose size no config file set. */
     public Config(boolean debug, double epsilon, double displayScale, int screenDivider,
                   int displayWidth, int displayHeight, int recursionMax, String name,
                   String scene, int threads, Shading shading, int samples, double minWeight,
@@ -56,7 +67,7 @@ public record Config(boolean debug, double epsilon, double displayScale, int scr
                   LightTransport transport, ViewTransform view) {
         this(debug, epsilon, displayScale, screenDivider, displayWidth, displayHeight, recursionMax, name, scene,
                 threads, shading, samples, minWeight, moveSpeed, turnSpeed, targetFps, limits, freeFlight,
-                transport, view, null);
+                transport, view, 0, MAX_SAMPLES, null);
     }
 
     /** A config of the default view transform. */
@@ -156,6 +167,24 @@ public record Config(boolean debug, double epsilon, double displayScale, int scr
         return with(c -> c.view = transform);
     }
 
+    public Config withNoise(double threshold) {
+        return with(c -> c.noise = threshold);
+    }
+
+    public Config withMaxSamples(int cap) {
+        return with(c -> c.maxSamples = cap);
+    }
+
+    /** Whether a still is rendered by adaptive sampling: a path or bdpt still with a noise threshold. */
+    public boolean adaptiveStill() {
+        return transport.physical() && noise > 0;
+    }
+
+    /** The threshold the window refines to at rest: {@code noise}, or the window's own where it is 0. */
+    public double windowNoise() {
+        return noise > 0 ? noise : glint.render.Convergence.WINDOW_NOISE;
+    }
+
     public Config withScreenDivider(int divider) {
         return with(c -> c.screenDivider = divider);
     }
@@ -205,6 +234,8 @@ public record Config(boolean debug, double epsilon, double displayScale, int scr
         boolean freeFlight;
         LightTransport transport;
         ViewTransform view;
+        double noise;
+        int maxSamples;
         Place sizeSetAt;
 
         Copy(Config c) {
@@ -228,13 +259,15 @@ public record Config(boolean debug, double epsilon, double displayScale, int scr
             freeFlight = c.freeFlight;
             transport = c.transport;
             view = c.view;
+            noise = c.noise;
+            maxSamples = c.maxSamples;
             sizeSetAt = c.sizeSetAt;
         }
 
         Config build() {
             return new Config(debug, epsilon, displayScale, screenDivider, displayWidth, displayHeight, recursionMax,
                     name, scene, threads, shading, samples, minWeight, moveSpeed, turnSpeed, targetFps, limits,
-                    freeFlight, transport, view, sizeSetAt);
+                    freeFlight, transport, view, noise, maxSamples, sizeSetAt);
         }
     }
 

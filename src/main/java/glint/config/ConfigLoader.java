@@ -18,7 +18,7 @@ public final class ConfigLoader {
 
     static final Set<String> KEYS = new LinkedHashSet<>(List.of(
             "debug", "epsilon", "display_scale", "screen_divider", "display_height", "recursion_max",
-            "display_width", "name", "scene", "threads", "shading", "integrator", "samples", "min_weight",
+            "display_width", "name", "scene", "threads", "shading", "integrator", "samples", "noise", "max_samples", "min_weight",
             "move_speed", "turn_speed", "target_fps", "free_flight", "exposure", "tone",
             "max_image_pixels", "max_scene_bytes", "max_objects", "max_lights", "max_recursion"));
 
@@ -97,6 +97,8 @@ public final class ConfigLoader {
             throw error("integrator", Flags.PATH_NEEDS_COOK_TORRANCE);
         }
         int samples = samples(d.samples());
+        double noise = noise(d.noise());
+        int maxSamples = integer("max_samples", d.maxSamples(), 1, MAX_SAMPLES);
         double minWeight = number("min_weight", d.minWeight(), 0, 1, "a number from 0 to 1");
         double moveSpeed = positive("move_speed", d.moveSpeed());
         double turnSpeed = positive("turn_speed", d.turnSpeed());
@@ -108,7 +110,7 @@ public final class ConfigLoader {
         // flag may have set another (Config.sizeRefusal), at the line that set it
         return new Config(debug, epsilon, displayScale, divider, width, height, depth, name, scene, threads,
                 shading, samples, minWeight, moveSpeed, turnSpeed, targetFps, limits, freeFlight, transport, view,
-                sizePlace());
+                noise, maxSamples, sizePlace());
     }
 
     /**
@@ -238,6 +240,29 @@ public final class ConfigLoader {
                     + Suggestions.hint(v, ViewTransform.Tone.KEYS));
         }
         return t;
+    }
+
+    /** The largest {@code max_samples}: the window's longest refinement before adaptive sampling. */
+    static final int MAX_SAMPLES = 65536;
+
+    /** What {@code noise} accepts, in words (the config, a scene's render: block, {@code --noise}). */
+    public static final String NOISE_RANGE = "0 (off) or a number from 0.0001 to 1";
+
+    /** Whether {@code noise} may be {@code threshold}: 0, or from 1e-4 (0.01 %) to 1 (100 %). */
+    public static boolean noiseInRange(double threshold) {
+        return threshold == 0 || (threshold >= 1e-4 && threshold <= 1);
+    }
+
+    private double noise(double fallback) throws InputException {
+        String v = value("noise");
+        if (v == null) {
+            return fallback;
+        }
+        double x = number("noise", fallback, 0, 1, NOISE_RANGE);
+        if (!noiseInRange(x)) {
+            throw error("noise", "noise: expected " + NOISE_RANGE + ", got " + InputException.quote(v));
+        }
+        return x;
     }
 
     private int samples(int fallback) throws InputException {

@@ -15,7 +15,13 @@ import java.util.function.Consumer;
  * config.properties, which beats the defaults ({@link #effective}).
  */
 public record Flags(Integer width, Integer height, Integer samples, Integer threads, Integer depth, String shading,
-                    String integrator, Double exposure, String tone) {
+                    String integrator, Double exposure, String tone, Double noise, Integer maxSamples) {
+
+    /** Flags that leave adaptive sampling as it is. */
+    public Flags(Integer width, Integer height, Integer samples, Integer threads, Integer depth, String shading,
+                 String integrator, Double exposure, String tone) {
+        this(width, height, samples, threads, depth, shading, integrator, exposure, tone, null, null);
+    }
 
     /** No flag given. */
     public static final Flags NONE = new Flags(null, null, null, null, null, null, null);
@@ -145,6 +151,12 @@ public record Flags(Integer width, Integer height, Integer samples, Integer thre
             }
             c = c.withRecursionMax(r.recursionMax());
         }
+        if (r.noise() != null) {
+            c = c.withNoise(r.noise());
+        }
+        if (r.maxSamples() != null) {
+            c = c.withMaxSamples(r.maxSamples());
+        }
         if (r.minWeight() != null) {
             c = c.withMinWeight(r.minWeight());
         }
@@ -192,6 +204,17 @@ public record Flags(Integer width, Integer height, Integer samples, Integer thre
             }
             c = c.withSamples(samples);
         }
+        if (noise != null) {
+            if (!ConfigLoader.noiseInRange(noise)) {
+                throw new InputException("glint", 0, 0, "--noise: expected " + ConfigLoader.NOISE_RANGE + ", got "
+                        + plain(noise));
+            }
+            c = c.withNoise(noise);
+        }
+        if (maxSamples != null) {
+            checkRange("--max-samples", maxSamples, 1, ConfigLoader.MAX_SAMPLES);
+            c = c.withMaxSamples(maxSamples);
+        }
         if (threads != null) {
             checkRange("--threads", threads, 0, 1024);
             c = c.withThreads(threads);
@@ -233,6 +256,12 @@ public record Flags(Integer width, Integer height, Integer samples, Integer thre
             c = c.withView(c.view().withTone(curve));
         }
         return c;
+    }
+
+    /** A number as a user writes it: {@code 0.00001}, {@code 2}, {@code -0.5}. */
+    private static String plain(double x) {
+        return Double.isFinite(x) ? new java.math.BigDecimal(Double.toString(x)).stripTrailingZeros().toPlainString()
+                : Double.toString(x);
     }
 
     private static void checkRange(String option, int value, int min, int max) throws InputException {

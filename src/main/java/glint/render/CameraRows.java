@@ -29,6 +29,8 @@ final class CameraRows {
     private CameraModel camera;
     private PinholeCamera pinhole;
     private int width, height, x0, x1, side, firstSample, sampleCount, frameIndex;
+    /** The pixels traced, row by row, or null for all (adaptive sampling). */
+    private boolean[] only;
 
     /** The row's ray directions, one coordinate an array; written only here, read by tests. */
     double[] dirX = new double[0], dirY = new double[0], dirZ = new double[0];
@@ -50,6 +52,13 @@ final class CameraRows {
      */
     void prepare(CameraModel camera, int width, int height, int x0, int x1, int samples, int firstSample,
                  int sampleCount, int frameIndex) {
+        prepare(camera, width, height, x0, x1, samples, firstSample, sampleCount, frameIndex, null);
+    }
+
+    /** {@link #prepare}, tracing only the pixels whose entry of {@code only} (row by row) is true; null: all. */
+    void prepare(CameraModel camera, int width, int height, int x0, int x1, int samples, int firstSample,
+                 int sampleCount, int frameIndex, boolean[] only) {
+        this.only = only;
         this.camera = camera;
         this.pinhole = camera.oneOrigin() && camera instanceof PinholeCamera p ? p : null;
         if (pinhole != null) {
@@ -89,6 +98,19 @@ final class CameraRows {
                 centreX[ray] = screenX(x0 + ray + 0.5);
             }
         }
+    }
+
+    /** Whether any pixel of the tile's row y is traced. */
+    boolean anyTraced(int y) {
+        if (only == null) {
+            return true;
+        }
+        for (int p = y * width + x0, end = y * width + x1; p < end; p++) {
+            if (only[p]) {
+                return true;
+            }
+        }
+        return false;
     }
 
     /** How far past its pixels' edges a row's frustum reaches, in pixels: far more than any rounding of a ray's direction. */
@@ -224,7 +246,18 @@ final class CameraRows {
             integrator.findCameraHits(originX, originY, originZ, dirX, dirY, dirZ, rays, hitT, hitPrimitive);
         }
         int pixel = y * width + x0, sample = firstSample, end = firstSample + sampleCount;
+        boolean[] traced = only;
         for (int ray = 0; ray < rays; ray++) {
+            if (traced != null && !traced[pixel]) { // converged: no path starts here
+                radianceR[ray] = 0;
+                radianceG[ray] = 0;
+                radianceB[ray] = 0;
+                if (++sample == end) {
+                    sample = firstSample;
+                    pixel++;
+                }
+                continue;
+            }
             integrator.beginPath(pixel, frameIndex, sample, side * side);
             Rgb radiance = integrator.shadeCamera(hitPrimitive[ray], hitT[ray], originX[ray], originY[ray],
                     originZ[ray], dirX[ray], dirY[ray], dirZ[ray], hitsLeft);
@@ -238,17 +271,24 @@ final class CameraRows {
         }
     }
 
-    /** Writes into the frame the average of each pixel's traced samples, the tile's pixels of row y. */
+    /** Writes into the frame the average of each pixel's traced samples, the tile's pixels of row y that are traced. */
     void writeRow(FrameBuffer frame, int y) {
+        boolean[] traced = only;
         if (sampleCount == 1) {
             for (int x = x0, ray = 0; x < x1; x++, ray++) {
-                frame.set(x, y, radianceR[ray], radianceG[ray], radianceB[ray]);
+                if (traced == null || traced[y * width + x]) {
+                    frame.set(x, y, radianceR[ray], radianceG[ray], radianceB[ray]);
+                }
             }
             return;
         }
         double inv = 1.0 / sampleCount;
         int ray = 0;
         for (int x = x0; x < x1; x++) {
+            if (traced != null && !traced[y * width + x]) {
+                ray += sampleCount;
+                continue;
+            }
             double sumR = 0, sumG = 0, sumB = 0;
             for (int end = ray + sampleCount; ray < end; ray++) {
                 sumR += radianceR[ray];

@@ -48,6 +48,8 @@ public final class Tracer implements AutoCloseable {
     private volatile int frameIndex;
     private volatile int divider;
     private volatile int tileStride;
+    /** The pixels traced (row by row), or null for all; set between frames ({@link #traceOnly}). */
+    private volatile boolean[] only;
 
     public Tracer(int threads) {
         if (threads < 1) {
@@ -137,6 +139,18 @@ public final class Tracer implements AutoCloseable {
         run(renderScene, target, samples, first % samples, count, first / samples, divider);
     }
 
+    /**
+     * Traces from now on only the pixels whose entry of {@code pixels} (row by row, the frame's size) is true,
+     * or every pixel when null: the frame's other pixels are left as they are, and no path starts from them
+     * (adaptive sampling, {@link Convergence}). The array is read while a frame renders, so it is changed only
+     * between frames. Light that the bidirectional integrator's paths splat onto other pixels is scaled by the
+     * pixels in the frame over the pixels traced: as many light paths as before are represented, and each
+     * traced pixel's value stays an unbiased estimate.
+     */
+    public void traceOnly(boolean[] pixels) {
+        only = pixels;
+    }
+
     private void run(RenderScene renderScene, FrameBuffer target, int samples, int first, int count,
                      int frameIndex, int divider) {
         this.scene = renderScene;
@@ -146,6 +160,11 @@ public final class Tracer implements AutoCloseable {
         this.sampleCount = count;
         this.frameIndex = frameIndex;
         this.divider = Math.max(1, Math.min(divider, Math.min(target.width(), target.height())));
+        boolean[] mask = only;
+        if (mask != null && mask.length != target.width() * target.height()) {
+            throw new IllegalArgumentException("a mask of " + mask.length + " pixels for a frame of "
+                    + target.width() + "x" + target.height());
+        }
         nextTile.set(0);
         failure.set(null);
         tilesDone.set(0);
@@ -170,8 +189,23 @@ public final class Tracer implements AutoCloseable {
             throw new RenderException("a render worker failed: " + error, error);
         }
         if (splatting) {
-            splats.addInto(target, 1.0 / count);
+            int traced = tracedPixels(target);
+            if (traced > 0) {
+                splats.addInto(target, 1.0 / count * ((double) (target.width() * target.height()) / traced));
+            }
         }
+    }
+
+    private int tracedPixels(FrameBuffer target) {
+        boolean[] mask = only;
+        if (mask == null) {
+            return target.width() * target.height();
+        }
+        int traced = 0;
+        for (boolean b : mask) {
+            traced += b ? 1 : 0;
+        }
+        return traced;
     }
 
     private void runWorker(int index) {
@@ -200,7 +234,7 @@ public final class Tracer implements AutoCloseable {
         int column = tile % d, row = tile / d;
         int x0 = column * f.width() / d, x1 = (column + 1) * f.width() / d;
         int y0 = row * f.height() / d, y1 = (row + 1) * f.height() / d;
-        worker.renderTile(scene, f, splats, samples, firstSample, sampleCount, frameIndex, x0, y0, x1, y1);
+        worker.renderTile(scene, f, splats, samples, firstSample, sampleCount, frameIndex, x0, y0, x1, y1, only);
     }
 
     // ---------------------------------------------------------------- progress and cancelling

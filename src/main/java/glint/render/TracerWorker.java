@@ -29,19 +29,23 @@ final class TracerWorker {
     /**
      * Renders pixels [x0, x1) x [y0, y1): each pixel gets the average of samples
      * [firstSample, firstSample + sampleCount) of its {@code samples}-sample stratified pattern; light that
-     * lands on other pixels goes to {@code splats}.
+     * lands on other pixels goes to {@code splats}. With {@code only} (row by row), only the pixels whose entry
+     * is true are traced and written, and a row without any is skipped.
      */
     void renderTile(RenderScene scene, FrameBuffer frame, Splats splats, int samples, int firstSample,
-                    int sampleCount, int frameIndex, int x0, int y0, int x1, int y1) {
+                    int sampleCount, int frameIndex, int x0, int y0, int x1, int y1, boolean[] only) {
         Integrator integrator = integrator(scene.settings.transport());
         integrator.prepare(scene);
         if (integrator == bdpt) {
             bdpt.splatInto(splats);
         }
         rows.prepare(scene.camera, frame.width(), frame.height(), x0, x1, samples, firstSample, sampleCount,
-                frameIndex);
+                frameIndex, only);
         int hitsLeft = scene.settings.recursionMax();
         for (int y = y0; y < y1; y++) {
+            if (!rows.anyTraced(y)) {
+                continue;
+            }
             rows.aim(y);
             if (!rows.oneOrigin()) { // a lens: each ray searched from its own origin
                 rows.trace(integrator, null, y, hitsLeft);

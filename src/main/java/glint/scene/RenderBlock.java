@@ -16,12 +16,14 @@ import java.util.Map;
  * @param height       the still image's height in pixels, or null
  * @param exposure     the view transform's exposure in stops, or null
  * @param tone         the view transform's tone curve ({@code standard} or {@code agx}), or null
+ * @param noise        adaptive sampling's threshold (the config's {@code noise}), or null
+ * @param maxSamples   adaptive sampling's cap (the config's {@code max_samples}), or null
  * @param file         the scene file, for messages
  * @param places       where each written key stands in the file, by its name
  */
 public record RenderBlock(String shading, String integrator, Integer samples, Integer recursionMax, Double minWeight,
-                          Integer width, Integer height, Double exposure, String tone, String file,
-                          Map<String, Place> places) {
+                          Integer width, Integer height, Double exposure, String tone, Double noise,
+                          Integer maxSamples, String file, Map<String, Place> places) {
 
     /** A key's line and column in the scene file (from 1). */
     public record Place(int line, int column) {
@@ -34,6 +36,14 @@ public record RenderBlock(String shading, String integrator, Integer samples, In
         places = Map.copyOf(places);
     }
 
+    /** A block that leaves adaptive sampling as it is. */
+    public RenderBlock(String shading, String integrator, Integer samples, Integer recursionMax, Double minWeight,
+                       Integer width, Integer height, Double exposure, String tone, String file,
+                       Map<String, Place> places) {
+        this(shading, integrator, samples, recursionMax, minWeight, width, height, exposure, tone, null, null, file,
+                places);
+    }
+
     /** A block that leaves the view transform as it is. */
     public RenderBlock(String shading, String integrator, Integer samples, Integer recursionMax, Double minWeight,
                        Integer width, Integer height, String file, Map<String, Place> places) {
@@ -43,7 +53,7 @@ public record RenderBlock(String shading, String integrator, Integer samples, In
     /** Whether the block sets nothing. */
     public boolean isEmpty() {
         return shading == null && integrator == null && samples == null && recursionMax == null && minWeight == null && width == null
-                && height == null && exposure == null && tone == null;
+                && height == null && exposure == null && tone == null && noise == null && maxSamples == null;
     }
 
     /** Where a key stands, or (0, 0) when it is not written. */

@@ -15,7 +15,7 @@ import org.snakeyaml.engine.v2.nodes.Node;
 final class RenderBlockReader {
 
     static final Set<String> KEYS = new LinkedHashSet<>(
-            List.of("shading", "integrator", "samples", "recursion_max", "min_weight", "width", "height", "exposure",
+            List.of("shading", "integrator", "samples", "noise", "max_samples", "recursion_max", "min_weight", "width", "height", "exposure",
                     "tone"));
     static final List<String> SHADINGS = List.of("cook-torrance", "phong");
     static final List<String> INTEGRATORS = LightTransport.KEYS;
@@ -24,6 +24,8 @@ final class RenderBlockReader {
     static final double MAX_EXPOSURE = 16;
     /** The largest samples per pixel and image side, as in config.properties. */
     static final int MAX_SAMPLES = 4096, MAX_SIDE = 65536, MAX_RECURSION = 64;
+    /** The largest max_samples, as in config.properties. */
+    static final int MAX_ADAPTIVE_SAMPLES = 65536;
 
     private final YamlTree yaml;
     private final String file;
@@ -64,6 +66,16 @@ final class RenderBlockReader {
         if (samples != null && !isPerfectSquare(samples)) {
             throw yaml.error(m.get("samples"), "samples must be a perfect square (1, 4, 9, 16, ...), got " + samples);
         }
+        Double noise = null;
+        if (m.containsKey("noise")) {
+            double threshold = yaml.number(m.get("noise"), "noise");
+            if (!(threshold == 0 || (threshold >= 1e-4 && threshold <= 1))) {
+                throw yaml.error(m.get("noise"), "noise must be 0 (off) or a number from 0.0001 to 1, got "
+                        + YamlTree.source(m.get("noise"), threshold));
+            }
+            noise = threshold;
+        }
+        Integer maxSamples = whole(m, "max_samples", 1, MAX_ADAPTIVE_SAMPLES);
         Integer depth = whole(m, "recursion_max", 1, MAX_RECURSION);
         Double minWeight = null;
         if (m.containsKey("min_weight")) {
@@ -96,8 +108,8 @@ final class RenderBlockReader {
         if ((width == null) != (height == null)) {
             throw yaml.error(node, "the still size needs both width and height in render");
         }
-        return new RenderBlock(shading, integrator, samples, depth, minWeight, width, height, exposure, tone, file,
-                places);
+        return new RenderBlock(shading, integrator, samples, depth, minWeight, width, height, exposure, tone, noise,
+                maxSamples, file, places);
     }
 
     private Integer whole(Map<String, Node> m, String key, int min, int max) throws InputException {

@@ -6,6 +6,7 @@ import glint.image.ImageWriter;
 import glint.image.PartFile;
 import glint.image.PartGuard;
 import glint.image.ViewTransform;
+import glint.render.Convergence;
 import glint.render.LightTransport;
 import glint.render.RenderScene;
 import glint.render.Tracer;
@@ -58,6 +59,8 @@ public final class StillRun implements ImageWriter.Watcher, AutoCloseable {
     private volatile double filesWritten = -1;
     private int fileWriting; // the writing thread's: the index of the file being written
     private volatile ViewTransform view = ViewTransform.STANDARD; // the PNG's: the config's that rendered the frame
+    /** An adaptive still's refinement, once rendered (for its report); null for a still of {@code samples} a pixel. */
+    private volatile Convergence refined;
 
     private StillRun(List<Path> images, List<PartFile> parts, PartGuard guard) {
         this.images = images;
@@ -115,7 +118,8 @@ public final class StillRun implements ImageWriter.Watcher, AutoCloseable {
     public FrameBuffer render(RenderScene scene, Config config, Steps steps) throws StillRefused {
         checkSize(config);
         view = config.view();
-        MemoryCheck.check(config, MemoryCheck.STILL_BYTES_PER_PIXEL, Runtime.getRuntime());
+        MemoryCheck.check(config, MemoryCheck.STILL_BYTES_PER_PIXEL
+                + (config.adaptiveStill() ? Convergence.BYTES_PER_PIXEL : 0), Runtime.getRuntime());
         FrameBuffer frame = new FrameBuffer(config.displayWidth(), config.displayHeight());
         Tracer t;
         synchronized (this) {
@@ -124,6 +128,17 @@ public final class StillRun implements ImageWriter.Watcher, AutoCloseable {
             tracer = t;
         }
         try {
+            if (config.adaptiveStill()) {
+                Convergence c = new Convergence(frame.width(), frame.height(), config.noise(), config.maxSamples());
+                int pixels = frame.width() * frame.height();
+                // done: the larger of the passes towards the cap and the pixels that have stopped
+                steps.step("rendering", () -> Math.max(c.passes() / (double) c.cap(),
+                        1 - c.activePixels() / (double) pixels));
+                c.refine(t, scene, frame, config.screenDivider(), () -> { });
+                c.writeAverage(frame);
+                refined = c;
+                return frame;
+            }
             steps.step("rendering", () -> t.tilesDone() / (double) t.frameTiles());
             t.render(scene, frame, config.samples(), 0, config.screenDivider());
             return frame;
@@ -243,12 +258,32 @@ public final class StillRun implements ImageWriter.Watcher, AutoCloseable {
     }
 
     /**
+     * The samples an adaptive still spent, as its report says them: {@code 97.3 spp on average, 64 to 1024}; empty
+     * for a still of {@code samples} a pixel or before the render.
+     */
+    public String samplesSpent() {
+        Convergence c = refined;
+        if (c == null) {
+            return "";
+        }
+        int pixels = c.width() * c.height();
+        return String.format(Locale.ROOT, "%.1f spp on average, %d to %d", c.samplesSpent() / (double) pixels,
+                c.fewestSamples(), c.passes());
+    }
+
+    private static String percent(double fraction) {
+        return new java.math.BigDecimal(Double.toString(100 * fraction)).round(new java.math.MathContext(6))
+                .stripTrailingZeros().toPlainString();
+    }
+
+    /**
      * What a still is rendered with, as its report says it: {@code 800x600, 4 spp, phong, depth 16}, with
      * {@code threads} {@code 800x600, 4 spp, 2 threads, cook-torrance, path, depth 16}.
      */
     public static String describe(Config config, boolean threads) {
-        return String.format(Locale.ROOT, "%dx%d, %d spp, %s%s%s, depth %d", config.displayWidth(),
-                config.displayHeight(), config.samples(), threads ? config.effectiveThreads() + " threads, " : "",
+        return String.format(Locale.ROOT, "%dx%d, %s, %s%s%s, depth %d", config.displayWidth(),
+                config.displayHeight(), config.adaptiveStill() ? "noise " + percent(config.noise()) + " %, at most "
+                        + config.maxSamples() + " spp" : config.samples() + " spp", threads ? config.effectiveThreads() + " threads, " : "",
                 config.shading().key(), config.transport().physical() ? ", " + config.transport().key() : "",
                 config.recursionMax());
     }

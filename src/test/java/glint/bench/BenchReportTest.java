@@ -96,6 +96,35 @@ class BenchReportTest {
         assertEquals(800, glass.getWidth());
         assertEquals(500, glass.getHeight());
         assertFalse(Files.exists(docs.resolve("images/bench-matte.png")), "no matte results, no matte chart");
+        assertFalse(Files.exists(docs.resolve("images/bench-threads.png")), "one thread count: no chart along them");
+    }
+
+    /** One benchmark of the documented minute: a thread count, a sphere count and a material. */
+    private static String frame(int threads, int spheres, String material, double median) {
+        return String.format(java.util.Locale.ROOT, """
+                  {"benchmark": "glint.bench.FrameBenchmark.renderFrame", "mode": "avgt",
+                   "params": {"material": "%s", "renderThreads": "%d", "spheres": "%d"},
+                   "primaryMetric": {"score": %.1f, "scoreError": 9.0,
+                     "scorePercentiles": {"0.0": %.1f, "50.0": %.1f, "100.0": %.1f},
+                     "scoreUnit": "ms/op", "rawData": [[1.0]]}}""", material, threads, spheres, median, median - 2,
+                median, median + 5);
+    }
+
+    @Test
+    void aSliceOfThreadCountsIsChartedAlongTheThreadsNotAlongOneSphereCount(@TempDir Path dir) throws Exception {
+        StringBuilder json = new StringBuilder("[");
+        for (int threads : new int[] {1, 2, 4}) {
+            for (String material : new String[] {"matte", "glass"}) {
+                json.append(json.length() > 1 ? ",\n" : "\n").append(frame(threads, 25, material, 100.0 / threads));
+            }
+        }
+        Path file = Files.writeString(dir.resolve("jmh.json"), json.append("\n]\n"));
+        Path docs = Files.createDirectories(dir.resolve("out"));
+        BenchReport.main(new String[] {file.toString(), docs.toString()});
+        BufferedImage threads = ImageIO.read(docs.resolve("images/bench-threads.png").toFile());
+        assertEquals(800, threads.getWidth());
+        assertFalse(Files.exists(docs.resolve("images/bench-glass.png")), "one sphere count: no chart along them");
+        assertFalse(Files.exists(docs.resolve("images/bench-matte.png")));
     }
 
     @Test

@@ -127,10 +127,41 @@ class ConfigLoaderTest {
     }
 
     @Test
+    void noiseAndMaxSamplesSetAdaptiveSampling() throws InputException {
+        Config d = parse("");
+        assertEquals(0, d.noise());
+        assertEquals(1024, d.maxSamples());
+        assertEquals(glint.render.Convergence.WINDOW_NOISE, d.windowNoise());
+        Config c = parse("noise=0.02\nmax_samples=256\nintegrator=path\n");
+        assertEquals(0.02, c.noise());
+        assertEquals(0.02, c.windowNoise());
+        assertEquals(256, c.maxSamples());
+        assertTrue(c.adaptiveStill());
+        assertFalse(parse("noise=0.02\n").adaptiveStill(), "whitted's stills keep their samples");
+        assertEquals(1e-4, parse("noise=0.0001\n").noise());
+        assertEquals(65536, parse("max_samples=65536\n").maxSamples());
+    }
+
+    @Test
+    void aBadNoiseOrMaxSamplesIsReportedAtItsLine() {
+        assertError("config.properties:2:1: noise: expected 0 (off) or a number from 0.0001 to 1, got '0.00001'",
+                "debug=false\nnoise=0.00001\n");
+        assertError("config.properties:1:1: noise: expected 0 (off) or a number from 0.0001 to 1, got '2'", "noise=2\n");
+        assertError("config.properties:1:1: noise: expected 0 (off) or a number from 0.0001 to 1, got '-0.01'",
+                "noise=-0.01\n");
+        assertError("config.properties:1:1: noise: expected 0 (off) or a number from 0.0001 to 1, got '1%'",
+                "noise=1%\n");
+        assertError("config.properties:1:1: max_samples: expected a whole number from 1 to 65536, got '0'",
+                "max_samples=0\n");
+        assertError("config.properties:1:1: max_samples: expected a whole number from 1 to 65536, got '65537'",
+                "max_samples=65537\n");
+    }
+
+    @Test
     void everyKeyOfKeysIsTestedAbove() {
         assertEquals(List.of("debug", "epsilon", "display_scale", "screen_divider", "display_height",
                 "recursion_max", "display_width", "name", "scene", "threads", "shading", "integrator", "samples",
-                "min_weight", "move_speed", "turn_speed", "target_fps", "free_flight", "exposure", "tone", "max_image_pixels",
+                "noise", "max_samples", "min_weight", "move_speed", "turn_speed", "target_fps", "free_flight", "exposure", "tone", "max_image_pixels",
                 "max_scene_bytes", "max_objects", "max_lights", "max_recursion"), List.copyOf(ConfigLoader.KEYS));
     }
 
@@ -193,7 +224,7 @@ class ConfigLoaderTest {
     void unknownKeyFarFromAnyListsTheKeys() {
         assertError("config.properties:1:1: unknown key 'colour' (expected one of: debug, epsilon, display_scale, "
                 + "screen_divider, display_height, recursion_max, display_width, name, scene, threads, shading, "
-                + "integrator, samples, min_weight, move_speed, turn_speed, target_fps, free_flight, exposure, tone, "
+                + "integrator, samples, noise, max_samples, min_weight, move_speed, turn_speed, target_fps, free_flight, exposure, tone, "
                 + "max_image_pixels, max_scene_bytes, max_objects, "
                 + "max_lights, max_recursion)", "colour=red\n");
     }
@@ -457,7 +488,7 @@ class ConfigLoaderTest {
         // a key holding a line break and a terminal escape: one line, nothing the terminal acts on
         assertError("config.properties:1:1: unknown key 'a\\nb\\u001b[2J' (expected one of: debug, epsilon, "
                 + "display_scale, screen_divider, display_height, recursion_max, display_width, name, scene, threads, "
-                + "shading, integrator, samples, min_weight, move_speed, turn_speed, target_fps, free_flight, exposure, tone, "
+                + "shading, integrator, samples, noise, max_samples, min_weight, move_speed, turn_speed, target_fps, free_flight, exposure, tone, "
                 + "max_image_pixels, "
                 + "max_scene_bytes, max_objects, max_lights, max_recursion)", "a\\nb\u001b[2J=1\n");
     }

@@ -26,6 +26,8 @@ class SceneRenderBlockTest {
                 render:
                   shading: phong
                   samples: 16
+                  noise: 0.02
+                  max_samples: 512
                   recursion_max: 8
                   min_weight: 0.001
                   width: 640
@@ -33,6 +35,8 @@ class SceneRenderBlockTest {
                 """).render();
         assertEquals("phong", r.shading());
         assertEquals(16, r.samples());
+        assertEquals(0.02, r.noise());
+        assertEquals(512, r.maxSamples());
         assertEquals(8, r.recursionMax());
         assertEquals(0.001, r.minWeight());
         assertEquals(640, r.width());
@@ -68,6 +72,12 @@ class SceneRenderBlockTest {
                 error("render: {samples: 0}\n"));
         assertEquals("scenes/r.yaml:1:25: recursion_max must be a whole number from 1 to 64, got 2.5",
                 error("render: {recursion_max: 2.5}\n"));
+        assertEquals("scenes/r.yaml:1:17: noise must be 0 (off) or a number from 0.0001 to 1, got 5",
+                error("render: {noise: 5}\n"));
+        assertEquals("scenes/r.yaml:1:17: noise must be 0 (off) or a number from 0.0001 to 1, got 1e-5",
+                error("render: {noise: 1e-5}\n"));
+        assertEquals("scenes/r.yaml:1:23: max_samples must be a whole number from 1 to 65536, got 0",
+                error("render: {max_samples: 0}\n"));
         assertEquals("scenes/r.yaml:1:22: min_weight must lie in [0, 1], got 2",
                 error("render: {min_weight: 2}\n"));
         assertEquals("scenes/r.yaml:1:17: expected a number for width, got the quoted string '640'",

@@ -73,14 +73,23 @@ public final class StillRender implements AutoCloseable {
         String recipe = "still: the same image headless, with this camera in "
                 + InputException.printable(scenePath.toString()) + ":\n"
                 + String.format(Locale.ROOT, "  %s%s --scene %s --width %d --height %d --spp %d"
-                        + " --shading %s --integrator %s --depth %d --exposure %s --tone %s --output %s%n",
+                        + " --shading %s --integrator %s --depth %d --exposure %s --tone %s%s --output %s%n",
                         JarCommand.java(), config, JarCommand.word(scenePath.toString()), still.displayWidth(),
                         still.displayHeight(), still.samples(), still.shading().key(), still.transport().key(),
                         still.recursionMax(), ViewTransform.stops(still.view().exposure()), still.view().tone().key(),
-                        JarCommand.word(png.getFileName().toString()))
+                        adaptive(still), JarCommand.word(png.getFileName().toString()))
                 + CameraBlock.yaml(printed);
         Path pfmFile = pfm ? png.resolveSibling(png.getFileName().toString().replaceFirst("\\.png$", ".pfm")) : null;
         return new Job(scene, still, png, pfmFile, StillRun.describe(still, false), recipe);
+    }
+
+    /**
+     * The headless command's adaptive sampling, where the still is rendered by it (a window started with
+     * {@code --noise}, say): {@code  --noise 0.02 --max-samples 1024}; empty for a still of {@code --spp} a pixel.
+     */
+    private static String adaptive(Config still) {
+        return still.adaptiveStill() ? " --noise " + new java.math.BigDecimal(Double.toString(still.noise()))
+                .stripTrailingZeros().toPlainString() + " --max-samples " + still.maxSamples() : "";
     }
 
     /** The most bytes (UTF-8) of a scene's name a still's name begins with; a file's name may have 255. */

@@ -359,7 +359,8 @@ public final class Engine implements Runnable, SceneWatcher.Listener {
         }
         int samples = Refinement.passes(view.settings().still());
         boolean moving = moved || in.motionHeld() || start - lastMotion < MOTION_HOLD_NANOS;
-        boolean frameDue = moving ? view.needFrame() : view.passesDone() < samples;
+        boolean refining = view.passesDone() == 0 || view.passesDone() < samples && !maker.refinementDone();
+        boolean frameDue = moving ? view.needFrame() : refining;
         if (frameDue && start < maker.retryAt()) { // the last try failed: the next one comes when the pause is over
             frames.presentIfChanged();
             return maker.retryAt() - start;
@@ -367,7 +368,7 @@ public final class Engine implements Runnable, SceneWatcher.Listener {
         if (moving && view.needFrame()) {
             return maker.moving(start) ? 0 : maker.retryAt() - clock.nanoTime();
         }
-        if (!moving && view.passesDone() < samples) {
+        if (!moving && refining) {
             return maker.pass(start) ? 0 : maker.retryAt() - clock.nanoTime();
         }
         if (moving) { // nothing new to draw yet: wait for input, or for the end of the motion hold

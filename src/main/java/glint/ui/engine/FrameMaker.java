@@ -70,11 +70,12 @@ final class FrameMaker implements AutoCloseable {
         Config config = view.settings().still();
         int samples = Refinement.passes(config), pattern = Refinement.pattern(config);
         int done = view.passesDone();
-        int count = Refinement.inOneCall(pacing.passes(done, samples, start), done, pattern); // quick: several at once
+        int count = renderer.inOneCall(Refinement.inOneCall(pacing.passes(done, samples, start), done, pattern), done);
         BufferedImage image;
         renderer.viewTransform(view.settings().view());
         try {
-            image = renderer.renderPasses(view.compiled(), s.width(), s.height(), pattern, done, count);
+            image = renderer.renderPasses(view.compiled(), s.width(), s.height(), pattern, done, count,
+                    Refinement.threshold(config), samples);
         } catch (RuntimeException | OutOfMemoryError e) {
             failed(e);
             frames.presentStatus();
@@ -117,6 +118,14 @@ final class FrameMaker implements AutoCloseable {
     /** When the next try is due after a failure (in the past once it is due). */
     long retryAt() {
         return faults.retryAt();
+    }
+
+    /**
+     * Whether the still refinement on screen has nothing left to trace (every pixel converged, or the cap
+     * reached), so the engine waits, tracing nothing.
+     */
+    boolean refinementDone() {
+        return renderer.refinementDone();
     }
 
     /** Traces about {@code nanos} of still passes in one go while passes are quicker ({@link RefinePacing}). */

@@ -116,7 +116,7 @@ final class FrameOutput {
                 seen.transport(), noise, seen.depth(),
                 view.controller().speed(), source.scenePath().toString(), status.message(), status.error(),
                 size.sizeLimit(), faults.overlayLine(), view.camera().aperture() > 0 ? view.controller().lensNote() : "",
-                seen.view().describe());
+                seen.view().describe(), !moving && seen.transport().physical() && renderer.converged());
     }
 
     private void publish() {

@@ -2,43 +2,43 @@ package glint.ui.frames;
 
 import glint.image.FrameBuffer;
 import glint.image.ViewTransform;
+import glint.render.Convergence;
 
 /**
- * Progressive refinement while the camera is still: adds the sample passes of one view and keeps their
- * plain average, which after all passes is the still image (docs/conventions.md, "Pixels and
- * samples"). Adding a pass and encoding the average to 8-bit sRGB are one loop over a range of pixels,
- * so that the window can split a pass among threads ({@link FrameRenderer}).
+ * Progressive refinement while the camera is still: adds the sample passes of one view and keeps each pixel's
+ * average of its own passes ({@link Convergence}), which after all passes is the still image (docs/conventions.md,
+ * "Pixels and samples"). With a noise threshold, pixels that have converged stop receiving passes. Adding a
+ * pass and encoding the average to 8-bit sRGB are one loop over a range of pixels, so that the window can split
+ * a pass among threads ({@link FrameRenderer}).
  */
 final class Accumulator {
 
-    private int width;
-    private int height;
-    private double[] sum;
-    /** Per pixel: the sum over calls of count x the square of the call's mean luminance, for the noise estimate. */
-    private double[] lumaSquares;
-    private int passes;
-    private int calls;
+    private Convergence pixels;
     private int weight = 1; // passes in the frame being added
 
-    /** Starts over for a width x height view. */
+    /** Starts over for a width x height view, every pixel refined until the cap. */
     void reset(int newWidth, int newHeight) {
-        if (sum == null || newWidth != width || newHeight != height) {
-            sum = null; // the old one can go before the new one is taken
-            sum = new double[3 * newWidth * newHeight];
-            lumaSquares = new double[newWidth * newHeight];
-            width = newWidth;
-            height = newHeight;
-        } else {
-            java.util.Arrays.fill(sum, 0);
-            java.util.Arrays.fill(lumaSquares, 0);
-        }
-        passes = 0;
-        calls = 0;
+        reset(newWidth, newHeight, 0, Integer.MAX_VALUE);
     }
 
-    /** Passes added since the last reset. */
+    /** Starts over for a width x height view whose pixels stop below {@code threshold} (0: none) or at {@code cap}. */
+    void reset(int newWidth, int newHeight, double threshold, int cap) {
+        if (pixels == null || newWidth != pixels.width() || newHeight != pixels.height()) {
+            pixels = null; // the old one can go before the new one is taken
+            pixels = new Convergence(newWidth, newHeight, threshold, cap);
+        } else {
+            pixels.reset(threshold, cap);
+        }
+    }
+
+    /** Passes added since the last reset: the most a pixel has. */
     int passes() {
-        return passes;
+        return pixels.passes();
+    }
+
+    /** The refinement: which pixels the next pass traces, how many passes a call may trace, whether it is done. */
+    Convergence convergence() {
+        return pixels;
     }
 
     /** Counts one more pass; its pixels are then added by {@link #addAndEncode}, range by range. */
@@ -48,9 +48,12 @@ final class Accumulator {
 
     /** Counts {@code count} more passes, traced in one go: their average is added with weight {@code count}. */
     void beginPasses(int count) {
-        passes += count;
-        calls++;
         weight = count;
+    }
+
+    /** The passes begun are added for every pixel: at a round's end the pixels that converged stop. */
+    void passesAdded() {
+        pixels.passesAdded(weight);
     }
 
     /**
@@ -64,41 +67,20 @@ final class Accumulator {
 
     /** {@link #addAndEncode(FrameBuffer, int[], int, int)} with the average encoded through a view transform. */
     void addAndEncode(FrameBuffer pass, int[] rgb, int from, int to, ViewTransform view) {
-        double[] scratch = new double[3];
-        float[] in = pass.rgb();
-        double[] s = sum;
-        double inverse = 1.0 / passes;
-        double w = weight;
-        double[] squares = lumaSquares;
-        int width = pass.width();
-        int x = from % width, y = from / width;
-        for (int p = from, i = 3 * from; p < to; p++, i += 3) {
-            double luma = luma(in[i], in[i + 1], in[i + 2]);
-            squares[p] += w * luma * luma;
-            double r = s[i] + w * in[i];
-            double g = s[i + 1] + w * in[i + 1];
-            double b = s[i + 2] + w * in[i + 2];
-            s[i] = r;
-            s[i + 1] = g;
-            s[i + 2] = b;
-            rgb[p] = SrgbEncoder.pixel((float) (r * inverse), (float) (g * inverse), (float) (b * inverse), x, y, view,
-                    scratch);
-            if (++x == width) {
-                x = 0;
-                y++;
-            }
-        }
+        pixels.add(pass, weight, from, to);
+        encode(rgb, from, to, view);
     }
 
     /** Encodes pixels {@code from} to {@code to} of the average so far again, through a view transform. */
     void encode(int[] rgb, int from, int to, ViewTransform view) {
-        double[] s = sum;
-        double inverse = 1.0 / passes;
+        double[] average = new double[3];
         double[] scratch = new double[3];
+        int width = pixels.width();
         int x = from % width, y = from / width;
-        for (int p = from, i = 3 * from; p < to; p++, i += 3) {
-            rgb[p] = SrgbEncoder.pixel((float) (s[i] * inverse), (float) (s[i + 1] * inverse),
-                    (float) (s[i + 2] * inverse), x, y, view, scratch);
+        for (int p = from; p < to; p++) {
+            pixels.average(p, average, 0);
+            rgb[p] = SrgbEncoder.pixel((float) average[0], (float) average[1], (float) average[2], x, y, view,
+                    scratch);
             if (++x == width) {
                 x = 0;
                 y++;
@@ -108,35 +90,15 @@ final class Accumulator {
 
     /** The average's size. */
     int width() {
-        return width;
+        return pixels.width();
     }
 
     int height() {
-        return height;
+        return pixels.height();
     }
 
-    /**
-     * The noise left in the average, relative to its brightness: the standard error of each pixel's
-     * mean luminance, summed over the pixels, over their summed mean luminance; NaN before two calls.
-     * A call of c passes is one draw whose variance is the samples' over c, so the spread of the calls'
-     * means, each weighted by its c, estimates the samples' variance.
-     */
+    /** The noise left in the average, relative to its brightness ({@link Convergence#relativeNoise}). */
     double relativeNoise() {
-        if (calls < 2) {
-            return Double.NaN;
-        }
-        double errors = 0, means = 0, n = passes;
-        for (int p = 0, i = 0; p < lumaSquares.length; p++, i += 3) {
-            double mean = luma(sum[i], sum[i + 1], sum[i + 2]) / n;
-            double variance = Math.max(0, (lumaSquares[p] - n * mean * mean) / (calls - 1));
-            errors += Math.sqrt(variance / n);
-            means += mean;
-        }
-        return means > 0 ? errors / means : Double.NaN;
-    }
-
-    /** Rec. 709 luminance of linear RGB. */
-    private static double luma(double r, double g, double b) {
-        return 0.2126 * r + 0.7152 * g + 0.0722 * b;
+        return pixels.relativeNoise();
     }
 }

@@ -113,6 +113,7 @@ public final class FrameRenderer implements AutoCloseable {
     public BufferedImage renderMoving(RenderScene scene, int width, int height) {
         FrameBuffer frame = buffer(width, height);
         anyFrame = false;
+        tracer.traceOnly(null);
         call.trace(tracer, scene, frame, 1, TraceCall.WHOLE_FRAME, 1, divider);
         BufferedImage image = SrgbEncoder.newImage(width, height);
         int[] pixels = SrgbEncoder.pixels(image);
@@ -133,20 +134,58 @@ public final class FrameRenderer implements AutoCloseable {
 
     /** Passes {@code pass} .. {@code pass + count - 1} traced in one go, averaged with those before them. */
     public BufferedImage renderPasses(RenderScene scene, int width, int height, int samples, int pass, int count) {
+        return renderPasses(scene, width, height, samples, pass, count, 0, Integer.MAX_VALUE);
+    }
+
+    /**
+     * {@link #renderPasses(RenderScene, int, int, int, int, int)} with adaptive sampling: a pixel whose noise is
+     * below {@code threshold} (0: none) stops receiving passes ({@link glint.render.Convergence}); every pixel
+     * stops at {@code cap} passes. The threshold and cap are taken at pass 0.
+     */
+    public BufferedImage renderPasses(RenderScene scene, int width, int height, int samples, int pass, int count,
+                                      double threshold, int cap) {
+        anyFrame = false; // before the reset: memory running out there leaves no refinement to read
         if (pass == 0) {
-            accumulator.reset(width, height);
+            accumulator.reset(width, height, threshold, cap);
         }
         FrameBuffer frame = buffer(width, height);
-        anyFrame = false;
-        call.trace(tracer, scene, frame, samples, pass, count, divider);
+        tracer.traceOnly(accumulator.convergence().active());
+        try {
+            call.trace(tracer, scene, frame, samples, pass, count, divider);
+        } finally {
+            tracer.traceOnly(null);
+        }
         BufferedImage image = SrgbEncoder.newImage(width, height);
         int[] pixels = SrgbEncoder.pixels(image);
         accumulator.beginPasses(count);
         ViewTransform v = view;
         ranges.run(width * height, (from, to) -> accumulator.addAndEncode(frame, pixels, from, to, v));
+        accumulator.passesAdded();
         lastMoving = false;
         anyFrame = true;
         return image;
+    }
+
+    /**
+     * How many of {@code wanted} passes the next call of the refinement may trace: never past its cap, nor past
+     * the end of a round where pixels may converge (all of them before the first pass).
+     */
+    public int inOneCall(int wanted, int done) {
+        return done == 0 ? wanted : accumulator.convergence().inOneCall(wanted);
+    }
+
+    /**
+     * Whether the refinement on screen has nothing left to trace: every pixel converged, or the cap reached.
+     * False before a still pass.
+     */
+    public boolean refinementDone() {
+        return !lastMoving && anyFrame && accumulator.convergence().done();
+    }
+
+    /** Whether the refinement on screen stopped because every pixel converged, before the cap. */
+    public boolean converged() {
+        return refinementDone() && accumulator.convergence().activePixels() == 0
+                && accumulator.passes() < accumulator.convergence().cap();
     }
 
     /** The noise left in the still passes on screen, relative to their brightness ({@link Accumulator#relativeNoise}). */

@@ -6,26 +6,27 @@ import glint.render.LightTransport;
 /**
  * How far the window refines a view at rest, and in which pattern of samples. Whitted's refinement
  * is the still: the passes are the samples of the still's stratified pattern, and after the last the
- * image is the still. The path integrator's goes on for as long as the user watches (up to
- * {@link #PATH_PASSES}), in patterns of {@link #PATH_PATTERN} stratified samples one after another
- * (pass p is sample p mod the pattern of frame p / the pattern).
+ * image is the still. The path and bdpt integrators' refine each pixel until its noise is below the
+ * config's threshold ({@link Config#windowNoise}) or it has {@code max_samples} ({@link glint.render.Convergence}),
+ * in patterns of {@link #PATH_PATTERN} stratified samples one after another (pass p is sample p mod the
+ * pattern of frame p / the pattern).
  */
 public final class Refinement {
 
-    /** The most passes the window accumulates with the path integrator: 65536 samples a pixel, noise well under 1 %. */
-    static final int PATH_PASSES = 1 << 16;
-    /**
-     * The path's passes come in stratified patterns of this many samples (8 x 8): any prefix of one is
-     * unbiased, and a finished one is as good as a still of 64 samples. Chosen, not measured.
-     */
-    public static final int PATH_PATTERN = 64;
+    /** The path's passes come in stratified patterns of this many samples ({@link glint.render.Convergence#PATTERN}). */
+    public static final int PATH_PATTERN = glint.render.Convergence.PATTERN;
 
     private Refinement() {
     }
 
     /** How many passes the view at rest accumulates. */
     public static int passes(Config onScreen) {
-        return onScreen.transport().physical() ? PATH_PASSES : onScreen.samples();
+        return onScreen.transport().physical() ? onScreen.maxSamples() : onScreen.samples();
+    }
+
+    /** The noise a pixel stops at: the config's for the path and bdpt, none (0) for Whitted's still. */
+    public static double threshold(Config onScreen) {
+        return onScreen.transport().physical() ? onScreen.windowNoise() : 0;
     }
 
     /** How many samples one pattern holds, of which a pass is one. */

@@ -29,12 +29,25 @@ import glint.render.Shading;
  * @param renderError   why the last frame could not be rendered (the engine tries again), or empty
  * @param lens          the camera's lens, {@code aperture 0.1  focus 5.3}, or empty for a pinhole
  * @param view          the view transform, {@code exposure +1  tone neutral}, or empty when not shown
+ * @param converged     whether every pixel of a path or bdpt frame at rest has converged (adaptive sampling), so
+ *                      nothing more is traced
  */
 public record FrameStats(double fps, double msPerFrame, int renderWidth, int renderHeight, int viewWidth,
                          int viewHeight, int samplesDone, int samplesTotal, boolean moving, int threads,
                          Shading shading, LightTransport transport, double noise, int depth, double speed,
                          String scene, String message, String error, String sizeLimit, String renderError,
-                         String lens, String view) {
+                         String lens, String view, boolean converged) {
+
+    /** Figures of a frame whose refinement has not converged. */
+    public FrameStats(double fps, double msPerFrame, int renderWidth, int renderHeight, int viewWidth,
+                      int viewHeight, int samplesDone, int samplesTotal, boolean moving, int threads,
+                      Shading shading, LightTransport transport, double noise, int depth, double speed,
+                      String scene, String message, String error, String sizeLimit, String renderError,
+                      String lens, String view) {
+        this(fps, msPerFrame, renderWidth, renderHeight, viewWidth, viewHeight, samplesDone, samplesTotal, moving,
+                threads, shading, transport, noise, depth, speed, scene, message, error, sizeLimit, renderError, lens,
+                view, false);
+    }
 
     /** Figures without the view transform's line. */
     public FrameStats(double fps, double msPerFrame, int renderWidth, int renderHeight, int viewWidth,
@@ -57,8 +70,8 @@ public record FrameStats(double fps, double msPerFrame, int renderWidth, int ren
                 renderError, "");
     }
 
-    /** Whether the image is final: still and every sample accumulated. */
+    /** Whether the image is final: still, and every sample accumulated or every pixel converged. */
     public boolean refined() {
-        return !moving && samplesDone >= samplesTotal;
+        return !moving && (samplesDone >= samplesTotal || converged);
     }
 }

@@ -22,7 +22,7 @@ public final class OverlayText {
         List<Line> lines = new ArrayList<>();
         if (Double.isNaN(s.fps())) {
             // no rate yet (the first frames after a pause) is not idle: the refinement goes on
-            lines.add(normal(String.format(Locale.ROOT, "%s   last frame %.1f ms", s.refined() ? "idle: image complete"
+            lines.add(normal(String.format(Locale.ROOT, "%s   last frame %.1f ms", s.refined() ? s.converged() ? "idle: converged" : "idle: image complete"
                     : s.renderError().isEmpty() ? "refining" : "waiting to try again", s.msPerFrame())));
         } else {
             lines.add(normal(String.format(Locale.ROOT, "%.1f fps   %.1f ms/frame", s.fps(), s.msPerFrame())));
@@ -35,8 +35,9 @@ public final class OverlayText {
             lines.add(new Line("window too large: rendered at most " + s.sizeLimit(), Tone.NOTE));
         }
         if (s.transport().physical()) {
-            lines.add(normal(String.format(Locale.ROOT, "samples %d%s   threads %d", s.samplesDone(),
+            lines.add(normal(String.format(Locale.ROOT, "samples %d%s%s   threads %d", s.samplesDone(),
                     Double.isNaN(s.noise()) ? "" : String.format(Locale.ROOT, "   noise %.1f %%", 100 * s.noise()),
+                    s.converged() ? "   converged" : s.refined() ? "   at most " + s.samplesTotal() : "",
                     s.threads())));
         } else {
             lines.add(normal(String.format(Locale.ROOT, "samples %d/%d   threads %d", s.samplesDone(),

@@ -15,10 +15,11 @@ import java.util.Locale;
 record FrameBudget(long pixels, String why) {
 
     /**
-     * Heap bytes per rendered pixel: the float frame buffer (12), the accumulated sum and mean (24 + 12),
-     * the image on screen, the one being made and a screenshot's (3 x 4).
+     * Heap bytes per rendered pixel: the float frame buffer (12), the refinement's sums, counts and noise
+     * statistics ({@link glint.render.Convergence#BYTES_PER_PIXEL}, 54), the image on screen, the one being made
+     * and a screenshot's (3 x 4): 78, rounded up.
      */
-    static final long BYTES_PER_PIXEL = 60;
+    static final long BYTES_PER_PIXEL = 80;
 
     /** The budget under these limits with this much heap at most ({@link Runtime#maxMemory}). */
     static FrameBudget of(Limits limits, long maxHeapBytes) {

@@ -136,7 +136,7 @@ class PathRefinementTest {
     void atRestThePathRefinesPastTheStillsSamplesAndItsFirstPatternIsTheStill() {
         press(Action.TOGGLE_INTEGRATOR);
         assertTrue(maker.moving(clock.nanoTime()));
-        double noiseAtEight = Double.NaN;
+        double noiseAtSixteen = Double.NaN; // two rounds of 8: the first estimate
         while (view.passesDone() < Refinement.PATH_PATTERN) {
             clock.advance(0.01);
             int before = view.passesDone();
@@ -144,14 +144,14 @@ class PathRefinementTest {
             assertTrue(view.passesDone() <= Refinement.PATH_PATTERN, "a call never crosses a pattern's end");
             FrameStats stats = presenter.last().stats();
             assertFalse(stats.refined(), "no end at " + stats.samplesDone());
-            if (before < 8 && view.passesDone() >= 8) {
-                noiseAtEight = stats.noise();
+            if (before < 16 && view.passesDone() >= 16) {
+                noiseAtSixteen = stats.noise();
             }
         }
         FrameStats sixtyFour = presenter.last().stats();
         assertEquals(64, sixtyFour.samplesDone());
-        assertTrue(sixtyFour.noise() > 0 && sixtyFour.noise() < 0.7 * noiseAtEight,
-                "the noise falls as samples come: " + noiseAtEight + " at 8, " + sixtyFour.noise() + " at 64");
+        assertTrue(sixtyFour.noise() > 0 && sixtyFour.noise() < 0.7 * noiseAtSixteen,
+                "the noise falls as samples come: " + noiseAtSixteen + " at 16, " + sixtyFour.noise() + " at 64");
         assertSameAsTheStill(presenter.last().image(), 64);
         while (view.passesDone() < 70) { // past the still's 4 samples and the first pattern
             clock.advance(0.01);

@@ -69,7 +69,7 @@ class StatusAndSizeTest {
         long gigabyte = 1L << 30;
         assertEquals(Limits.DEFAULT.maxImagePixels(), FrameBudget.of(Limits.DEFAULT, 64 * gigabyte).pixels());
         assertEquals(gigabyte / 2 / FrameBudget.BYTES_PER_PIXEL, FrameBudget.of(Limits.DEFAULT, gigabyte).pixels());
-        assertEquals("8,947,848 pixels (half the Java heap, -Xmx)", FrameBudget.of(Limits.DEFAULT, gigabyte).why());
+        assertEquals("6,710,886 pixels (half the Java heap, -Xmx)", FrameBudget.of(Limits.DEFAULT, gigabyte).why());
         assertEquals("33,177,600 pixels (max_image_pixels)", FrameBudget.of(Limits.DEFAULT, 64 * gigabyte).why());
     }
 }
