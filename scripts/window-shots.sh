@@ -20,7 +20,8 @@ fi
 out=target/window-shots
 rm -rf "$out"
 mkdir -p "$out" docs/images
-printf 'name=Glint\ndisplay_width=800\ndisplay_height=600\nsamples=16\ndebug=true\n' > "$out/shots.properties"
+# the shipped config, as a user's window opens, with debug on (the script reads when a view is refined)
+sed 's/^debug=.*/debug=true/' config.properties > "$out/shots.properties"
 
 # waits until the command "$@" succeeds, every 0.5 s, for at most 120 s
 until_true() {
