@@ -29,8 +29,8 @@ import org.knowm.xchart.XYChart;
  * own image at 4096 samples (no firefly plateau);
  * <li>sky-and-sun, whose reference lacks the caustic of its glass ball under the sun: by how much.
  * </ol>
- * Usage: {@code java -cp target/benchmarks.jar glint.study.BdptStudy [--docs]}; --docs writes the chart to
- * docs/images. Depth 64, 2 render threads, cook-torrance; render CPU is the render threads' CPU time.
+ * Usage: {@code java -cp target/benchmarks.jar glint.study.BdptStudy [--docs | --caustic]}; --docs writes the
+ * chart to docs/images, --caustic runs the second part alone. Depth 64, 2 render threads, cook-torrance; render CPU is the render threads' CPU time.
  */
 public final class BdptStudy {
 
@@ -48,6 +48,10 @@ public final class BdptStudy {
 
     public static void main(String[] args) throws Exception {
         boolean docs = List.of(args).contains("--docs");
+        if (List.of(args).contains("--caustic")) { // that check alone
+            System.out.print(causticUnderTheBall(PfmReader.read(REFERENCES.resolve("caustic-lamp.pfm"))));
+            return;
+        }
         Locale.setDefault(Locale.ROOT);
         List<XYChart> charts = new ArrayList<>();
         StringBuilder out = new StringBuilder();
@@ -116,7 +120,8 @@ public final class BdptStudy {
         Scene scene = load(REFERENCES.resolve("caustic-lamp.yaml"));
         FrameBuffer bdpt = render(scene, LightTransport.BDPT, 200, 150, 1024).frame;
         FrameBuffer path = render(scene, LightTransport.PATH, 200, 150, 1024).frame;
-        // the caustic: pixels below the ball's centre whose reference is above 4x the floor's median there
+        // the caustic: pixels under the ball (rows 80 on, columns 50 to 149) whose reference is above 4x the
+        // median of the floor (rows 110 on)
         List<Integer> spot = new ArrayList<>();
         double[] floor = new double[reference.width() * (reference.height() - 110)];
         int n = 0;
@@ -127,8 +132,8 @@ public final class BdptStudy {
         }
         java.util.Arrays.sort(floor);
         double median = floor[floor.length / 2];
-        for (int y = 110; y < reference.height(); y++) {
-            for (int x = 60; x < 140; x++) {
+        for (int y = 80; y < reference.height(); y++) {
+            for (int x = 50; x < 150; x++) {
                 if (luminance(reference, x, y) > 4 * median) {
                     spot.add(y * reference.width() + x);
                 }
