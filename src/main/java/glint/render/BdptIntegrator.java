@@ -329,7 +329,7 @@ final class BdptIntegrator extends Integrator {
         if (pt.kind == BdptVertex.LIGHT) {
             materials.bsdf(pt.surface.material).emitted(materials, pt.surface, f);
         } else if (pt.kind == BdptVertex.FAR) {
-            escaped(pt.farX, pt.farY, pt.farZ, f);
+            escaped(pt.farX, pt.farY, pt.farZ, f2, f); // the sky and every sun's disc
         } else {
             return false;
         }
@@ -339,19 +339,6 @@ final class BdptIntegrator extends Integrator {
         double w = weights.weight(0, t, camera, light, sampledLight, sampledCamera);
         radiance.set(pt.betaR * f.r * w, pt.betaG * f.g * w, pt.betaB * f.b * w);
         return true;
-    }
-
-    /** The radiance along d from every light at infinity, the sky among them, into {@code out}. */
-    private void escaped(double dx, double dy, double dz, Rgb out) {
-        Lights all = scene.lightsAndSky;
-        double r = 0, g = 0, b = 0;
-        for (int k = 0, n = all.countAtInfinity(); k < n; k++) {
-            all.arriving(all.atInfinity(k), dx, dy, dz, f2);
-            r += f2.r;
-            g += f2.g;
-            b += f2.b;
-        }
-        out.set(r, g, b);
     }
 
     /**

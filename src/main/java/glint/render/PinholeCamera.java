@@ -107,12 +107,22 @@ public final class PinholeCamera implements CameraModel {
     @Override
     public double directionPdf(double ox, double oy, double oz, double dx, double dy, double dz, int width,
                                int height) {
+        return throughLens(dx, dy, dz, 0, 0, 1, width, height);
+    }
+
+    /**
+     * 1 / (A cos^3 theta) for a ray along unit d from a lens point (lx, ly) off the eye along right and up,
+     * through a lens focused at {@code focus}, where its film point (the pinhole's, shifted by l / focus)
+     * lies on the image; 0 elsewhere.
+     */
+    double throughLens(double dx, double dy, double dz, double lx, double ly, double focus, int width,
+                       int height) {
         double cos = dx * forwardX + dy * forwardY + dz * forwardZ;
         if (!(cos > 0)) {
             return 0;
         }
-        return importance((dx * rightX + dy * rightY + dz * rightZ) / cos, (dx * upX + dy * upY + dz * upZ) / cos,
-                cos, width, height);
+        return importance((dx * rightX + dy * rightY + dz * rightZ) / cos + lx / focus,
+                (dx * upX + dy * upY + dz * upZ) / cos + ly / focus, cos, width, height);
     }
 
     @Override

@@ -88,15 +88,9 @@ public final class ThinLensCamera implements CameraModel {
     @Override
     public double directionPdf(double ox, double oy, double oz, double dx, double dy, double dz, int width,
                                int height) {
-        double cos = dx * forwardX + dy * forwardY + dz * forwardZ;
-        if (!(cos > 0)) {
-            return 0;
-        }
         double offX = ox - eyeX, offY = oy - eyeY, offZ = oz - eyeZ;
         double lx = offX * rightX + offY * rightY + offZ * rightZ, ly = offX * upX + offY * upY + offZ * upZ;
-        double sx = (dx * rightX + dy * rightY + dz * rightZ) / cos + lx / focus;
-        double sy = (dx * upX + dy * upY + dz * upZ) / cos + ly / focus;
-        return centre.importance(sx, sy, cos, width, height);
+        return centre.throughLens(dx, dy, dz, lx, ly, focus, width, height);
     }
 
     @Override
