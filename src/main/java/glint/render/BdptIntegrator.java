@@ -1,6 +1,5 @@
 package glint.render;
 
-import glint.accel.Aggregate;
 import glint.geometry.Hit;
 import glint.shading.Bsdf;
 import glint.shading.BsdfSample;
@@ -368,34 +367,20 @@ final class BdptIntegrator extends Integrator {
         Lights all = scene.lightsAndSky;
         random.pair(LIGHT_SAMPLE + (t - 1) * all.count() + k);
         Surface s = pt.surface;
-        boolean near = true;
         LightSample ls = lightSample;
-        if (!all.sample(k, s.nearX(), s.nearY(), s.nearZ(), random.u1, random.u2, ls)) {
+        double visible = lightReaching(all, k < lights.count() ? shadowAggregateOf(k) : aggregate, s, k, random.u1,
+                random.u2, weights.transmits(s.material), ls);
+        if (visible == 0) {
             return false;
-        }
-        double cosine = ls.dirX * s.nx + ls.dirY * s.ny + ls.dirZ * s.nz;
-        if (!(cosine > 0)) {
-            if (!(cosine < 0) || !weights.transmits(s.material) || !all.isDelta(k)
-                    && !all.sample(k, s.farX(), s.farY(), s.farZ(), random.u1, random.u2, ls)) {
-                return false;
-            }
-            near = false;
-            cosine = ls.dirX * s.nx + ls.dirY * s.ny + ls.dirZ * s.nz;
-            if (!(cosine < 0)) {
-                return false;
-            }
         }
         weights.evaluate(pt, pt.woX, pt.woY, pt.woZ, ls.dirX, ls.dirY, ls.dirZ, f);
         if (f.r == 0 && f.g == 0 && f.b == 0) {
             return false;
         }
-        double visible = shadowRay(k, s, near, ls);
-        if (visible == 0) {
-            return false;
-        }
+        boolean near = ls.dirX * s.nx + ls.dirY * s.ny + ls.dirZ * s.nz > 0;
         weights.lightVertex(k, s, near, ls, sampledLight);
         double w = weights.weight(1, t, camera, light, sampledLight, sampledCamera);
-        double kk = Math.abs(cosine) * visible * w;
+        double kk = ls.cosine * visible * w;
         f2.set(pt.betaR * f.r * ls.irradianceR * kk, pt.betaG * f.g * ls.irradianceG * kk,
                 pt.betaB * f.b * ls.irradianceB * kk);
         return true;
@@ -437,18 +422,6 @@ final class BdptIntegrator extends Integrator {
     }
 
     // ---------------------------------------------------------------- shadow rays
-
-    /** The fraction of light passing from surface s towards light k as sampled in {@code ls}, up to it. */
-    private double shadowRay(int k, Surface s, boolean near, LightSample ls) {
-        Aggregate through = k < lights.count() ? shadowAggregateOf(k) : aggregate;
-        double tMax = ls.distance;
-        if (!scene.lightsAndSky.isDelta(k) && tMax < Double.POSITIVE_INFINITY) {
-            tMax *= 1 - SHORT_OF_LIGHT;
-        }
-        return near ? transmittance(through, s.nearX(), s.nearY(), s.nearZ(), ls.dirX, ls.dirY, ls.dirZ, tMax,
-                s.skipNear) : transmittance(through, s.farX(), s.farY(), s.farZ(), ls.dirX, ls.dirY, ls.dirZ, tMax,
-                s.skipFar);
-    }
 
     /**
      * The fraction of light passing between surface vertices a and b: along the ray from a's offset point on

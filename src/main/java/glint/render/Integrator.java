@@ -151,24 +151,34 @@ abstract class Integrator implements LightQuery {
      */
     @Override
     public final double lightReaching(Surface s, int i, boolean through, LightSample out) {
-        boolean delta = lights.isDelta(i);
         double u1 = 0, u2 = 0;
-        if (!delta) {
+        if (!lights.isDelta(i)) {
             PathSamples numbers = lightNumbers(i);
             u1 = numbers.u1;
             u2 = numbers.u2;
         }
-        boolean found = delta ? lights.sample(i, s.px, s.py, s.pz, 0, 0, out)
-                : lights.sample(i, s.nearX(), s.nearY(), s.nearZ(), u1, u2, out);
+        return lightReaching(lights, shadowAggregate[i], s, i, u1, u2, through, out);
+    }
+
+    /**
+     * Light i of {@code from}, sampled by u1 and u2 (ignored by a delta light), seen from surface s, into
+     * {@code out}: {@link #lightReaching(Surface, int, boolean, LightSample)} for any list of lights, its shadow
+     * ray searched in {@code searched}.
+     */
+    final double lightReaching(Lights from, Aggregate searched, Surface s, int i, double u1, double u2,
+                               boolean through, LightSample out) {
+        boolean delta = from.isDelta(i);
+        boolean found = delta ? from.sample(i, s.px, s.py, s.pz, 0, 0, out)
+                : from.sample(i, s.nearX(), s.nearY(), s.nearZ(), u1, u2, out);
         double cosine = found ? out.dirX * s.nx + out.dirY * s.ny + out.dirZ * s.nz : 0;
         if (cosine > 0) {
             out.cosine = cosine;
-            return transmittance(s, out, i, true);
+            return transmittance(s, out, searched, delta, true);
         }
         if (!through || !(cosine < 0)) { // NaN too: no light from an undefined direction
             return 0;
         }
-        if (!delta && !lights.sample(i, s.farX(), s.farY(), s.farZ(), u1, u2, out)) {
+        if (!delta && !from.sample(i, s.farX(), s.farY(), s.farZ(), u1, u2, out)) {
             return 0;
         }
         cosine = out.dirX * s.nx + out.dirY * s.ny + out.dirZ * s.nz;
@@ -176,7 +186,7 @@ abstract class Integrator implements LightQuery {
             return 0;
         }
         out.cosine = -cosine;
-        return transmittance(s, out, i, false);
+        return transmittance(s, out, searched, delta, false);
     }
 
     /**
@@ -186,23 +196,20 @@ abstract class Integrator implements LightQuery {
     abstract PathSamples lightNumbers(int light);
 
     /**
-     * The fraction of light i, sampled as {@code light}, that reaches surface s: a shadow ray from s
-     * (from its {@code near} side, or its far one) towards the light, up to it, through the scene's shadow pass of each primitive it meets. A ray
-     * towards a light with a size (sampled from the ray's origin) stops short of the point sampled on
-     * it by {@link #SHORT_OF_LIGHT} of its length, so that the light's own body never shadows it.
+     * The fraction of a light, sampled as {@code light}, that reaches surface s: a shadow ray from s (from its
+     * {@code near} side, or its far one) towards the light, up to it, searched in {@code searched} through the
+     * scene's shadow pass of each primitive it meets. A ray towards a light with a size (not {@code delta};
+     * sampled from the ray's origin) stops short of the point sampled on it by {@link #SHORT_OF_LIGHT} of its
+     * length, so that the light's own body never shadows it.
      */
-    private double transmittance(Surface s, LightSample light, int i, boolean near) {
-        rays++;
+    private double transmittance(Surface s, LightSample light, Aggregate searched, boolean delta, boolean near) {
         double tMax = light.distance;
-        if (!lights.isDelta(i) && tMax < Double.POSITIVE_INFINITY) {
+        if (!delta && tMax < Double.POSITIVE_INFINITY) {
             tMax *= 1 - SHORT_OF_LIGHT;
         }
-        if (near) {
-            return shadowAggregate[i].transmittance(s.nearX(), s.nearY(), s.nearZ(), light.dirX, light.dirY,
-                    light.dirZ, tMax, s.skipNear, scene.shadowPass, stack);
-        }
-        return shadowAggregate[i].transmittance(s.farX(), s.farY(), s.farZ(), light.dirX, light.dirY, light.dirZ,
-                tMax, s.skipFar, scene.shadowPass, stack);
+        return near ? transmittance(searched, s.nearX(), s.nearY(), s.nearZ(), light.dirX, light.dirY, light.dirZ,
+                tMax, s.skipNear) : transmittance(searched, s.farX(), s.farY(), s.farZ(), light.dirX, light.dirY,
+                light.dirZ, tMax, s.skipFar);
     }
 
     /**

@@ -77,12 +77,8 @@ public final class Conductor implements Bsdf {
         if (!(cosOut > 0)) {
             return false;
         }
-        ShadingFrame frame = out.frame;
-        frame.set(s.nx, s.ny, s.nz);
-        double[] h = out.half;
-        Microfacet.sampleVisibleNormal(frame.localX(woX, woY, woZ), frame.localY(woX, woY, woZ), cosOut, alpha, u1, u2,
-                h);
-        double hx = frame.worldX(h[0], h[1], h[2]), hy = frame.worldY(h[0], h[1], h[2]), hz = frame.worldZ(h[0], h[1], h[2]);
+        double cosHalf = Microfacet.sampleVisibleNormal(s, woX, woY, woZ, cosOut, alpha, u1, u2, out);
+        double hx = out.half[0], hy = out.half[1], hz = out.half[2];
         double cosOutHalf = woX * hx + woY * hy + woZ * hz;
         double k = 2 * cosOutHalf;
         out.wiX = k * hx - woX;
@@ -96,7 +92,7 @@ public final class Conductor implements Bsdf {
         out.setWeight(masking * Optics.schlick(m.color(material, 0), cosOutHalf),
                 masking * Optics.schlick(m.color(material, 1), cosOutHalf),
                 masking * Optics.schlick(m.color(material, 2), cosOutHalf));
-        out.pdf = Microfacet.reflectedPdf(cosOut, h[2], alpha);
+        out.pdf = Microfacet.reflectedPdf(cosOut, cosHalf, alpha);
         out.lobe = Lobe.GLOSSY_REFLECTION;
         return true;
     }

@@ -163,13 +163,8 @@ public final class Dielectric implements Bsdf {
         if (!(cosOut > 0)) {
             return false;
         }
-        ShadingFrame frame = out.frame;
-        frame.set(s.nx, s.ny, s.nz);
-        double[] h = out.half;
-        Microfacet.sampleVisibleNormal(frame.localX(woX, woY, woZ), frame.localY(woX, woY, woZ), cosOut, alpha, u1, u2,
-                h);
-        double cosHalf = h[2];
-        double hx = frame.worldX(h[0], h[1], h[2]), hy = frame.worldY(h[0], h[1], h[2]), hz = frame.worldZ(h[0], h[1], h[2]);
+        double cosHalf = Microfacet.sampleVisibleNormal(s, woX, woY, woZ, cosOut, alpha, u1, u2, out);
+        double hx = out.half[0], hy = out.half[1], hz = out.half[2];
         double cosOutHalf = woX * hx + woY * hy + woZ * hz;
         if (!(cosOutHalf > 0)) {
             return false;

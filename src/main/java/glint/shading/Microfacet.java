@@ -62,6 +62,26 @@ public final class Microfacet {
     }
 
     /**
+     * A microfacet normal visible from unit world direction wo at surface s ({@code cosOut} = wo.n > 0), sampled
+     * by u1 and u2 as {@link #sampleVisibleNormal(double, double, double, double, double, double, double[])} does
+     * in s's local frame, into {@code out.half} in world space, with {@code out.frame} as scratch; returns its
+     * cosine to s's normal.
+     */
+    static double sampleVisibleNormal(Surface s, double woX, double woY, double woZ, double cosOut, double alpha,
+                                      double u1, double u2, BsdfSample out) {
+        ShadingFrame frame = out.frame;
+        frame.set(s.nx, s.ny, s.nz);
+        double[] h = out.half;
+        sampleVisibleNormal(frame.localX(woX, woY, woZ), frame.localY(woX, woY, woZ), cosOut, alpha, u1, u2, h);
+        double cosHalf = h[2];
+        double hx = frame.worldX(h[0], h[1], h[2]), hy = frame.worldY(h[0], h[1], h[2]), hz = frame.worldZ(h[0], h[1], h[2]);
+        h[0] = hx;
+        h[1] = hy;
+        h[2] = hz;
+        return cosHalf;
+    }
+
+    /**
      * Samples a microfacet normal visible from local direction wo (wo.z > 0) with density
      * G1(wo) max(0, wo.h) D(h) / wo.z, from two uniform numbers; writes the unit normal to {@code h}.
      */
