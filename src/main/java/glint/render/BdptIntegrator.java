@@ -192,6 +192,9 @@ final class BdptIntegrator extends Integrator {
                      int firstDimension, int known, int skip, int inside) {
         double scaleR = 1, scaleG = 1, scaleB = 1; // the throughput over the light's, for the roulette
         int dimension = firstDimension;
+        // the last vertex that left by a lobe that is not delta, where a chain of delta vertices starts
+        int chainFrom = n - 1;
+        double chainPdf = pdfDirection, outX = dx, outY = dy, outZ = dz;
         for (int bounce = 1; n < most; bounce++) {
             BdptVertex previous = path[n - 1];
             boolean found = bounce == 1 && known >= 0 ? known == 1 : nearest(ox, oy, oz, dx, dy, dz, skip, inside, hit);
@@ -202,7 +205,7 @@ final class BdptIntegrator extends Integrator {
                     v.light = -1;
                     v.setFar(dx, dy, dz);
                     v.setBeta(betaR, betaG, betaB);
-                    v.pdfFwd = previous.delta ? BdptWeights.PAST_DELTA : pdfDirection;
+                    v.pdfFwd = previous.delta ? chainPdf : pdfDirection; // through a chain: as if flat mirrors
                     v.delta = false;
                     v.deltaLight = false;
                     v.connectible = false;
@@ -216,7 +219,8 @@ final class BdptIntegrator extends Integrator {
             v.woY = -dy;
             v.woZ = -dz;
             v.setBeta(betaR, betaG, betaB);
-            v.pdfFwd = previous.delta ? BdptWeights.PAST_DELTA : weights.toArea(pdfDirection, previous, v);
+            v.pdfFwd = previous.delta ? weights.throughChain(chainPdf, path[chainFrom], outX, outY, outZ, v, dx, dy, dz)
+                    : weights.toArea(pdfDirection, previous, v);
             v.delta = false;
             v.deltaLight = false;
             int body = scene.lightOf[hit.primitive];
@@ -244,8 +248,23 @@ final class BdptIntegrator extends Integrator {
             double adjoint = fromLight && next.transmitted() ? weights.adjointTransmission(s) : 1;
             v.delta = next.delta();
             pdfDirection = next.pdf;
-            previous.pdfRev = v.delta ? BdptWeights.PAST_DELTA : weights.toArea(
-                    weights.bsdfPdf(v, next.wiX, next.wiY, next.wiZ, v.woX, v.woY, v.woZ), v, previous);
+            if (v.delta) { // a chain goes on: its densities are its ends'
+                v.pdfFwd = v.pdfFwd != 0 ? BdptWeights.PAST_DELTA : 0;
+                previous.pdfRev = BdptWeights.PAST_DELTA;
+            } else {
+                double back = weights.bsdfPdf(v, next.wiX, next.wiY, next.wiZ, v.woX, v.woY, v.woZ);
+                if (previous.delta) { // a chain ends at v
+                    previous.pdfRev = BdptWeights.PAST_DELTA;
+                    weights.backThroughChain(back, v, path, n - 2);
+                } else {
+                    previous.pdfRev = weights.toArea(back, v, previous);
+                }
+                chainFrom = n - 1;
+                chainPdf = next.pdf;
+                outX = next.wiX;
+                outY = next.wiY;
+                outZ = next.wiZ;
+            }
             double wr = next.weightR * adjoint, wg = next.weightG * adjoint, wb = next.weightB * adjoint;
             betaR *= wr;
             betaG *= wg;

@@ -24,9 +24,10 @@ import glint.shading.Surface;
 final class BdptWeights {
 
     /**
-     * The density recorded for a vertex reached through a delta lobe, which has none: 1, so that it
-     * cancels in the ratios of the strategies on either side of the delta vertex, none of which joins
-     * the path there. (Any other density of 0 means a strategy that cannot make the path.)
+     * The densities recorded on either side of a delta vertex (one a specular chain passes through): 1,
+     * so that they cancel in every ratio, none of the strategies joining the path there. The chain's
+     * two ends carry its densities instead ({@link #throughChain}). (Any other density of 0 means a
+     * strategy that cannot make the path.)
      */
     static final double PAST_DELTA = 1;
 
@@ -236,33 +237,92 @@ final class BdptWeights {
         }
     }
 
+    /**
+     * The density, per unit area at a chain's far end {@code to}, with which {@code from} reaches it
+     * through a chain of delta vertices (smooth glass, mirrors), {@code from} sending the path along
+     * unit {@code out} with density {@code pdf} and {@code to} entered along unit {@code in}, up to a
+     * factor the chain's density the other way shares. Through a chain the true density is pdf times the
+     * chain's generalized geometry term G over the cosine at {@code from} (Veach 1997, 8.2.2): G, the
+     * footprint of the rays through every curved surface, is the same both ways and cancels in the
+     * weights, which use only the two ends' ratio; what is left is pdf over the cosine at {@code from}.
+     * To or from infinity, where there is no cosine at the far end: as if the chain were flat mirrors.
+     */
+    double throughChain(double pdf, BdptVertex from, double outX, double outY, double outZ, BdptVertex to,
+                        double inX, double inY, double inZ) {
+        if (to.kind == BdptVertex.FAR) {
+            return pdf;
+        }
+        if (from.kind == BdptVertex.FAR) {
+            Surface b = to.surface;
+            return to.onSurface() ? pdf * Math.abs(b.nx * inX + b.ny * inY + b.nz * inZ) : pdf;
+        }
+        if (!from.onSurface()) {
+            return pdf;
+        }
+        Surface a = from.surface;
+        double cos = Math.abs(a.nx * outX + a.ny * outY + a.nz * outZ);
+        return cos > 0 ? pdf / cos : 0;
+    }
+
     /** The density with which vertex v, reached from {@code prev}, sends the path on to {@code next}. */
     double pdf(BdptVertex v, BdptVertex prev, BdptVertex next) {
         if (v.kind == BdptVertex.LIGHT || v.kind == BdptVertex.FAR) {
             return pdfLight(v, next);
         }
         direction(v, next);
-        double wiX = w[0], wiY = w[1], wiZ = w[2];
-        double pdf;
-        if (v.kind == BdptVertex.CAMERA) {
-            Surface c = v.surface;
-            pdf = scene.camera.directionPdf(c.px, c.py, c.pz, wiX, wiY, wiZ, width, height);
-        } else {
-            direction(v, prev);
-            pdf = bsdfPdf(v, w[0], w[1], w[2], wiX, wiY, wiZ);
+        return toArea(pdfToward(v, prev, w[0], w[1], w[2]), v, next);
+    }
+
+    /**
+     * The density per solid angle with which vertex v, reached from {@code prev} (none for a light or the
+     * camera), sends the path along unit w; from a far light, the density of its disc's point.
+     */
+    double pdfToward(BdptVertex v, BdptVertex prev, double wx, double wy, double wz) {
+        Surface c = v.surface;
+        switch (v.kind) {
+            case BdptVertex.FAR:
+                return 1 / (Math.PI * radius * radius);
+            case BdptVertex.LIGHT:
+                lights.leavingPdf(v.light, c.px, c.py, c.pz, wx, wy, wz, radius, leaving);
+                return leaving.pdfDirection;
+            case BdptVertex.CAMERA:
+                return scene.camera.directionPdf(c.px, c.py, c.pz, wx, wy, wz, width, height);
+            default:
+                direction(v, prev);
+                return bsdfPdf(v, w[0], w[1], w[2], wx, wy, wz);
         }
-        return toArea(pdf, v, next);
     }
 
     /** The density with which a light subpath from light vertex v reaches {@code to} first. */
     double pdfLight(BdptVertex v, BdptVertex to) {
-        if (v.kind == BdptVertex.FAR) {
-            return crossesDisc(to, v) ? toArea(1 / (Math.PI * radius * radius), v, to) : 0;
+        if (v.kind == BdptVertex.FAR && !crossesDisc(to, v)) {
+            return 0;
         }
         direction(v, to);
-        Surface a = v.surface;
-        lights.leavingPdf(v.light, a.px, a.py, a.pz, w[0], w[1], w[2], radius, leaving);
-        return toArea(leaving.pdfDirection, v, to);
+        return toArea(pdfToward(v, null, w[0], w[1], w[2]), v, to);
+    }
+
+    /**
+     * Where {@code end} sends the path back, with density {@code pdf} per solid angle, through the chain
+     * of delta vertices before it on its subpath {@code path}, whose last is {@code path[last]}: the
+     * density with which it reaches the chain's start, set as the start's reverse density
+     * ({@link #throughChain}). Returns the start's index.
+     */
+    int backThroughChain(double pdf, BdptVertex end, BdptVertex[] path, int last) {
+        int start = chainStart(path, last);
+        BdptVertex first = path[start], second = path[start + 1];
+        direction(end, path[last]);
+        first.pdfRev = throughChain(pdf, end, w[0], w[1], w[2], first, -second.woX, -second.woY, -second.woZ);
+        return start;
+    }
+
+    /** The index of the start of the chain of delta vertices that ends at {@code path[last]}. */
+    private static int chainStart(BdptVertex[] path, int last) {
+        int start = last;
+        while (path[start].delta) {
+            start--;
+        }
+        return start;
     }
 
     /** The density with which a light subpath starts at light vertex v: its light's chance times its point's. */
@@ -348,13 +408,26 @@ final class BdptWeights {
         double ptRev = pt.pdfRev, ptMinusRev = ptMinus == null ? 0 : ptMinus.pdfRev;
         double qsRev = qs == null ? 0 : qs.pdfRev, qsMinusRev = qsMinus == null ? 0 : qsMinus.pdfRev;
         boolean ptDelta = pt.delta, qsDelta = qs != null && qs.delta;
+        // where a subpath reached its joined vertex through a chain of delta vertices, the chain's start
+        BdptVertex cameraStart = ptMinus != null && ptMinus.delta ? camera[chainStart(camera, t - 2)] : null;
+        BdptVertex lightStart = qsMinus != null && qsMinus.delta ? light[chainStart(light, s - 2)] : null;
+        double cameraStartRev = cameraStart == null ? 0 : cameraStart.pdfRev;
+        double lightStartRev = lightStart == null ? 0 : lightStart.pdfRev;
         pt.pdfRev = s > 0 ? pdf(qs, qsMinus, pt) : pdfLightOrigin(pt);
-        if (ptMinus != null) {
+        if (cameraStart != null) {
+            ptMinus.pdfRev = PAST_DELTA;
+            direction(pt, ptMinus);
+            backThroughChain(pdfToward(pt, qs, w[0], w[1], w[2]), pt, camera, t - 2);
+        } else if (ptMinus != null) {
             ptMinus.pdfRev = s > 0 ? pdf(pt, qs, ptMinus) : pdfLight(pt, ptMinus);
         }
         if (qs != null) {
             qs.pdfRev = pdf(pt, ptMinus, qs);
-            if (qsMinus != null) {
+            if (lightStart != null) {
+                qsMinus.pdfRev = PAST_DELTA;
+                direction(qs, qsMinus);
+                backThroughChain(pdfToward(qs, pt, w[0], w[1], w[2]), qs, light, s - 2);
+            } else if (qsMinus != null) {
                 qsMinus.pdfRev = pdf(qs, pt, qsMinus);
             }
         }
@@ -385,6 +458,12 @@ final class BdptWeights {
         }
         pt.pdfRev = ptRev;
         pt.delta = ptDelta;
+        if (cameraStart != null) {
+            cameraStart.pdfRev = cameraStartRev;
+        }
+        if (lightStart != null) {
+            lightStart.pdfRev = lightStartRev;
+        }
         if (ptMinus != null) {
             ptMinus.pdfRev = ptMinusRev;
         }

@@ -80,7 +80,7 @@ class BdptIntegratorTest {
     @Test
     void theWeightsOfEveryStrategyOfARandomPathSumToOne() {
         SplittableRandom random = new SplittableRandom(11);
-        int checked = 0, longest = 0;
+        int checked = 0, longest = 0, chains = 0;
         for (int sceneNumber = 0; sceneNumber < 6; sceneNumber++) {
             RenderScene scene = compile(randomScene(random), 6);
             BdptIntegrator bdpt = new BdptIntegrator();
@@ -109,10 +109,14 @@ class BdptIntegratorTest {
                 assertEquals(1, sum, 1e-6, "path of " + n + " vertices, ray " + ray + " of scene " + sceneNumber);
                 checked++;
                 longest = Math.max(longest, n);
+                for (int i = 1; i < n - 1; i++) {
+                    chains += bdpt.camera[i].delta ? 1 : 0;
+                }
             }
         }
         assertTrue(checked > 500, "paths checked: " + checked);
         assertTrue(longest >= 5, "longest path: " + longest);
+        assertTrue(chains > 100, "delta vertices on the paths checked (smooth glass, mirrors): " + chains);
     }
 
     /** The sum over s of the weight of strategy (s, n - s) for the camera path of n vertices read both ways. */
@@ -128,9 +132,32 @@ class BdptIntegratorTest {
         }
         BdptVertex y0 = light[0];
         y0.pdfFwd = weights.pdfLightOrigin(y0);
-        light[1].pdfFwd = weights.pdfLight(y0, light[1]);
+        light[1].pdfFwd = light[1].delta ? BdptWeights.PAST_DELTA : weights.pdfLight(y0, light[1]);
         for (int i = 2; i < n - 1; i++) {
             light[i].pdfFwd = camera[n - 1 - i].pdfRev;
+        }
+        int chainEnd = 1;
+        while (chainEnd < n - 1 && light[chainEnd].delta) { // the light's own chain of delta vertices ends here
+            chainEnd++;
+        }
+        if (chainEnd > 1 && chainEnd < n - 1) {
+            BdptVertex first = light[1], end = light[chainEnd];
+            double ux = first.surface.px - y0.surface.px, uy = first.surface.py - y0.surface.py;
+            double uz = first.surface.pz - y0.surface.pz;
+            double inv = 1 / Math.sqrt(ux * ux + uy * uy + uz * uz);
+            if (y0.kind == BdptVertex.FAR) {
+                ux = -y0.farX;
+                uy = -y0.farY;
+                uz = -y0.farZ;
+                inv = 1;
+            }
+            double pdf = weights.pdfToward(y0, null, ux * inv, uy * inv, uz * inv);
+            BdptVertex last = camera[n - chainEnd]; // the chain's last delta vertex, on the camera's side
+            double ix = last.surface.px - end.surface.px, iy = last.surface.py - end.surface.py;
+            double iz = last.surface.pz - end.surface.pz;
+            double inIn = 1 / Math.sqrt(ix * ix + iy * iy + iz * iz);
+            end.pdfFwd = weights.throughChain(pdf, y0, ux * inv, uy * inv, uz * inv, end, ix * inIn, iy * inIn,
+                    iz * inIn);
         }
         for (int i = 1; i < n - 1; i++) { // a light vertex's wo points back along the light subpath
             BdptVertex y = light[i], before = light[i - 1];
@@ -185,12 +212,13 @@ class BdptIntegratorTest {
                 """, random.nextDouble(-2, 2), random.nextDouble(-1, 2), random.nextDouble(0.1, 0.6),
                 random.nextDouble(1, 20)));
         String[] materials = {"{type: matte, color: [0.8, 0.6, 0.4]}", "{type: metal, color: [0.9, 0.9, 0.9], roughness: 0.4}",
-                "{type: glass, ior: 1.5, roughness: 0.4}", "{type: matte, color: [0.3, 0.6, 0.9]}"};
+                "{type: glass, ior: 1.5, roughness: 0.4}", "{type: matte, color: [0.3, 0.6, 0.9]}",
+                "{type: glass, ior: 1.5}", "{type: metal, color: [0.9, 0.9, 0.9]}"};
         for (int i = 0; i < 5; i++) {
             double r = random.nextDouble(0.2, 0.7);
             yaml.append(String.format(java.util.Locale.ROOT,
                     "  - {type: sphere, center: [%.2f, %.2f, %.2f], radius: %.2f, material: %s}%n",
-                    random.nextDouble(-2.5, 2.5), r, random.nextDouble(-1, 2.5), r, materials[random.nextInt(4)]));
+                    random.nextDouble(-2.5, 2.5), r, random.nextDouble(-1, 2.5), r, materials[random.nextInt(materials.length)]));
         }
         return yaml.toString();
     }
