@@ -26,7 +26,7 @@ import org.knowm.xchart.XYChart;
  * relMSE and FLIP over the path tracer's at the same render CPU (the path's interpolated on log axes);
  * <li>the caustic under caustic-lamp's glass ball: its mean radiance against the reference's;
  * <li>relMSE falling with the samples on the default and metals scenes at 100 x 75, each against bdpt's
- * own image at 4096 samples (no firefly plateau);
+ * own image at 4096 samples, over {@link #FALL_FRAMES} frames (no firefly plateau);
  * <li>sky-and-sun, whose reference lacks the caustic of its glass ball under the sun: by how much.
  * </ol>
  * Usage: {@code java -cp target/benchmarks.jar glint.study.BdptStudy [--docs | --caustic]}; --docs writes the
@@ -42,8 +42,24 @@ public final class BdptStudy {
     private BdptStudy() {
     }
 
+    /** A way to render: an integrator, and for bdpt whether it merges as well as joins. */
+    enum Method {
+        PATH("path", LightTransport.PATH, false), BDPT("bdpt", LightTransport.BDPT, true),
+        JOINS_ONLY("bdpt, joins only", LightTransport.BDPT, false);
+
+        final String label;
+        final LightTransport transport;
+        final boolean merging;
+
+        Method(String label, LightTransport transport, boolean merging) {
+            this.label = label;
+            this.transport = transport;
+            this.merging = merging;
+        }
+    }
+
     /** One render: its method, samples, render CPU in ms and errors against the reference. */
-    record Point(LightTransport transport, int samples, double cpuMillis, double relMse, double flip) {
+    record Point(Method method, int samples, double cpuMillis, double relMse, double flip) {
     }
 
     public static void main(String[] args) throws Exception {
@@ -55,12 +71,16 @@ public final class BdptStudy {
         Locale.setDefault(Locale.ROOT);
         List<XYChart> charts = new ArrayList<>();
         StringBuilder out = new StringBuilder();
-        out.append("| scene | bdpt samples | render CPU | bdpt relMSE / path's at that CPU | bdpt FLIP / path's |\n")
-                .append("|---|--:|--:|--:|--:|\n");
+        out.append("| scene | method | samples | render CPU | relMSE / path's at that CPU | FLIP / path's |\n")
+                .append("|---|---|--:|--:|--:|--:|\n");
         FrameBuffer causticLamp = PfmReader.read(REFERENCES.resolve("caustic-lamp.pfm"));
-        equalCpu("caustic-lamp", load(REFERENCES.resolve("caustic-lamp.yaml")), causticLamp, out, charts);
+        Scene lamp = load(REFERENCES.resolve("caustic-lamp.yaml"));
+        for (Method m : Method.values()) { // compiled before any render is timed, so no method pays for it
+            render(lamp, m, 100, 75, 16);
+        }
+        equalCpu("caustic-lamp", lamp, causticLamp, out, charts);
         Scene caustics = load(Path.of("scenes/caustics.yaml"));
-        FrameBuffer causticsReference = render(caustics, LightTransport.BDPT, 200, 150, REFERENCE_SAMPLES).frame;
+        FrameBuffer causticsReference = render(caustics, Method.JOINS_ONLY, 200, 150, REFERENCE_SAMPLES).frame;
         equalCpu("caustics", caustics, causticsReference, out, charts);
         out.append('\n').append(causticUnderTheBall(causticLamp)).append('\n');
         out.append(fallsWithSamples("default")).append(fallsWithSamples("metals"));
@@ -75,20 +95,24 @@ public final class BdptStudy {
     /** Path at 16 to 1024 samples and bdpt at 4 to 256 against {@code reference}: a table row per bdpt point and a chart. */
     static void equalCpu(String name, Scene scene, FrameBuffer reference, StringBuilder out, List<XYChart> charts) {
         int w = reference.width(), h = reference.height();
-        List<Point> path = new ArrayList<>(), bdpt = new ArrayList<>();
+        List<Point> path = new ArrayList<>(), bdpt = new ArrayList<>(), joins = new ArrayList<>();
         for (int samples : new int[] {16, 64, 256, 1024}) {
-            path.add(point(scene, LightTransport.PATH, samples, reference));
+            path.add(point(scene, Method.PATH, samples, reference));
         }
         for (int samples : new int[] {4, 16, 64, 256}) {
-            bdpt.add(point(scene, LightTransport.BDPT, samples, reference));
+            bdpt.add(point(scene, Method.BDPT, samples, reference));
+            joins.add(point(scene, Method.JOINS_ONLY, samples, reference));
         }
-        for (Point b : bdpt) {
-            out.append(String.format("| %s | %d | %.0f ms | %.2f | %.2f |%n", name, b.samples(), b.cpuMillis(),
-                    b.relMse() / atCpu(path, b.cpuMillis(), true), b.flip() / atCpu(path, b.cpuMillis(), false)));
+        for (List<Point> points : List.of(bdpt, joins)) {
+            for (Point b : points) {
+                out.append(String.format("| %s | %s | %d | %.0f ms | %.2f | %.2f |%n", name, b.method().label,
+                        b.samples(), b.cpuMillis(), b.relMse() / atCpu(path, b.cpuMillis(), true),
+                        b.flip() / atCpu(path, b.cpuMillis(), false)));
+            }
         }
-        for (List<Point> points : List.of(path, bdpt)) {
+        for (List<Point> points : List.of(path, bdpt, joins)) {
             for (Point p : points) {
-                System.err.printf("%s %s s%d: %.0f ms, relMSE %.3e, FLIP %.4f%n", name, p.transport().key(),
+                System.err.printf("%s %s s%d: %.0f ms, relMSE %.3e, FLIP %.4f%n", name, p.method().label,
                         p.samples(), p.cpuMillis(), p.relMse(), p.flip());
             }
         }
@@ -96,10 +120,12 @@ public final class BdptStudy {
                 true, true, 600);
         Charts.line(chart, "path s16-1024", cpu(path), errors(path, true), 0, false);
         Charts.line(chart, "bdpt s4-256", cpu(bdpt), errors(bdpt, true), 4, false);
+        Charts.line(chart, "bdpt, joins only, s4-256", cpu(joins), errors(joins, true), 1, true);
         charts.add(chart);
         XYChart flip = Charts.chart(name + ": FLIP against render CPU", "render CPU (ms)", "mean FLIP", true, true, 600);
         Charts.line(flip, "path s16-1024", cpu(path), errors(path, false), 0, false);
         Charts.line(flip, "bdpt s4-256", cpu(bdpt), errors(bdpt, false), 4, false);
+        Charts.line(flip, "bdpt, joins only, s4-256", cpu(joins), errors(joins, false), 1, true);
         charts.add(flip);
     }
 
@@ -118,8 +144,8 @@ public final class BdptStudy {
     /** The mean radiance of the caustic under caustic-lamp's glass ball (its brightest floor pixels) in bdpt, path and the reference. */
     static String causticUnderTheBall(FrameBuffer reference) {
         Scene scene = load(REFERENCES.resolve("caustic-lamp.yaml"));
-        FrameBuffer bdpt = render(scene, LightTransport.BDPT, 200, 150, 1024).frame;
-        FrameBuffer path = render(scene, LightTransport.PATH, 200, 150, 1024).frame;
+        FrameBuffer bdpt = render(scene, Method.BDPT, 200, 150, 1024).frame;
+        FrameBuffer path = render(scene, Method.PATH, 200, 150, 1024).frame;
         // the caustic: pixels under the ball (rows 80 on, columns 50 to 149) whose reference is above 4x the
         // median of the floor (rows 110 on)
         List<Integer> spot = new ArrayList<>();
@@ -145,48 +171,83 @@ public final class BdptStudy {
                 100 * (mean(path, spot) / mean(reference, spot) - 1));
     }
 
-    /** bdpt's relMSE at 16 and 256 samples against its own image at 4096, at 100 x 75: how far it falls. */
+    /** Frames (seeds) the fall with samples is averaged over: one frame's relMSE is ruled by its rarest paths. */
+    static final int FALL_FRAMES = 4;
+
+    /**
+     * bdpt's and path's relMSE at 16 and 256 samples against bdpt's own image at 4096, at 100 x 75, over
+     * {@link #FALL_FRAMES} frames (seeds): how far the mean and the median fall.
+     */
     static String fallsWithSamples(String name) {
         Scene scene = load(Path.of("scenes", name + ".yaml"));
-        FrameBuffer own = render(scene, LightTransport.BDPT, 100, 75, 4096).frame;
-        double at16 = RelativeMse.of(render(scene, LightTransport.BDPT, 100, 75, 16).frame, own);
-        double at256 = RelativeMse.of(render(scene, LightTransport.BDPT, 100, 75, 256).frame, own);
-        double path16 = RelativeMse.of(render(scene, LightTransport.PATH, 100, 75, 16).frame, own);
-        double path256 = RelativeMse.of(render(scene, LightTransport.PATH, 100, 75, 256).frame, own);
-        return String.format("%s at 100 x 75 against bdpt at 4096: bdpt relMSE %.3e at 16, %.3e at 256 (falls %.1fx);"
-                + " path %.3e at 16, %.3e at 256 (falls %.1fx)%n", name, at16, at256, at16 / at256, path16, path256,
-                path16 / path256);
+        FrameBuffer own = render(scene, Method.BDPT, 100, 75, 4096, 0).frame;
+        StringBuilder out = new StringBuilder();
+        for (Method m : List.of(Method.BDPT, Method.PATH)) {
+            double[] at16 = new double[FALL_FRAMES], at256 = new double[FALL_FRAMES];
+            for (int f = 0; f < FALL_FRAMES; f++) {
+                at16[f] = RelativeMse.of(render(scene, m, 100, 75, 16, f + 1).frame, own);
+                at256[f] = RelativeMse.of(render(scene, m, 100, 75, 256, f + 1).frame, own);
+            }
+            out.append(String.format("%s at 100 x 75 against bdpt at 4096, %s, %d frames: relMSE at 16 %s, at 256 %s; "
+                            + "mean falls %.1fx, median %.1fx%n", name, m.label, FALL_FRAMES, list(at16), list(at256),
+                    mean(at16) / mean(at256), median(at16) / median(at256)));
+        }
+        return out.toString();
+    }
+
+    private static String list(double[] values) {
+        StringBuilder s = new StringBuilder();
+        for (double v : values) {
+            s.append(s.length() == 0 ? "" : ", ").append(String.format("%.2e", v));
+        }
+        return s.toString();
+    }
+
+    private static double mean(double[] values) {
+        return java.util.Arrays.stream(values).average().orElse(Double.NaN);
+    }
+
+    private static double median(double[] values) {
+        double[] sorted = values.clone();
+        java.util.Arrays.sort(sorted);
+        int n = sorted.length;
+        return n % 2 == 1 ? sorted[n / 2] : (sorted[n / 2 - 1] + sorted[n / 2]) / 2;
     }
 
     /** sky-and-sun: bdpt at 256 against the reference, which lacks the sun's caustic under the glass ball. */
     static String skyAndSun() throws IOException {
         FrameBuffer reference = PfmReader.read(REFERENCES.resolve("sky-and-sun.pfm"));
         Scene scene = load(REFERENCES.resolve("sky-and-sun.yaml"));
-        FrameBuffer bdpt = render(scene, LightTransport.BDPT, reference.width(), reference.height(), 256).frame;
-        FrameBuffer path = render(scene, LightTransport.PATH, reference.width(), reference.height(), 256).frame;
+        FrameBuffer bdpt = render(scene, Method.BDPT, reference.width(), reference.height(), 256).frame;
+        FrameBuffer path = render(scene, Method.PATH, reference.width(), reference.height(), 256).frame;
         double bdptMean = mean(bdpt, null), pathMean = mean(path, null), refMean = mean(reference, null);
         return String.format("sky-and-sun at 256 samples: relMSE bdpt %.3e, path %.3e; mean radiance bdpt %.4f, path "
                         + "%.4f, reference %.4f (bdpt %+.2f %%: the caustic)%n", RelativeMse.of(bdpt, reference),
                 RelativeMse.of(path, reference), bdptMean, pathMean, refMean, 100 * (bdptMean / refMean - 1));
     }
 
-    private static Point point(Scene scene, LightTransport transport, int samples, FrameBuffer reference) {
-        Rendered r = render(scene, transport, reference.width(), reference.height(), samples);
-        return new Point(transport, samples, r.cpuMillis, RelativeMse.of(r.frame, reference), Flip.of(r.frame, reference));
+    private static Point point(Scene scene, Method method, int samples, FrameBuffer reference) {
+        Rendered r = render(scene, method, reference.width(), reference.height(), samples);
+        return new Point(method, samples, r.cpuMillis, RelativeMse.of(r.frame, reference), Flip.of(r.frame, reference));
     }
 
     private record Rendered(FrameBuffer frame, double cpuMillis) {
     }
 
-    static Rendered render(Scene scene, LightTransport transport, int w, int h, int samples) {
+    static Rendered render(Scene scene, Method method, int w, int h, int samples) {
+        return render(scene, method, w, h, samples, 0);
+    }
+
+    /** Frame {@code frameIndex} (its seed) of the scene by the method, and its render CPU. */
+    static Rendered render(Scene scene, Method method, int w, int h, int samples, int frameIndex) {
         Config d = Config.defaults();
         RenderSettings settings = new RenderSettings(Shading.COOK_TORRANCE, DEPTH, d.minWeight(), d.epsilon())
-                .withTransport(transport);
+                .withTransport(method.transport).withMerging(method.merging);
         FrameBuffer frame = new FrameBuffer(w, h);
         try (Tracer tracer = new Tracer(2)) {
             RenderScene compiled = RenderScene.compile(scene, settings);
             long before = tracer.renderCpuNanos();
-            tracer.render(compiled, frame, samples, 0, d.screenDivider());
+            tracer.render(compiled, frame, samples, frameIndex, d.screenDivider());
             return new Rendered(frame, (tracer.renderCpuNanos() - before) / 1e6);
         }
     }

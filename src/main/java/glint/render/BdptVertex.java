@@ -43,6 +43,12 @@ final class BdptVertex {
     boolean deltaLight;
     /** Whether a path can be joined here by a connecting ray: a surface with a lobe that is not delta. */
     boolean connectible;
+    /**
+     * Whether paths may be merged here: a surface with a diffuse lobe. A merge weighs the light of another
+     * path by the BSDF at a direction that path brought; a glossy lobe turns that into fireflies, where
+     * joins and the camera's own sampling serve it better.
+     */
+    boolean diffuse;
 
     /** Whether it lies on a surface whose cosine converts densities: a scattering surface or a sphere light. */
     boolean onSurface() {

@@ -44,6 +44,12 @@ final class BdptWeights {
     private int onlyS = -1, onlyT = -1;
     private boolean weighted = true;
 
+    /**
+     * Vertex merging's factor (Georgiev et al. 2012): the light subpaths merged with, times the area of the
+     * merge disc; 0 without merging.
+     */
+    private double eta;
+
     private final LightRay leaving = new LightRay();
     private final Surface turned = new Surface();
     private final double[] box = new double[6];
@@ -59,6 +65,33 @@ final class BdptWeights {
         weighted = renderScene.strategyWeighted;
         bound(renderScene.primitives, renderScene.camera);
         chances();
+    }
+
+    /**
+     * The width of a pixel of a width x height image at the scene's centre, as the camera sees it: the
+     * angle between the rays through two neighbouring pixels at the image's centre, times the centre's
+     * distance from the eye (half the scene's radius at the least, for a camera inside the scene).
+     */
+    double pixelWidthAtCentre(int width, int height) {
+        double[] ox = new double[2], oy = new double[2], oz = new double[2];
+        double[] dx = new double[2], dy = new double[2], dz = new double[2];
+        CameraModel camera = scene.camera;
+        camera.ray(width / 2.0, height / 2.0, 0.5, 0.5, width, height, ox, oy, oz, dx, dy, dz, 0);
+        camera.ray(width / 2.0 + 1, height / 2.0, 0.5, 0.5, width, height, ox, oy, oz, dx, dy, dz, 1);
+        double cos = dx[0] * dx[1] + dy[0] * dy[1] + dz[0] * dz[1];
+        double angle = Math.acos(Math.min(1, cos));
+        double ex = centreX - camera.eye().x(), ey = centreY - camera.eye().y(), ez = centreZ - camera.eye().z();
+        return angle * Math.max(Math.sqrt(ex * ex + ey * ey + ez * ez), radius / 2);
+    }
+
+    /** The radius of the sphere around every bounded primitive and the camera. */
+    double sceneRadius() {
+        return radius;
+    }
+
+    /** Merging with {@code paths} light subpaths within {@code radius}; 0 paths: none. */
+    void merging(int paths, double radius) {
+        eta = paths * Math.PI * radius * radius;
     }
 
     /** The image size the camera's densities are of. */
@@ -138,7 +171,12 @@ final class BdptWeights {
 
     /** Whether strategy (s, t) is rendered: all are, unless the scene asks for one alone. */
     boolean chosen(int s, int t) {
-        return onlyS < 0 || s == onlyS && t == onlyT;
+        return onlyS == -1 || s == onlyS && t == onlyT;
+    }
+
+    /** Whether merges are rendered: they are, unless the scene asks for one join alone. */
+    boolean mergesChosen() {
+        return onlyS == -1 || onlyS == RenderScene.MERGES;
     }
 
     // ---------------------------------------------------------------- BSDFs from either side
@@ -405,39 +443,114 @@ final class BdptWeights {
         BdptVertex ptMinus = t > 1 ? camera[t - 2] : null;
         BdptVertex qs = s == 0 ? null : s == 1 ? sampledLight : light[s - 1];
         BdptVertex qsMinus = s > 1 ? light[s - 2] : null;
-        double ptRev = pt.pdfRev, ptMinusRev = ptMinus == null ? 0 : ptMinus.pdfRev;
-        double qsRev = qs == null ? 0 : qs.pdfRev, qsMinusRev = qsMinus == null ? 0 : qsMinus.pdfRev;
         boolean ptDelta = pt.delta, qsDelta = qs != null && qs.delta;
-        // where a subpath reached its joined vertex through a chain of delta vertices, the chain's start
-        BdptVertex cameraStart = ptMinus != null && ptMinus.delta ? camera[chainStart(camera, t - 2)] : null;
-        BdptVertex lightStart = qsMinus != null && qsMinus.delta ? light[chainStart(light, s - 2)] : null;
-        double cameraStartRev = cameraStart == null ? 0 : cameraStart.pdfRev;
-        double lightStartRev = lightStart == null ? 0 : lightStart.pdfRev;
+        save(pt);
         pt.pdfRev = s > 0 ? pdf(qs, qsMinus, pt) : pdfLightOrigin(pt);
-        if (cameraStart != null) {
-            ptMinus.pdfRev = PAST_DELTA;
-            direction(pt, ptMinus);
-            backThroughChain(pdfToward(pt, qs, w[0], w[1], w[2]), pt, camera, t - 2);
-        } else if (ptMinus != null) {
-            ptMinus.pdfRev = s > 0 ? pdf(pt, qs, ptMinus) : pdfLight(pt, ptMinus);
+        if (ptMinus != null) {
+            backFromJoin(pt, qs, ptMinus, camera, t - 2, s > 0);
         }
         if (qs != null) {
+            save(qs);
             qs.pdfRev = pdf(pt, ptMinus, qs);
-            if (lightStart != null) {
-                qsMinus.pdfRev = PAST_DELTA;
-                direction(qs, qsMinus);
-                backThroughChain(pdfToward(qs, pt, w[0], w[1], w[2]), qs, light, s - 2);
-            } else if (qsMinus != null) {
-                qsMinus.pdfRev = pdf(qs, pt, qsMinus);
+            if (qsMinus != null) {
+                backFromJoin(qs, pt, qsMinus, light, s - 2, true);
             }
-        }
-        pt.delta = false;
-        if (qs != null) {
             qs.delta = false;
         }
-        // next-event estimation's light end is denser by q: its strategy's term counts q^2 more, and
-        // every other term q^2 less where next-event estimation is the strategy weighed
-        double q = nextEventFactor(s == 0 ? pt : s == 1 ? sampledLight : light[0]);
+        pt.delta = false;
+        double sum = otherStrategies(s, t, camera, light, qs,
+                nextEventFactor(s == 0 ? pt : s == 1 ? sampledLight : light[0]));
+        restore();
+        pt.delta = ptDelta;
+        if (qs != null) {
+            qs.delta = qsDelta;
+        }
+        return 1 / (1 + sum);
+    }
+
+    /**
+     * The weight of merging (vertex merging) the last vertex of the light subpath light[0 .. s - 1] (s >= 2),
+     * found within the merge radius of camera vertex camera[t - 1] (t >= 2), with it: the power heuristic
+     * over every strategy, each join and each merge, that makes the path of the light subpath's first s - 1
+     * vertices, the camera's first t and the light subpath's last (Georgiev et al. 2012), worked out as
+     * {@link #weight} does from the join (s - 1, t) of the two, which itself cannot make the path where
+     * the light subpath reached its last vertex through a delta lobe.
+     */
+    double mergeWeight(int s, int t, BdptVertex[] camera, BdptVertex[] light) {
+        if (!weighted) {
+            return 1;
+        }
+        if (!made(s, t, camera, light)) {
+            return 0;
+        }
+        int b = s - 1;
+        BdptVertex pt = camera[t - 1], ptMinus = camera[t - 2], qs = light[b - 1];
+        boolean ptDelta = pt.delta;
+        save(pt);
+        pt.pdfRev = light[b].pdfFwd; // the light's density of reaching the point merged there
+        backFromJoin(pt, qs, ptMinus, camera, t - 2, true);
+        save(qs);
+        boolean joins = !qs.delta;
+        if (joins) {
+            qs.pdfRev = pdf(pt, ptMinus, qs); // the vertex before qs as its light subpath recorded it
+        } else {
+            backFromJoin(pt, ptMinus, qs, light, b - 1, true);
+        }
+        pt.delta = false;
+        double q = nextEventFactor(light[0]);
+        double sum = otherStrategies(b, t, camera, light, qs, q);
+        double merge = pt.pdfRev * eta;
+        restore();
+        pt.delta = ptDelta;
+        double term = merge * merge * (b == 1 ? 1 / (q * q) : 1);
+        double total = (joins ? 1 : 0) + sum;
+        return total > 0 ? term / total : 0;
+    }
+
+    /**
+     * Sets the reverse density of {@code back} = path[last], the vertex before {@code joined} on its
+     * subpath, for a path that reaches {@code joined} from {@code from} and goes on to {@code back}; where
+     * {@code back} is delta, instead the densities through the chain of delta vertices it ends (to its
+     * start). {@code scatters}: joined is a surface scattering the path (else a light the camera met).
+     */
+    private void backFromJoin(BdptVertex joined, BdptVertex from, BdptVertex back, BdptVertex[] path, int last,
+                              boolean scatters) {
+        save(back);
+        if (!back.delta) {
+            back.pdfRev = scatters ? pdf(joined, from, back) : pdfLight(joined, back);
+            return;
+        }
+        back.pdfRev = PAST_DELTA;
+        save(path[chainStart(path, last)]);
+        direction(joined, back);
+        backThroughChain(pdfToward(joined, from, w[0], w[1], w[2]), joined, path, last);
+    }
+
+    /** Vertices whose reverse density a weight changed for the while, and their own, to put back. */
+    private final BdptVertex[] savedVertex = new BdptVertex[8];
+    private final double[] savedRev = new double[8];
+    private int saved;
+
+    private void save(BdptVertex v) {
+        savedVertex[saved] = v;
+        savedRev[saved++] = v.pdfRev;
+    }
+
+    private void restore() {
+        while (saved > 0) {
+            saved--;
+            savedVertex[saved].pdfRev = savedRev[saved];
+            savedVertex[saved] = null;
+        }
+    }
+
+    /**
+     * The sum over every strategy but (s, t) of its density over (s, t)'s, squared (the power heuristic),
+     * the joined vertices' densities set: each join, each merge where merging is on ({@link #eta}).
+     * Next-event estimation's light end is denser by q: its strategy's term counts q^2 more, and every
+     * other term q^2 less where next-event estimation is the strategy weighed.
+     */
+    private double otherStrategies(int s, int t, BdptVertex[] camera, BdptVertex[] light, BdptVertex qs, double q) {
         double nextEvent = q * q, others = s == 1 ? 1 / nextEvent : 1;
         double sum = 0, ratio = 1;
         for (int i = t - 1; i > 0; i--) {
@@ -445,6 +558,10 @@ final class BdptWeights {
             ratio *= v.pdfRev / nonZero(v.pdfFwd);
             if (!v.delta && !camera[i - 1].delta) {
                 sum += ratio * ratio * (s + t - i == 1 ? nextEvent : others);
+            }
+            if (eta > 0 && merges(v)) { // both ends reach v: the camera's density of it is the chance to merge
+                double m = ratio * v.pdfFwd * eta;
+                sum += m * m * others;
             }
         }
         ratio = 1;
@@ -455,26 +572,20 @@ final class BdptWeights {
             if (!v.delta && !deltaBefore) {
                 sum += ratio * ratio * (i == 1 ? nextEvent : others);
             }
-        }
-        pt.pdfRev = ptRev;
-        pt.delta = ptDelta;
-        if (cameraStart != null) {
-            cameraStart.pdfRev = cameraStartRev;
-        }
-        if (lightStart != null) {
-            lightStart.pdfRev = lightStartRev;
-        }
-        if (ptMinus != null) {
-            ptMinus.pdfRev = ptMinusRev;
-        }
-        if (qs != null) {
-            qs.pdfRev = qsRev;
-            qs.delta = qsDelta;
-            if (qsMinus != null) {
-                qsMinus.pdfRev = qsMinusRev;
+            if (eta > 0 && i > 0 && merges(v)) {
+                double m = ratio * v.pdfFwd * eta;
+                sum += m * m * others;
             }
         }
-        return 1 / (1 + sum);
+        return sum;
+    }
+
+    /**
+     * Whether a path may be made by merging at v: a point of a surface with a diffuse lobe
+     * ({@link BdptVertex#diffuse}) that scatters it by a lobe that is not delta.
+     */
+    static boolean merges(BdptVertex v) {
+        return v.kind == BdptVertex.SURFACE && v.diffuse && !v.delta;
     }
 
     /**

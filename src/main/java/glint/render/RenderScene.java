@@ -67,7 +67,8 @@ public final class RenderScene {
     final CameraModel camera;
     /**
      * The one strategy (s, t) a bidirectional render keeps, weighted or not, for the tests and studies
-     * that look at strategies one by one (pbrt's visualize-strategies); -1: every strategy, weighted.
+     * that look at strategies one by one (pbrt's visualize-strategies); -1: every strategy, weighted;
+     * {@link #MERGES}: the merges alone.
      */
     final int strategyS, strategyT;
     final boolean strategyWeighted;
@@ -188,12 +189,16 @@ public final class RenderScene {
     }
 
     /**
-     * This scene rendered by the bidirectional integrator with strategy (s, t) alone, by its weight or
-     * unweighted ({@code BdptIntegrator}): what the tests and studies of its strategies render.
+     * This scene rendered by the bidirectional integrator with strategy (s, t) alone, or its merges alone
+     * (s = t = {@link #MERGES}), by its weight or unweighted ({@code BdptIntegrator}): what the tests and
+     * studies of its strategies render.
      */
     RenderScene withStrategy(int s, int t, boolean weighted) {
         return new RenderScene(this, camera, s, t, weighted);
     }
+
+    /** The strategy that stands for every merge of a bidirectional render ({@link #withStrategy}). */
+    static final int MERGES = -2;
 
     /** Compiles an immutable scene with the given settings. */
     public static RenderScene compile(Scene scene, RenderSettings settings) {

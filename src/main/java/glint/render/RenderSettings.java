@@ -9,10 +9,13 @@ package glint.render;
  * @param epsilon      base of the self-intersection offset, scaled by max(1, |p|)
  * @param glassFresnel how cook-torrance glass splits light between reflection and refraction
  * @param pruning      what happens to a ray whose path weight falls below {@code minWeight}
- * @param transport    the integrator: Whitted's or the path tracer
+ * @param transport    the integrator: Whitted's, the path tracer or the bidirectional one
+ * @param merging      whether the bidirectional integrator also merges camera vertices with light
+ *                     subpaths' (the default; without, it is unbiased and blind to light focused by
+ *                     glass and then seen through glass or in a mirror)
  */
 public record RenderSettings(Shading shading, int recursionMax, double minWeight, double epsilon,
-                             GlassFresnel glassFresnel, Pruning pruning, LightTransport transport) {
+                             GlassFresnel glassFresnel, Pruning pruning, LightTransport transport, boolean merging) {
 
     /** Glass reflectance: the exact Fresnel equations (the default) or Schlick's approximation. */
     public enum GlassFresnel { EXACT, SCHLICK }
@@ -26,18 +29,23 @@ public record RenderSettings(Shading shading, int recursionMax, double minWeight
     public enum Pruning { ROULETTE, CUTOFF }
 
     public RenderSettings(Shading shading, int recursionMax, double minWeight, double epsilon) {
-        this(shading, recursionMax, minWeight, epsilon, GlassFresnel.EXACT, Pruning.ROULETTE, LightTransport.WHITTED);
+        this(shading, recursionMax, minWeight, epsilon, GlassFresnel.EXACT, Pruning.ROULETTE, LightTransport.WHITTED,
+                true);
     }
 
     public RenderSettings withGlassFresnel(GlassFresnel fresnel) {
-        return new RenderSettings(shading, recursionMax, minWeight, epsilon, fresnel, pruning, transport);
+        return new RenderSettings(shading, recursionMax, minWeight, epsilon, fresnel, pruning, transport, merging);
     }
 
     public RenderSettings withPruning(Pruning mode) {
-        return new RenderSettings(shading, recursionMax, minWeight, epsilon, glassFresnel, mode, transport);
+        return new RenderSettings(shading, recursionMax, minWeight, epsilon, glassFresnel, mode, transport, merging);
     }
 
     public RenderSettings withTransport(LightTransport integrator) {
-        return new RenderSettings(shading, recursionMax, minWeight, epsilon, glassFresnel, pruning, integrator);
+        return new RenderSettings(shading, recursionMax, minWeight, epsilon, glassFresnel, pruning, integrator, merging);
+    }
+
+    public RenderSettings withMerging(boolean merges) {
+        return new RenderSettings(shading, recursionMax, minWeight, epsilon, glassFresnel, pruning, transport, merges);
     }
 }

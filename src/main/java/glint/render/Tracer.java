@@ -3,6 +3,7 @@ package glint.render;
 import glint.image.FrameBuffer;
 import java.lang.management.ManagementFactory;
 import java.lang.management.ThreadMXBean;
+import java.util.Arrays;
 import java.util.concurrent.CancellationException;
 import java.util.concurrent.ExecutorService;
 import java.util.concurrent.Executors;
@@ -28,6 +29,17 @@ public final class Tracer implements AutoCloseable {
     private final Phaser frameDone;
     /** Light the bidirectional integrator's paths bring to other pixels than their own, per frame. */
     private final Splats splats = new Splats();
+    /** The light subpaths of a bidirectional pass that camera paths merge with. */
+    private final LightVertices lightVertices = new LightVertices();
+    /** A bidirectional pass's own image and the sum of a frame's passes, per pixel and channel. */
+    private FrameBuffer passFrame;
+    private double[] passSum = new double[0];
+    /** What the workers do when started: the tiles of the frame, or a pass's light subpaths to merge with. */
+    private volatile boolean tracingLightPaths;
+    private final AtomicInteger nextChunk = new AtomicInteger();
+    private volatile int chunks;
+    /** The CPU time the thread that renders spent on the workers' behalf (the merge grid), in ns. */
+    private long ownCpuNanos;
     /** Per worker: the CPU time its thread spent rendering frames, in ns; written by it, read after a frame. */
     private final long[] workerCpuNanos;
     /** Reads the render threads' CPU clocks; null where the JVM cannot. */
@@ -96,7 +108,7 @@ public final class Tracer implements AutoCloseable {
         if (cpuClock == null) {
             return -1;
         }
-        long sum = 0;
+        long sum = ownCpuNanos;
         for (long nanos : workerCpuNanos) {
             sum += nanos;
         }
@@ -168,12 +180,28 @@ public final class Tracer implements AutoCloseable {
         nextTile.set(0);
         failure.set(null);
         tilesDone.set(0);
-        frameTiles = this.divider * this.divider;
-        tileStride = TileOrder.stride(frameTiles);
         boolean splatting = renderScene != null && renderScene.settings.transport() == LightTransport.BDPT;
+        boolean merging = splatting && renderScene.settings.merging();
+        frameTiles = this.divider * this.divider * (merging ? count : 1);
+        tileStride = TileOrder.stride(this.divider * this.divider);
         if (splatting) {
             splats.clear(target.width(), target.height());
         }
+        if (merging) {
+            renderMerging(target, first, count);
+        } else {
+            launch();
+        }
+        if (splatting) {
+            int traced = tracedPixels(target);
+            if (traced > 0) {
+                splats.addInto(target, 1.0 / count * ((double) (target.width() * target.height()) / traced));
+            }
+        }
+    }
+
+    /** Runs the workers on the tiles, or on the light subpaths, and waits for them. */
+    private void launch() {
         if (cancelled) {
             throw new CancellationException("the render was cancelled");
         }
@@ -188,10 +216,64 @@ public final class Tracer implements AutoCloseable {
         if (error != null) {
             throw new RenderException("a render worker failed: " + error, error);
         }
-        if (splatting) {
-            int traced = tracedPixels(target);
-            if (traced > 0) {
-                splats.addInto(target, 1.0 / count * ((double) (target.width() * target.height()) / traced));
+    }
+
+    /**
+     * A bidirectional frame with vertex merging, pass by pass: each pass's light subpaths traced and
+     * gridded, then its camera paths, which merge with them, into a pass image; the passes averaged into
+     * {@code target}'s traced pixels.
+     */
+    private void renderMerging(FrameBuffer target, int first, int count) {
+        if (tracedPixels(target) == 0) {
+            return; // no path starts, so no light subpath is wanted either
+        }
+        int w = target.width(), h = target.height();
+        if (passFrame == null || passFrame.width() != w || passFrame.height() != h) {
+            passFrame = new FrameBuffer(w, h);
+            passSum = new double[3 * w * h];
+        }
+        Arrays.fill(passSum, 0);
+        int paths = BdptIntegrator.mergePaths(w * h);
+        boolean[] mask = only;
+        float[] pass = passFrame.rgb();
+        try {
+            for (int k = 0; k < count; k++) {
+                int sample = first + k;
+                chunks = lightVertices.begin(paths);
+                nextChunk.set(0);
+                firstSample = sample;
+                sampleCount = 1;
+                tracingLightPaths = true;
+                launch();
+                long start = cpuClock == null ? 0 : cpuClock.getCurrentThreadCpuTime();
+                lightVertices.finish(workers[0].mergeRadius(scene, w, h, (long) frameIndex * samples + sample));
+                if (cpuClock != null) {
+                    ownCpuNanos += cpuClock.getCurrentThreadCpuTime() - start;
+                }
+                for (TracerWorker worker : workers) {
+                    worker.mergeWith(lightVertices);
+                }
+                tracingLightPaths = false;
+                frame = passFrame;
+                nextTile.set(0);
+                launch();
+                for (int i = 0; i < pass.length; i++) {
+                    if (mask == null || mask[i / 3]) {
+                        passSum[i] += pass[i];
+                    }
+                }
+            }
+        } finally {
+            tracingLightPaths = false;
+            frame = target;
+            for (TracerWorker worker : workers) {
+                worker.mergeWith(null);
+            }
+        }
+        float[] rgb = target.rgb();
+        for (int i = 0; i < rgb.length; i++) {
+            if (mask == null || mask[i / 3]) {
+                rgb[i] = FrameBuffer.storable(passSum[i] / count);
             }
         }
     }
@@ -212,6 +294,12 @@ public final class Tracer implements AutoCloseable {
         TracerWorker worker = workers[index];
         long cpuStart = cpuClock == null ? 0 : cpuClock.getCurrentThreadCpuTime();
         try {
+            if (tracingLightPaths) {
+                for (int c = nextChunk.getAndIncrement(); c < chunks && !cancelled; c = nextChunk.getAndIncrement()) {
+                    worker.traceLightPaths(scene, lightVertices, c, frameIndex, firstSample, samples);
+                }
+                return;
+            }
             int tiles = divider * divider;
             for (int tile = nextTile.getAndIncrement(); tile < tiles && !cancelled; tile = nextTile.getAndIncrement()) {
                 renderTile(worker, tile);

@@ -63,6 +63,28 @@ final class TracerWorker {
         }
     }
 
+    /**
+     * Traces the light subpaths of chunk c of {@code vertices} for pass (frame, sample) of {@code samples} of
+     * {@code scene}, for camera paths to merge with.
+     */
+    void traceLightPaths(RenderScene scene, LightVertices vertices, int c, int frameIndex, int sample, int samples) {
+        bdpt.prepare(scene);
+        bdpt.traceLightPaths(vertices.chunk(c), vertices.firstPath(c), vertices.pathsIn(c), frameIndex, sample,
+                samples, scene.settings.recursionMax());
+    }
+
+    /** The first pass's merge radius for a width x height image of {@code scene}, and that pass's. */
+    double mergeRadius(RenderScene scene, int width, int height, long pass) {
+        bdpt.prepare(scene);
+        return BdptIntegrator.mergeRadius(bdpt.weights.pixelWidthAtCentre(width, height), bdpt.weights.sceneRadius(),
+                pass);
+    }
+
+    /** The light subpaths the bidirectional integrator's camera vertices merge with from now on; null: none. */
+    void mergeWith(LightVertices vertices) {
+        bdpt.mergeWith(vertices);
+    }
+
     private Integrator integrator(LightTransport transport) {
         return switch (transport) {
             case WHITTED -> whitted;

@@ -21,6 +21,7 @@ public final class Lobe {
     public static final int TRANSMISSION = DIFFUSE_TRANSMISSION | GLOSSY_TRANSMISSION | SPECULAR_TRANSMISSION;
     /** Delta lobes: a mirror, smooth glass. No light sample can find their direction. */
     public static final int SPECULAR = SPECULAR_REFLECTION | SPECULAR_TRANSMISSION;
+    public static final int DIFFUSE = DIFFUSE_REFLECTION | DIFFUSE_TRANSMISSION;
     /** Lobes with a density, which f and the pdf describe and a light sample can find. */
     public static final int NON_DELTA = (REFLECTION | TRANSMISSION) & ~SPECULAR;
 

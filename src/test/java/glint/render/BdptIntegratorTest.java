@@ -12,8 +12,9 @@ import java.util.SplittableRandom;
 import org.junit.jupiter.api.Test;
 
 /**
- * The bidirectional integrator checked as Veach's and pbrt's are: the strategies, each weighted, sum to
- * the full estimate; on random paths the weights of all the strategies that can make a path sum to 1;
+ * The bidirectional integrator checked as Veach's and pbrt's are: the strategies and the merges, each
+ * weighted, sum to the full estimate; on random paths the weights of all the strategies that can make a
+ * path, joins and merges, sum to 1;
  * the white furnace is 1; light tracing alone (strategy t = 1) gives the direct light next-event
  * estimation (s = 1) gives; and on scenes without caustic paths bdpt and path agree within their noise
  * (a z-test over blocks of pixels, each block's noise measured over independent frames).
@@ -62,6 +63,10 @@ class BdptIntegratorTest {
                 }
             }
         }
+        float[] merges = render(scene.withStrategy(RenderScene.MERGES, RenderScene.MERGES, true), w, h, spp, 0).rgb();
+        for (int i = 0; i < sum.length; i++) {
+            sum[i] += merges[i];
+        }
         double total = 0;
         for (int i = 0; i < sum.length; i++) {
             float expected = full.rgb()[i];
@@ -88,6 +93,7 @@ class BdptIntegratorTest {
             Splats splats = new Splats();
             splats.clear(32, 24);
             bdpt.splatInto(splats);
+            bdpt.weights.merging(1 << 16, 0.1); // merges about as likely as joins
             TraversalStack stack = scene.aggregate.newStack();
             double[] ox = new double[1], oy = new double[1], oz = new double[1];
             double[] dx = new double[1], dy = new double[1], dz = new double[1];
@@ -180,6 +186,11 @@ class BdptIntegratorTest {
                 sum += weights.weight(s, t, camera, light, sampledLight, camera[0]);
             }
         }
+        for (int i = 1; i < n - 1; i++) { // the light subpath up to camera[i] merged there with the camera's
+            if (BdptWeights.merges(camera[i])) {
+                sum += weights.mergeWeight(n - i, i + 1, camera, light);
+            }
+        }
         return sum;
     }
 
@@ -194,6 +205,7 @@ class BdptIntegratorTest {
         to.delta = from.delta;
         to.deltaLight = from.deltaLight;
         to.connectible = from.connectible;
+        to.diffuse = from.diffuse;
     }
 
     /** A floor, matte and rough balls at random, a lamp and a sun with a size, a sky of random colour. */
