@@ -75,11 +75,15 @@ final class BdptIntegrator extends Integrator {
     }
 
     /**
-     * The merge radius of pass {@code pass} (0, 1, ...) where a pixel is {@code pixelWidth} wide at the scene's
-     * centre and the scene's sphere has radius {@code sceneRadius}.
+     * The merge radius of the first pass where a pixel is {@code pixelWidth} wide at the scene's centre and
+     * the scene's sphere has radius {@code sceneRadius}.
      */
-    static double mergeRadius(double pixelWidth, double sceneRadius, long pass) {
-        double first = Math.min(MERGE_PIXELS * pixelWidth, MOST_MERGE_RADIUS * sceneRadius);
+    static double firstMergeRadius(double pixelWidth, double sceneRadius) {
+        return Math.min(MERGE_PIXELS * pixelWidth, MOST_MERGE_RADIUS * sceneRadius);
+    }
+
+    /** The merge radius of pass {@code pass} (0, 1, ...) where the first pass's is {@code first}. */
+    static double mergeRadius(double first, long pass) {
         return first * Math.pow(pass + 1, (MERGE_ALPHA - 1) / 2);
     }
 

@@ -234,6 +234,7 @@ public final class Tracer implements AutoCloseable {
         }
         Arrays.fill(passSum, 0);
         int paths = BdptIntegrator.mergePaths(w * h);
+        double firstRadius = workers[0].firstMergeRadius(scene, w, h);
         boolean[] mask = only;
         float[] pass = passFrame.rgb();
         try {
@@ -246,7 +247,7 @@ public final class Tracer implements AutoCloseable {
                 tracingLightPaths = true;
                 launch();
                 long start = cpuClock == null ? 0 : cpuClock.getCurrentThreadCpuTime();
-                lightVertices.finish(workers[0].mergeRadius(scene, w, h, (long) frameIndex * samples + sample));
+                lightVertices.finish(BdptIntegrator.mergeRadius(firstRadius, (long) frameIndex * samples + sample));
                 if (cpuClock != null) {
                     ownCpuNanos += cpuClock.getCurrentThreadCpuTime() - start;
                 }

@@ -73,11 +73,11 @@ final class TracerWorker {
                 samples, scene.settings.recursionMax());
     }
 
-    /** The first pass's merge radius for a width x height image of {@code scene}, and that pass's. */
-    double mergeRadius(RenderScene scene, int width, int height, long pass) {
+    /** The first pass's merge radius for a width x height image of {@code scene}. */
+    double firstMergeRadius(RenderScene scene, int width, int height) {
         bdpt.prepare(scene);
-        return BdptIntegrator.mergeRadius(bdpt.weights.pixelWidthAtCentre(width, height), bdpt.weights.sceneRadius(),
-                pass);
+        return BdptIntegrator.firstMergeRadius(bdpt.weights.pixelWidthAtCentre(width, height),
+                bdpt.weights.sceneRadius());
     }
 
     /** The light subpaths the bidirectional integrator's camera vertices merge with from now on; null: none. */
