@@ -48,6 +48,10 @@ final class WindowLauncher {
             checkInputs(scenePath, config, flags); // bad input says so (status 2), display or not
             return noDisplay(err, "no display available for the window");
         }
+        if (Runtime.getRuntime().maxMemory() < LEAST_WINDOW_HEAP) { // it would run out, or crawl on collecting
+            err.println(Main.OUT_OF_MEMORY);
+            return Main.FAILURE;
+        }
         GlintWindow window;
         try {
             window = GlintWindow.open(config, new SceneSource(scenePath, reload, flags, configFile),
@@ -80,6 +84,13 @@ final class WindowLauncher {
             }
         }
     }
+
+    /**
+     * The least Java heap (-Xmx) the window opens in. Measured on a 320 x 240 window of a ball on a floor:
+     * at -Xmx12m it ran out of memory before or during its first frames in 3 of 3 starts (and at -Xmx8m
+     * one start in 4 never ended, the collector running on and on), at -Xmx16m it ran in 3 of 3.
+     */
+    static final long LEAST_WINDOW_HEAP = 16L << 20;
 
     /** Whether a line printed to {@code out} was lost. */
     private static boolean printingFailed(PrintWriter out) {
