@@ -344,14 +344,13 @@ final class BdptWeights {
      * Where {@code end} sends the path back, with density {@code pdf} per solid angle, through the chain
      * of delta vertices before it on its subpath {@code path}, whose last is {@code path[last]}: the
      * density with which it reaches the chain's start, set as the start's reverse density
-     * ({@link #throughChain}). Returns the start's index.
+     * ({@link #throughChain}).
      */
-    int backThroughChain(double pdf, BdptVertex end, BdptVertex[] path, int last) {
+    void backThroughChain(double pdf, BdptVertex end, BdptVertex[] path, int last) {
         int start = chainStart(path, last);
         BdptVertex first = path[start], second = path[start + 1];
         direction(end, path[last]);
         first.pdfRev = throughChain(pdf, end, w[0], w[1], w[2], first, -second.woX, -second.woY, -second.woZ);
-        return start;
     }
 
     /** The index of the start of the chain of delta vertices that ends at {@code path[last]}. */
