@@ -29,8 +29,8 @@ import org.knowm.xchart.XYChart;
  * own image at 4096 samples, over {@link #FALL_FRAMES} frames (no firefly plateau);
  * <li>sky-and-sun, whose reference lacks the caustic of its glass ball under the sun: by how much.
  * </ol>
- * Usage: {@code java -cp target/benchmarks.jar glint.study.BdptStudy [--docs | --caustic]}; --docs writes the
- * chart to docs/images, --caustic runs the second part alone. Depth 64, 2 render threads, cook-torrance; render CPU is the render threads' CPU time.
+ * Usage: {@code java -cp target/benchmarks.jar glint.study.BdptStudy [--docs | --caustic | --fall]}; --docs writes the
+ * chart to docs/images, --caustic runs the second part alone, --fall the third. Depth 64, 2 render threads, cook-torrance; render CPU is the render threads' CPU time.
  */
 public final class BdptStudy {
 
@@ -69,6 +69,10 @@ public final class BdptStudy {
             return;
         }
         Locale.setDefault(Locale.ROOT);
+        if (List.of(args).contains("--fall")) { // that check alone
+            System.out.print(fallsWithSamples("default") + fallsWithSamples("metals"));
+            return;
+        }
         List<XYChart> charts = new ArrayList<>();
         StringBuilder out = new StringBuilder();
         out.append("| scene | method | samples | render CPU | relMSE / path's at that CPU | FLIP / path's |\n")

@@ -5,6 +5,7 @@ import glint.shading.Bsdf;
 import glint.shading.BsdfSample;
 import glint.shading.LightRay;
 import glint.shading.LightSample;
+import glint.shading.LightTargets;
 import glint.shading.Lobe;
 import glint.shading.Lights;
 import glint.shading.Rgb;
@@ -33,7 +34,7 @@ import glint.shading.Surface;
  */
 final class BdptIntegrator extends Integrator {
 
-    /** Random dimensions of the light subpath: which light, its ray (two pairs), then 3 a vertex. */
+    /** Random dimensions of the light subpath: which light, its ray (two pairs), its target, then 3 a vertex. */
     private static final int LIGHT_PATH = 1 << 22;
     /** Random dimensions of the light samples of s = 1: a pair for each light at each camera vertex. */
     private static final int LIGHT_SAMPLE = 2 << 22;
@@ -245,11 +246,15 @@ final class BdptIntegrator extends Integrator {
         random.pair(dimensions + 1);
         double u1 = random.u1, u2 = random.u2;
         random.pair(dimensions + 2);
-        all.leaving(k, weights.centreX, weights.centreY, weights.centreZ, weights.radius, u1, u2, random.u1,
-                random.u2, lightRay);
+        double u3 = random.u1, u4 = random.u2;
+        all.leaving(k, weights.centreX, weights.centreY, weights.centreZ, weights.radius, u1, u2, u3, u4, lightRay);
         LightRay ray = lightRay;
-        BdptVertex origin = light[0];
         boolean far = all.infinitelyFar(k);
+        int target = weights.targets.choose(random.single(dimensions + 3));
+        random.pair(dimensions + 4);
+        // a far light's first hit is found with the density of the point of its disc
+        double pdfDirection = aimed(k, far, target, random.u1, random.u2, ray);
+        BdptVertex origin = light[0];
         origin.kind = far ? BdptVertex.FAR : BdptVertex.LIGHT;
         origin.light = k;
         origin.setPoint(ray.originX, ray.originY, ray.originZ);
@@ -259,14 +264,40 @@ final class BdptIntegrator extends Integrator {
         origin.delta = false;
         origin.connectible = false;
         origin.pdfFwd = far ? weights.farDensity(-ray.dirX, -ray.dirY, -ray.dirZ) : chance * ray.pdfOrigin;
-        // a far light's first hit is found with the density of the point of its disc
-        double pdfDirection = far ? ray.pdfOrigin : ray.pdfDirection;
         if (!(ray.pdfOrigin > 0 && ray.pdfDirection > 0)) {
             return 1;
         }
+        double share = (far ? ray.pdfOrigin : ray.pdfDirection) / pdfDirection / chance;
         return walk(light, 1, most, ray.originX, ray.originY, ray.originZ, ray.dirX, ray.dirY, ray.dirZ,
-                pdfDirection, ray.fluxR / chance, ray.fluxG / chance, ray.fluxB / chance, true, dimensions + 3, -1,
+                pdfDirection, ray.fluxR * share, ray.fluxG * share, ray.fluxB * share, true, dimensions + 5, -1,
                 far || k >= lights.count() ? Hit.NONE : scene.bodyOf[k], Hit.NONE);
+    }
+
+    /**
+     * Turns the ray leaving light k towards {@code target} ({@link LightTargets}, from the numbers u1 and
+     * u2), where that is not -1: a light with a position sends it into the target's cone, where its
+     * origin lies outside the target, and sets its own density of the new direction; a light at infinity
+     * moves its origin into the target's shadow on its disc, whose own density is the same everywhere.
+     * Returns the density of the mixture of the light's own rays and the aimed ones: of the direction, or
+     * of the disc's point. A light's flux is the same for every direction and point it leaves by
+     * ({@link glint.shading.LightSampler#leaving}), so the ray's flux times its own density over the
+     * mixture's is what the chosen ray carries.
+     */
+    private double aimed(int k, boolean far, int target, double u1, double u2, LightRay ray) {
+        LightTargets targets = weights.targets;
+        if (far) {
+            if (target >= 0) {
+                targets.aimAcross(target, weights.centreX, weights.centreY, weights.centreZ, weights.radius, u1, u2,
+                        ray);
+            }
+            return targets.pdfAcross(ray.originX, ray.originY, ray.originZ, ray.dirX, ray.dirY, ray.dirZ,
+                    ray.pdfOrigin);
+        }
+        if (target >= 0 && targets.aim(target, ray.originX, ray.originY, ray.originZ, u1, u2, ray)) {
+            scene.lightsAndSky.leavingPdf(k, ray.originX, ray.originY, ray.originZ, ray.dirX, ray.dirY, ray.dirZ,
+                    weights.radius, ray);
+        }
+        return targets.pdf(ray.originX, ray.originY, ray.originZ, ray.dirX, ray.dirY, ray.dirZ, ray.pdfDirection);
     }
 
     /**

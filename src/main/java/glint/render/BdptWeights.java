@@ -4,6 +4,7 @@ import glint.geometry.Primitives;
 import glint.shading.Bsdf;
 import glint.shading.LightRay;
 import glint.shading.LightSample;
+import glint.shading.LightTargets;
 import glint.shading.Lights;
 import glint.shading.Materials;
 import glint.shading.Rgb;
@@ -37,6 +38,8 @@ final class BdptWeights {
     private RenderScene scene;
     private Lights lights;
     private Materials materials;
+    /** What light subpaths from a light with a position aim at ({@link LightTargets}). */
+    LightTargets targets = LightTargets.none();
     private int width, height;
     /** Per light of {@link RenderScene#lightsAndSky}: the chance it is chosen, and the sums of the chances. */
     private double[] chance = new double[0], cumulative = new double[0];
@@ -60,6 +63,7 @@ final class BdptWeights {
         scene = renderScene;
         lights = renderScene.lightsAndSky;
         materials = renderScene.materials;
+        targets = renderScene.lightTargets;
         onlyS = renderScene.strategyS;
         onlyT = renderScene.strategyT;
         weighted = renderScene.strategyWeighted;
@@ -308,21 +312,23 @@ final class BdptWeights {
             return pdfLight(v, next);
         }
         direction(v, next);
-        return toArea(pdfToward(v, prev, w[0], w[1], w[2]), v, next);
+        return toArea(pdfToward(v, prev, next, w[0], w[1], w[2]), v, next);
     }
 
     /**
      * The density per solid angle with which vertex v, reached from {@code prev} (none for a light or the
-     * camera), sends the path along unit w; from a far light, the density of its disc's point.
+     * camera), sends the path along unit w to {@code next}; from a far light, the density of its disc's
+     * point (for the ray through next: {@link LightTargets#pdfAcross}).
      */
-    double pdfToward(BdptVertex v, BdptVertex prev, double wx, double wy, double wz) {
+    double pdfToward(BdptVertex v, BdptVertex prev, BdptVertex next, double wx, double wy, double wz) {
         Surface c = v.surface;
         switch (v.kind) {
             case BdptVertex.FAR:
-                return 1 / (Math.PI * radius * radius);
+                Surface n = next.surface;
+                return targets.pdfAcross(n.px, n.py, n.pz, wx, wy, wz, 1 / (Math.PI * radius * radius));
             case BdptVertex.LIGHT:
                 lights.leavingPdf(v.light, c.px, c.py, c.pz, wx, wy, wz, radius, leaving);
-                return leaving.pdfDirection;
+                return targets.pdf(c.px, c.py, c.pz, wx, wy, wz, leaving.pdfDirection);
             case BdptVertex.CAMERA:
                 return scene.camera.directionPdf(c.px, c.py, c.pz, wx, wy, wz, width, height);
             default:
@@ -337,7 +343,7 @@ final class BdptWeights {
             return 0;
         }
         direction(v, to);
-        return toArea(pdfToward(v, null, w[0], w[1], w[2]), v, to);
+        return toArea(pdfToward(v, null, to, w[0], w[1], w[2]), v, to);
     }
 
     /**
@@ -522,7 +528,7 @@ final class BdptWeights {
         back.pdfRev = PAST_DELTA;
         save(path[chainStart(path, last)]);
         direction(joined, back);
-        backThroughChain(pdfToward(joined, from, w[0], w[1], w[2]), joined, path, last);
+        backThroughChain(pdfToward(joined, from, back, w[0], w[1], w[2]), joined, path, last);
     }
 
     /** Vertices whose reverse density a weight changed for the while, and their own, to put back. */

@@ -16,7 +16,9 @@ import glint.scene.Scene;
 import glint.scene.SceneObject;
 import glint.scene.Shape;
 import glint.shading.LampBody;
+import glint.shading.LightTargets;
 import glint.shading.Lights;
+import glint.shading.Lobe;
 import glint.shading.Materials;
 import glint.shading.SkySampler;
 import java.util.ArrayList;
@@ -72,6 +74,8 @@ public final class RenderScene {
      */
     final int strategyS, strategyT;
     final boolean strategyWeighted;
+    /** The balls around the objects that focus light, which bidirectional light subpaths aim at. */
+    final LightTargets lightTargets;
 
     private RenderScene(Scene scene, RenderSettings settings, Registry registry,
                         Function<Primitives, Aggregate> aggregateOf, boolean lightCells) {
@@ -153,9 +157,27 @@ public final class RenderScene {
         ambientG = scene.ambient().y();
         ambientB = scene.ambient().z();
         camera = CameraModel.of(scene.camera());
+        lightTargets = lightTargets(primitives, materialOf, lightOf, materials);
         strategyS = -1;
         strategyT = -1;
         strategyWeighted = true;
+    }
+
+    /**
+     * The balls around the bounded primitives whose material has no diffuse lobe (glass and metal: what
+     * focuses light into caustics), lights' bodies left out.
+     */
+    private static LightTargets lightTargets(Primitives primitives, int[] materialOf, int[] lightOf,
+                                             Materials materials) {
+        double[] balls = new double[4 * primitives.count()], ball = new double[4];
+        int n = 0;
+        for (int p = 0; p < primitives.count(); p++) {
+            if (primitives.bounded(p) && lightOf[p] < 0 && (materials.lobes(materialOf[p]) & Lobe.DIFFUSE) == 0) {
+                primitives.kind(primitives.kindOf(p)).boundingBall(primitives.indexOf(p), ball);
+                System.arraycopy(ball, 0, balls, 4 * n++, 4);
+            }
+        }
+        return LightTargets.of(Arrays.copyOf(balls, 4 * n));
     }
 
     /** The same compiled scene seen from another camera: shares everything else. */
@@ -183,6 +205,7 @@ public final class RenderScene {
         ambientG = base.ambientG;
         ambientB = base.ambientB;
         this.camera = camera;
+        lightTargets = base.lightTargets;
         this.strategyS = strategyS;
         this.strategyT = strategyT;
         this.strategyWeighted = weighted;

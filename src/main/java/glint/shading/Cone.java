@@ -55,17 +55,30 @@ final class Cone {
      */
     static double sample(double ax, double ay, double az, double oneMinusCos, double u1, double u2,
                          LightSample out) {
+        double[] w = out.scratch;
+        double sin2 = sample(ax, ay, az, oneMinusCos, u1, u2, out.frame, w);
+        out.dirX = w[0];
+        out.dirY = w[1];
+        out.dirZ = w[2];
+        return sin2;
+    }
+
+    /**
+     * As {@link #sample(double, double, double, double, double, double, LightSample)}, the direction into
+     * {@code out}[0..2], with {@code frame} as scratch.
+     */
+    static double sample(double ax, double ay, double az, double oneMinusCos, double u1, double u2,
+                         ShadingFrame frame, double[] out) {
         double down = u1 * oneMinusCos; // 1 - cos theta
         double cos = 1 - down;
         double sin2 = down * (2 - down);
         double sin = Math.sqrt(sin2);
         double phi = 2 * Math.PI * u2;
         double x = sin * Math.cos(phi), y = sin * Math.sin(phi);
-        ShadingFrame frame = out.frame;
         frame.set(ax, ay, az);
-        out.dirX = frame.worldX(x, y, cos);
-        out.dirY = frame.worldY(x, y, cos);
-        out.dirZ = frame.worldZ(x, y, cos);
+        out[0] = frame.worldX(x, y, cos);
+        out[1] = frame.worldY(x, y, cos);
+        out[2] = frame.worldZ(x, y, cos);
         return sin2;
     }
 }

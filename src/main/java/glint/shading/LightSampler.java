@@ -38,8 +38,10 @@ public interface LightSampler {
     /**
      * Light leaving the light, sampled by the uniform numbers u1 to u4, into {@code out}: its origin,
      * direction, flux and densities ({@link LightRay}). A light at infinity sends its rays across a
-     * disc of radius {@code sceneRadius} around the scene's centre c, facing them, from outside it.
-     * Over many samples the flux's mean channel is {@link #power}.
+     * disc of radius {@code sceneRadius} around the scene's centre c, facing them, from outside it,
+     * from a point uniform over the disc. The densities are in proportion to the light sent, so the flux
+     * is the same for every ray the light may leave by (what lets {@link LightTargets} aim rays
+     * elsewhere). Over many samples the flux's mean channel is {@link #power}.
      */
     void leaving(double[] data, int at, double cx, double cy, double cz, double sceneRadius, double u1, double u2,
                  double u3, double u4, LightRay out);

@@ -177,7 +177,8 @@ class LightTypeContractTest {
     }
 
     /**
-     * Light leaving it: the flux its rays stand for averages to its power, and each ray, followed back
+     * Light leaving it: the flux its rays stand for is the same for each, as LightTargets needs, and
+     * averages to its power, and each ray, followed back
      * from a point on it, comes from the light as its sample from that point sees it (the direction a
      * delta light's sample gives; a direction of non-zero density for a light with a size).
      */
@@ -189,11 +190,14 @@ class LightTypeContractTest {
         LightRay ray = new LightRay();
         LightSample seen = new LightSample();
         int n = 100_000;
-        double flux = 0;
+        double flux = 0, first = Double.NaN;
         for (int k = 0; k < n; k++) {
             lights.leaving(0, 0, 0, 0, SPHERE, random.nextDouble(), random.nextDouble(), random.nextDouble(),
                     random.nextDouble(), ray);
-            flux += (ray.fluxR + ray.fluxG + ray.fluxB) / 3;
+            double rayFlux = (ray.fluxR + ray.fluxG + ray.fluxB) / 3;
+            first = k == 0 ? rayFlux : first;
+            assertEquals(first, rayFlux, 1e-12 * first, c + ": every ray leaving it carries the same flux");
+            flux += rayFlux;
             assertEquals(1, ray.dirX * ray.dirX + ray.dirY * ray.dirY + ray.dirZ * ray.dirZ, 1e-12);
             assertTrue(ray.pdfOrigin > 0 && ray.pdfDirection > 0);
             if (k % 100 == 0) {

@@ -157,7 +157,7 @@ class BdptIntegratorTest {
                 uz = -y0.farZ;
                 inv = 1;
             }
-            double pdf = weights.pdfToward(y0, null, ux * inv, uy * inv, uz * inv);
+            double pdf = weights.pdfToward(y0, null, first, ux * inv, uy * inv, uz * inv);
             BdptVertex last = camera[n - chainEnd]; // the chain's last delta vertex, on the camera's side
             double ix = last.surface.px - end.surface.px, iy = last.surface.py - end.surface.py;
             double iz = last.surface.pz - end.surface.pz;
