@@ -40,14 +40,12 @@ final class BdptIntegrator extends Integrator {
     private static final int LIGHT_SAMPLE = 2 << 22;
     /** Random dimensions of the lens points of t = 1, one pair for each light vertex. */
     private static final int LENS_SAMPLE = 3 << 22;
-    /** Random dimensions of the light subpaths merged with: as a light subpath's, from here. */
-    private static final int MERGE_PATH = 4 << 22;
     /** Random dimensions a vertex of a subpath uses: the direction (a pair), the lobe and the roulette. */
     private static final int DIMENSIONS_PER_VERTEX = 3;
 
     /**
      * The light subpaths a pass traces for camera paths to merge with: one a pixel, as Georgiev et al.
-     * (2012) do, up to this many, which bounds the memory they take (about 40 MB).
+     * (2012) do, up to this many, which bounds the memory they take (about 45 MB).
      */
     static final int MOST_MERGE_PATHS = 1 << 16;
     /**
@@ -104,8 +102,13 @@ final class BdptIntegrator extends Integrator {
     BdptVertex[] camera = new BdptVertex[0], light = new BdptVertex[0];
     /** How many vertices the last camera ray's subpaths had: what tests read its vertices by. */
     int cameraVertices, lightVertices;
-    /** The light subpaths of the pass that camera vertices merge with; null: no merging. */
-    private LightVertices merged;
+    /**
+     * The light subpaths of the pass: each camera path joins one of them, and merges with all of them
+     * within their radius where that is not 0.
+     */
+    private LightVertices traced;
+    /** The pixel whose camera path is being traced: the light subpath it joins is that one of the pass's. */
+    private int pixel;
     /** Each merge's light over the paths merged with times the area of the merge disc. */
     private double mergeScale;
     /** A light subpath merged with, loaded, and the grid's buckets near a camera vertex. */
@@ -142,33 +145,44 @@ final class BdptIntegrator extends Integrator {
     }
 
     /**
-     * Merges camera vertices from now on with the light subpaths of {@code vertices} within their radius
-     * (vertex merging); null: none.
+     * The pass's light subpaths, from now on: traced into {@code vertices} ({@link #traceLightPaths}), and
+     * once it is finished, joined by camera paths, which merge with them within their radius where that
+     * is not 0 (vertex merging). The frame's splats are set ({@link #splatInto}).
      */
-    void mergeWith(LightVertices vertices) {
-        merged = vertices;
-        double r = vertices == null ? 0 : vertices.radius();
-        int paths = vertices == null ? 0 : vertices.paths();
-        weights.merging(paths, r);
-        mergeScale = paths > 0 ? 1 / (paths * Math.PI * r * r) : 0;
+    void pass(LightVertices vertices) {
+        traced = vertices;
+        double r = vertices.radius();
+        int paths = vertices.paths();
+        weights.merging(r > 0 ? paths : 0, r);
+        weights.lightTracing((double) paths / ((double) width * height));
+        mergeScale = r > 0 ? 1 / (paths * Math.PI * r * r) : 0;
     }
 
     /**
      * Traces light subpaths [first, first + count) of pass (frame, sample) of {@code samples} into
-     * {@code chunk}, for camera paths to merge with, with {@code hitsLeft} surface hits as a camera ray's.
+     * {@code chunk}, for camera paths to join and merge with, with {@code hitsLeft} surface hits as a camera
+     * ray's, and adds each one's light tracing (t = 1) to the splats: light subpath p uses pixel p's
+     * random numbers, and is the one pixel p's camera path joins.
      */
     void traceLightPaths(LightVertices.Chunk chunk, int first, int count, int frameIndex, int sample, int samples,
                          int hitsLeft) {
         chunk.clear();
         for (int p = first; p < first + count; p++) {
             random.begin(p, frameIndex, sample, samples);
-            chunk.add(light, lightSubpath(hitsLeft + 1, MERGE_PATH));
+            int n = lightSubpath(hitsLeft + 1, LIGHT_PATH);
+            chunk.add(light, n);
+            for (int s = 2; s <= n && s - 1 <= hitsLeft; s++) {
+                if (weights.chosen(s, 1)) {
+                    splat(s);
+                }
+            }
         }
     }
 
     @Override
     void beginPath(int pixelIndex, int frameIndex, int sample, int samples) {
         random.begin(pixelIndex, frameIndex, sample, samples);
+        pixel = pixelIndex;
     }
 
     @Override
@@ -192,15 +206,11 @@ final class BdptIntegrator extends Integrator {
         }
         cameraVertices = walk(camera, 1, hitsLeft + 2, ox, oy, oz, dx, dy, dz, pdfDirection, 1, 1, 1,
                 false, 0, primitive != Hit.NONE ? 1 : 0, Hit.NONE, Hit.NONE);
-        lightVertices = lightSubpath(hitsLeft + 1, LIGHT_PATH);
+        lightVertices = traced.loadPathNumber(pixel % traced.paths(), light);
         double r = 0, g = 0, b = 0;
-        for (int tv = 1; tv <= cameraVertices; tv++) {
+        for (int tv = 2; tv <= cameraVertices; tv++) { // tv = 1, light tracing, is the light subpath's own
             for (int s = 0; s <= lightVertices && s + tv - 2 <= hitsLeft; s++) {
-                if (s + tv < 2 || s == 1 && tv == 1 || !weights.chosen(s, tv)) {
-                    continue;
-                }
-                if (tv == 1) {
-                    splat(s);
+                if (!weights.chosen(s, tv)) {
                     continue;
                 }
                 if (s == 1) {
@@ -215,7 +225,7 @@ final class BdptIntegrator extends Integrator {
                 }
             }
         }
-        if (merged != null && weights.mergesChosen()) {
+        if (traced.radius() > 0 && weights.mergesChosen()) {
             for (int tv = 2; tv <= cameraVertices; tv++) {
                 merge(tv, hitsLeft);
                 r += f2.r;
@@ -571,7 +581,7 @@ final class BdptIntegrator extends Integrator {
         BdptVertex pt = camera[tv - 1];
         if (pt.kind == BdptVertex.SURFACE && pt.diffuse) {
             Surface a = pt.surface;
-            LightVertices lv = merged;
+            LightVertices lv = traced;
             double radius2 = lv.radius() * lv.radius();
             for (int k = 0, n = lv.bucketsNear(a.px, a.py, a.pz, near); k < n; k++) {
                 for (int i = lv.bucketFrom(near[k]), end = lv.bucketTo(near[k]); i < end; i++) {

@@ -52,6 +52,8 @@ final class BdptWeights {
      * merge disc; 0 without merging.
      */
     private double eta;
+    /** The light subpaths a pass traces over its camera paths: how much denser light tracing is than 1 a path. */
+    private double lightTracing = 1;
 
     private final LightRay leaving = new LightRay();
     private final Surface turned = new Surface();
@@ -96,6 +98,14 @@ final class BdptWeights {
     /** Merging with {@code paths} light subpaths within {@code radius}; 0 paths: none. */
     void merging(int paths, double radius) {
         eta = paths * Math.PI * radius * radius;
+    }
+
+    /**
+     * Light tracing (t = 1) from {@code share} light subpaths a camera path (fewer than one where a frame
+     * has more pixels than a pass traces light subpaths): its density counts that many times.
+     */
+    void lightTracing(double share) {
+        lightTracing = share;
     }
 
     /** The image size the camera's densities are of. */
@@ -553,16 +563,18 @@ final class BdptWeights {
      * The sum over every strategy but (s, t) of its density over (s, t)'s, squared (the power heuristic),
      * the joined vertices' densities set: each join, each merge where merging is on ({@link #eta}).
      * Next-event estimation's light end is denser by q: its strategy's term counts q^2 more, and every
-     * other term q^2 less where next-event estimation is the strategy weighed.
+     * other term q^2 less where next-event estimation is the strategy weighed; light tracing's camera end
+     * likewise by {@link #lightTracing}.
      */
     private double otherStrategies(int s, int t, BdptVertex[] camera, BdptVertex[] light, BdptVertex qs, double q) {
-        double nextEvent = q * q, others = s == 1 ? 1 / nextEvent : 1;
+        double tracing = lightTracing * lightTracing, weighed = t == 1 ? 1 / tracing : 1;
+        double nextEvent = q * q * weighed, others = (s == 1 ? 1 / (q * q) : 1) * weighed;
         double sum = 0, ratio = 1;
         for (int i = t - 1; i > 0; i--) {
             BdptVertex v = camera[i];
             ratio *= v.pdfRev / nonZero(v.pdfFwd);
             if (!v.delta && !camera[i - 1].delta) {
-                sum += ratio * ratio * (s + t - i == 1 ? nextEvent : others);
+                sum += ratio * ratio * (s + t - i == 1 ? nextEvent : others) * (i == 1 ? tracing : 1);
             }
             if (eta > 0 && merges(v)) { // both ends reach v: the camera's density of it is the chance to merge
                 double m = ratio * v.pdfFwd * eta;

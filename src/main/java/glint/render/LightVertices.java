@@ -17,11 +17,13 @@ final class LightVertices {
     static final int CHUNK_PATHS = 256;
 
     // a vertex's numbers, in order: its point, normal, the direction back along its path, its far
-    // light's direction, the path's throughput, its densities and its surface's cosine
+    // light's direction, the path's throughput, its densities, its surface's cosine and the offset of
+    // rays leaving it
     private static final int PX = 0, NX = 3, WO = 6, FAR = 9, BETA = 12, PDF_FWD = 15, PDF_REV = 16, COS = 17;
-    private static final int DOUBLES = 18;
-    // and its kind, light, material and flags
-    private static final int KIND = 0, LIGHT = 1, MATERIAL = 2, FLAGS = 3, INTS = 4;
+    private static final int OFFSET = 18, DOUBLES = 19;
+    // and its kind, light, material, flags, and the primitives rays leaving it skip and travel inside
+    private static final int KIND = 0, LIGHT = 1, MATERIAL = 2, FLAGS = 3, SKIP_NEAR = 4, SKIP_FAR = 5;
+    private static final int INSIDE_NEAR = 6, INSIDE_FAR = 7, INTS = 8;
     private static final int DELTA = 1, DELTA_LIGHT = 2, CONNECTIBLE = 4, FRONT = 8, DIFFUSE = 16;
 
     /** One chunk's paths: their vertices one after the other, and each path's vertex count. */
@@ -72,11 +74,16 @@ final class LightVertices {
             d[o + PDF_FWD] = v.pdfFwd;
             d[o + PDF_REV] = v.pdfRev;
             d[o + COS] = s.cosIncident;
+            d[o + OFFSET] = s.offset;
             i[q + KIND] = v.kind;
             i[q + LIGHT] = v.light;
             i[q + MATERIAL] = s.material;
             i[q + FLAGS] = (v.delta ? DELTA : 0) | (v.deltaLight ? DELTA_LIGHT : 0) | (v.connectible ? CONNECTIBLE : 0)
                     | (s.front ? FRONT : 0) | (v.diffuse ? DIFFUSE : 0);
+            i[q + SKIP_NEAR] = s.skipNear;
+            i[q + SKIP_FAR] = s.skipFar;
+            i[q + INSIDE_NEAR] = s.insideNear;
+            i[q + INSIDE_FAR] = s.insideFar;
         }
     }
 
@@ -87,6 +94,8 @@ final class LightVertices {
     private int[] ints = new int[0];
     /** Per vertex: the index of its path's first vertex. */
     private int[] pathStart = new int[0];
+    /** Per path: the index of its first vertex, and (one past the last path) the vertex count. */
+    private int[] firstVertex = new int[1];
     private int vertices, paths;
     /** The vertices a camera vertex can merge with, in order, and the grid's buckets of them. */
     private int[] mergeable = new int[0];
@@ -96,9 +105,14 @@ final class LightVertices {
     private int buckets = 1;
     private double radius, cellSize;
 
-    /** Makes ready for {@code paths} light subpaths in chunks; returns the chunk count. */
-    int begin(int pathCount) {
+    /**
+     * Makes ready for {@code paths} light subpaths in chunks, merged with within {@code mergeRadius} (0: not
+     * merged with); returns the chunk count.
+     */
+    int begin(int pathCount, double mergeRadius) {
         paths = pathCount;
+        radius = mergeRadius;
+        cellSize = 2 * mergeRadius;
         chunkCount = (pathCount + CHUNK_PATHS - 1) / CHUNK_PATHS;
         if (chunks.length < chunkCount) {
             Chunk[] more = Arrays.copyOf(chunks, chunkCount);
@@ -129,12 +143,10 @@ final class LightVertices {
     }
 
     /**
-     * Joins the chunks, traced, in order and grids the vertices that can merge with cells of twice
-     * {@code mergeRadius}.
+     * Joins the chunks, traced, in order and, where they are merged with, grids the vertices that can merge
+     * with cells of twice the merge radius.
      */
-    void finish(double mergeRadius) {
-        radius = mergeRadius;
-        cellSize = 2 * mergeRadius;
+    void finish() {
         vertices = 0;
         for (int c = 0; c < chunkCount; c++) {
             vertices += chunks[c].vertices;
@@ -146,13 +158,17 @@ final class LightVertices {
             mergeable = new int[vertices];
             bucketed = new int[vertices];
         }
-        int at = 0, count = 0;
+        if (firstVertex.length < paths + 1) {
+            firstVertex = new int[paths + 1];
+        }
+        int at = 0, count = 0, path = 0;
         for (int c = 0; c < chunkCount; c++) {
             Chunk chunk = chunks[c];
             System.arraycopy(chunk.d, 0, d, at * DOUBLES, chunk.vertices * DOUBLES);
             System.arraycopy(chunk.i, 0, ints, at * INTS, chunk.vertices * INTS);
             for (int p = 0, v = at; p < chunk.paths; p++) {
                 int n = chunk.pathLength[p];
+                firstVertex[path++] = v;
                 for (int k = 0; k < n; k++) {
                     pathStart[v + k] = v;
                     int flags = ints[(v + k) * INTS + FLAGS];
@@ -164,7 +180,8 @@ final class LightVertices {
             }
             at += chunk.vertices;
         }
-        grid(count);
+        firstVertex[path] = vertices;
+        grid(radius > 0 ? count : 0);
     }
 
     /** Counts the mergeable vertices into buckets by their cell, in their order. */
@@ -259,6 +276,15 @@ final class LightVertices {
         return v - pathStart[v];
     }
 
+    /** Loads light subpath p's vertices into path[0 ..]; returns their count. */
+    int loadPathNumber(int p, BdptVertex[] path) {
+        int first = firstVertex[p], n = firstVertex[p + 1] - first;
+        for (int k = 0; k < n; k++) {
+            load(first + k, path[k]);
+        }
+        return n;
+    }
+
     /** Loads vertex v and the ones before it on its path into path[0 .. its index]. */
     void loadPath(int v, BdptVertex[] path) {
         int first = pathStart[v];
@@ -297,5 +323,10 @@ final class LightVertices {
         out.connectible = (flags & CONNECTIBLE) != 0;
         out.diffuse = (flags & DIFFUSE) != 0;
         s.front = (flags & FRONT) != 0;
+        s.offset = d[o + OFFSET];
+        s.skipNear = ints[q + SKIP_NEAR];
+        s.skipFar = ints[q + SKIP_FAR];
+        s.insideNear = ints[q + INSIDE_NEAR];
+        s.insideFar = ints[q + INSIDE_FAR];
     }
 }

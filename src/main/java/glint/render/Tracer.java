@@ -181,22 +181,19 @@ public final class Tracer implements AutoCloseable {
         failure.set(null);
         tilesDone.set(0);
         boolean splatting = renderScene != null && renderScene.settings.transport() == LightTransport.BDPT;
-        boolean merging = splatting && renderScene.settings.merging();
-        frameTiles = this.divider * this.divider * (merging ? count : 1);
+        frameTiles = this.divider * this.divider * (splatting ? count : 1);
         tileStride = TileOrder.stride(this.divider * this.divider);
         if (splatting) {
             splats.clear(target.width(), target.height());
         }
-        if (merging) {
-            renderMerging(target, first, count);
+        if (splatting) {
+            renderBidirectional(target, first, count, renderScene.settings.merging());
+            if (tracedPixels(target) > 0) {
+                int pixels = target.width() * target.height();
+                splats.addInto(target, 1.0 / count * ((double) pixels / BdptIntegrator.mergePaths(pixels)));
+            }
         } else {
             launch();
-        }
-        if (splatting) {
-            int traced = tracedPixels(target);
-            if (traced > 0) {
-                splats.addInto(target, 1.0 / count * ((double) (target.width() * target.height()) / traced));
-            }
         }
     }
 
@@ -219,11 +216,11 @@ public final class Tracer implements AutoCloseable {
     }
 
     /**
-     * A bidirectional frame with vertex merging, pass by pass: each pass's light subpaths traced and
-     * gridded, then its camera paths, which merge with them, into a pass image; the passes averaged into
-     * {@code target}'s traced pixels.
+     * A bidirectional frame, pass by pass: each pass's light subpaths traced, their light tracing splatted,
+     * and gridded where the frame merges; then its camera paths, which join them and merge with them, into a
+     * pass image; the passes averaged into {@code target}'s traced pixels.
      */
-    private void renderMerging(FrameBuffer target, int first, int count) {
+    private void renderBidirectional(FrameBuffer target, int first, int count, boolean merging) {
         if (tracedPixels(target) == 0) {
             return; // no path starts, so no light subpath is wanted either
         }
@@ -234,25 +231,26 @@ public final class Tracer implements AutoCloseable {
         }
         Arrays.fill(passSum, 0);
         int paths = BdptIntegrator.mergePaths(w * h);
-        double firstRadius = workers[0].firstMergeRadius(scene, w, h);
+        double firstRadius = merging ? workers[0].firstMergeRadius(scene, w, h) : 0;
         boolean[] mask = only;
         float[] pass = passFrame.rgb();
         try {
             for (int k = 0; k < count; k++) {
                 int sample = first + k;
-                chunks = lightVertices.begin(paths);
+                double radius = merging ? BdptIntegrator.mergeRadius(firstRadius, (long) frameIndex * samples + sample) : 0;
+                chunks = lightVertices.begin(paths, radius);
+                for (TracerWorker worker : workers) {
+                    worker.pass(lightVertices, splats);
+                }
                 nextChunk.set(0);
                 firstSample = sample;
                 sampleCount = 1;
                 tracingLightPaths = true;
                 launch();
                 long start = cpuClock == null ? 0 : cpuClock.getCurrentThreadCpuTime();
-                lightVertices.finish(BdptIntegrator.mergeRadius(firstRadius, (long) frameIndex * samples + sample));
+                lightVertices.finish();
                 if (cpuClock != null) {
                     ownCpuNanos += cpuClock.getCurrentThreadCpuTime() - start;
-                }
-                for (TracerWorker worker : workers) {
-                    worker.mergeWith(lightVertices);
                 }
                 tracingLightPaths = false;
                 frame = passFrame;
@@ -267,9 +265,6 @@ public final class Tracer implements AutoCloseable {
         } finally {
             tracingLightPaths = false;
             frame = target;
-            for (TracerWorker worker : workers) {
-                worker.mergeWith(null);
-            }
         }
         float[] rgb = target.rgb();
         for (int i = 0; i < rgb.length; i++) {

@@ -65,7 +65,7 @@ final class TracerWorker {
 
     /**
      * Traces the light subpaths of chunk c of {@code vertices} for pass (frame, sample) of {@code samples} of
-     * {@code scene}, for camera paths to merge with.
+     * {@code scene}, for camera paths to join and merge with, and splats their light tracing.
      */
     void traceLightPaths(RenderScene scene, LightVertices vertices, int c, int frameIndex, int sample, int samples) {
         bdpt.prepare(scene);
@@ -80,9 +80,13 @@ final class TracerWorker {
                 bdpt.weights.sceneRadius());
     }
 
-    /** The light subpaths the bidirectional integrator's camera vertices merge with from now on; null: none. */
-    void mergeWith(LightVertices vertices) {
-        bdpt.mergeWith(vertices);
+    /**
+     * The light subpaths of the bidirectional integrator's pass, from now on ({@code BdptIntegrator.pass}),
+     * and the frame's splats, which their light tracing adds to.
+     */
+    void pass(LightVertices vertices, Splats splats) {
+        bdpt.splatInto(splats);
+        bdpt.pass(vertices);
     }
 
     private Integrator integrator(LightTransport transport) {

@@ -93,7 +93,13 @@ class BdptIntegratorTest {
             Splats splats = new Splats();
             splats.clear(32, 24);
             bdpt.splatInto(splats);
+            LightVertices pass = new LightVertices(); // one light subpath, which every camera path joins
+            pass.begin(1, 0);
+            bdpt.pass(pass);
+            bdpt.traceLightPaths(pass.chunk(0), 0, 1, sceneNumber, 0, 1, 6);
+            pass.finish();
             bdpt.weights.merging(1 << 16, 0.1); // merges about as likely as joins
+            bdpt.weights.lightTracing(sceneNumber % 2 == 0 ? 1 : 0.3); // and light tracing, or less likely
             TraversalStack stack = scene.aggregate.newStack();
             double[] ox = new double[1], oy = new double[1], oz = new double[1];
             double[] dx = new double[1], dy = new double[1], dz = new double[1];

@@ -21,9 +21,9 @@ class LightVerticesTest {
         LightVertices vertices = new LightVertices();
         for (int round = 0; round < 3; round++) { // the arrays reused, as pass after pass
             int paths = 300 + round * 400;
-            List<double[]> mergeable = fill(vertices, paths, random);
             double radius = 0.15 + 0.1 * round;
-            vertices.finish(radius);
+            List<double[]> mergeable = fill(vertices, paths, radius, random);
+            vertices.finish();
             int[] near = new int[8];
             int found = 0;
             for (int query = 0; query < 500; query++) {
@@ -51,16 +51,19 @@ class LightVerticesTest {
     @Test
     void aPointReadsBackWithItsPath() {
         LightVertices vertices = new LightVertices();
-        vertices.begin(1);
+        vertices.begin(1, 1);
         BdptVertex[] path = {vertex(0, 0, 5, BdptVertex.LIGHT, false), vertex(1, 2, 3, BdptVertex.SURFACE, true),
                 vertex(4, 5, 6, BdptVertex.SURFACE, true)};
         path[1].delta = true;
         path[2].pdfFwd = 0.25;
         path[2].pdfRev = 0.5;
         path[2].setBeta(1, 2, 3);
+        path[2].surface.offset = 1e-3;
+        path[2].surface.skipNear = 7;
+        path[2].surface.insideFar = 9;
         vertices.chunk(0).clear();
         vertices.chunk(0).add(path, 3);
-        vertices.finish(1);
+        vertices.finish();
         int v = 2; // the third point of the only path
         assertEquals(2, vertices.indexOnPath(v));
         BdptVertex[] read = {new BdptVertex(), new BdptVertex(), new BdptVertex()};
@@ -73,11 +76,51 @@ class LightVerticesTest {
         assertEquals(0.5, read[2].pdfRev);
         assertEquals(3, read[2].betaB);
         assertEquals(path[2].surface.material, read[2].surface.material);
+        BdptVertex[] whole = {new BdptVertex(), new BdptVertex(), new BdptVertex(), new BdptVertex()};
+        assertEquals(3, vertices.loadPathNumber(0, whole));
+        assertEquals(6, whole[2].surface.pz);
+        assertEquals(1e-3, whole[2].surface.offset);
+        assertEquals(7, whole[2].surface.skipNear);
+        assertEquals(9, whole[2].surface.insideFar);
+    }
+
+    /** Each path reads back whole by its number, in the order the chunks traced them. */
+    @Test
+    void aPathReadsBackByItsNumber() {
+        SplittableRandom random = new SplittableRandom(8);
+        LightVertices vertices = new LightVertices();
+        int paths = 3 * LightVertices.CHUNK_PATHS + 5;
+        int chunks = vertices.begin(paths, 0);
+        int[] length = new int[paths];
+        BdptVertex[] path = new BdptVertex[5];
+        for (int c = 0; c < chunks; c++) {
+            LightVertices.Chunk chunk = vertices.chunk(c);
+            chunk.clear();
+            for (int p = vertices.firstPath(c); p < vertices.firstPath(c) + vertices.pathsIn(c); p++) {
+                length[p] = random.nextInt(1, path.length + 1);
+                for (int k = 0; k < length[p]; k++) {
+                    path[k] = vertex(p, k, 0, k == 0 ? BdptVertex.LIGHT : BdptVertex.SURFACE, true);
+                }
+                chunk.add(path, length[p]);
+            }
+        }
+        vertices.finish();
+        BdptVertex[] read = new BdptVertex[5];
+        for (int k = 0; k < read.length; k++) {
+            read[k] = new BdptVertex();
+        }
+        for (int p = 0; p < paths; p++) {
+            assertEquals(length[p], vertices.loadPathNumber(p, read));
+            for (int k = 0; k < length[p]; k++) {
+                assertEquals(p, read[k].surface.px, "path " + p);
+                assertEquals(k, read[k].surface.py, "vertex " + k + " of path " + p);
+            }
+        }
     }
 
     /** Random paths into the chunks; returns the points that can be merged with. */
-    private static List<double[]> fill(LightVertices vertices, int paths, SplittableRandom random) {
-        int chunks = vertices.begin(paths);
+    private static List<double[]> fill(LightVertices vertices, int paths, double radius, SplittableRandom random) {
+        int chunks = vertices.begin(paths, radius);
         List<double[]> mergeable = new ArrayList<>();
         BdptVertex[] path = new BdptVertex[6];
         for (int c = 0; c < chunks; c++) {
