@@ -13,17 +13,18 @@ import glint.shading.Surface;
 
 /**
  * One render thread's bidirectional path tracer (docs/conventions.md, "Light from both ends"; Veach
- * 1997, chapter 10): for each camera sample a subpath from the camera and one from a light chosen by
- * its power, each a random walk as the path integrator's; then every way of joining them, strategy
- * (s, t) taking the light subpath's first s vertices and the camera's first t:
+ * 1997, chapter 10): a pass first traces its light subpaths, one a pixel, each from a light chosen by its
+ * power ({@link #traceLightPaths}), then for each pixel a subpath from the camera ({@link #shadeCamera}),
+ * each a random walk as the path integrator's; pixel p's joins light subpath p every way, strategy (s, t)
+ * taking the light subpath's first s vertices and the camera's first t:
  * <ul>
  * <li>s = 0: the camera subpath itself, where it meets a light's body or escapes to light at infinity;
  * <li>s = 1: a camera vertex joined to a point sampled on every light, as the path integrator's
  * next-event estimation;
  * <li>t = 1: a light vertex joined to a point of the camera's lens, its light added at the pixel the
- * camera sees it at ({@link Splats}: light tracing);
+ * camera sees it at ({@link Splats}: light tracing), as the light subpath is traced;
  * <li>otherwise: the two subpaths' last vertices joined by a shadow ray;
- * <li>and, where the frame merges ({@link #mergeWith}), each camera vertex on a diffuse surface merged with
+ * <li>and, where the frame merges ({@link #pass}), each camera vertex on a diffuse surface merged with
  * the points of the pass's other light subpaths within the merge radius ({@link LightVertices}; vertex
  * merging, Georgiev et al. 2012): what makes light focused by glass and seen through glass.
  * </ul>
@@ -44,10 +45,10 @@ final class BdptIntegrator extends Integrator {
     private static final int DIMENSIONS_PER_VERTEX = 3;
 
     /**
-     * The light subpaths a pass traces for camera paths to merge with: one a pixel, as Georgiev et al.
-     * (2012) do, up to this many, which bounds the memory they take (about 45 MB).
+     * The light subpaths a pass traces for camera paths to join and merge with: one a pixel, as Georgiev
+     * et al. (2012) do, up to this many, which bounds the memory they take (about 45 MB).
      */
-    static final int MOST_MERGE_PATHS = 1 << 16;
+    static final int MOST_LIGHT_PATHS = 1 << 16;
     /**
      * The merge radius of the first pass, in pixel widths at the scene's centre, so that a merge blurs
      * the same at any image size. Measured on caustic-lamp at 200 x 150 and 64 samples against its
@@ -68,9 +69,9 @@ final class BdptIntegrator extends Integrator {
      */
     static final double MERGE_ALPHA = 0.75;
 
-    /** The light subpaths each pass merges with for a frame of {@code pixels}. */
-    static int mergePaths(int pixels) {
-        return Math.min(pixels, MOST_MERGE_PATHS);
+    /** The light subpaths each pass traces for a frame of {@code pixels}. */
+    static int lightPaths(int pixels) {
+        return Math.min(pixels, MOST_LIGHT_PATHS);
     }
 
     /**

@@ -155,9 +155,8 @@ public final class Tracer implements AutoCloseable {
      * Traces from now on only the pixels whose entry of {@code pixels} (row by row, the frame's size) is true,
      * or every pixel when null: the frame's other pixels are left as they are, and no path starts from them
      * (adaptive sampling, {@link Convergence}). The array is read while a frame renders, so it is changed only
-     * between frames. Light that the bidirectional integrator's paths splat onto other pixels is scaled by the
-     * pixels in the frame over the pixels traced: as many light paths as before are represented, and each
-     * traced pixel's value stays an unbiased estimate.
+     * between frames. The bidirectional integrator's passes trace all their light subpaths whatever the mask,
+     * so each traced pixel's light tracing stays an unbiased estimate.
      */
     public void traceOnly(boolean[] pixels) {
         only = pixels;
@@ -190,7 +189,7 @@ public final class Tracer implements AutoCloseable {
             renderBidirectional(target, first, count, renderScene.settings.merging());
             if (tracedPixels(target) > 0) {
                 int pixels = target.width() * target.height();
-                splats.addInto(target, 1.0 / count * ((double) pixels / BdptIntegrator.mergePaths(pixels)));
+                splats.addInto(target, 1.0 / count * ((double) pixels / BdptIntegrator.lightPaths(pixels)));
             }
         } else {
             launch();
@@ -230,7 +229,7 @@ public final class Tracer implements AutoCloseable {
             passSum = new double[3 * w * h];
         }
         Arrays.fill(passSum, 0);
-        int paths = BdptIntegrator.mergePaths(w * h);
+        int paths = BdptIntegrator.lightPaths(w * h);
         double firstRadius = merging ? workers[0].firstMergeRadius(scene, w, h) : 0;
         boolean[] mask = only;
         float[] pass = passFrame.rgb();
