@@ -5,28 +5,33 @@ import java.lang.management.ManagementFactory;
 import java.lang.management.ThreadMXBean;
 import java.util.Arrays;
 import java.util.concurrent.CancellationException;
-import java.util.concurrent.ExecutorService;
-import java.util.concurrent.Executors;
 import java.util.concurrent.Phaser;
-import java.util.concurrent.ThreadFactory;
 import java.util.concurrent.atomic.AtomicInteger;
 import java.util.concurrent.atomic.AtomicReference;
 
 /**
- * Renders frames with a persistent pool of {@link TracerWorker}s. A frame is split into
+ * Renders frames with {@link TracerWorker}s on render threads of its own. A frame is split into
  * divider x divider tiles that the workers take in turn, spread over the frame ({@link TileOrder}); every
  * pixel is computed from its own coordinates alone, so the image does not depend on the thread or tile count.
+ * <p>
+ * Each render thread loops: it waits at {@code frameStart}, does its share of the frame and arrives at
+ * {@code frameDone}. A thread that ends for any reason, even an error between frames (memory running out
+ * while it waits), terminates both barriers on its way out, so the frame under way and every later one fail
+ * with its error instead of waiting forever for a thread that is gone.
  */
 public final class Tracer implements AutoCloseable {
 
     private final int threads;
     private final TracerWorker[] workers;
-    private final ExecutorService pool;
+    private final Thread[] renderThreads;
     private final AtomicInteger nextTile = new AtomicInteger();
     private final AtomicReference<Throwable> failure = new AtomicReference<>();
-    /** The workers' tasks and the barrier a frame ends at, made once: a frame allocates nothing of its own. */
-    private final Runnable[] tasks;
+    /** The barriers a frame starts and ends at, made once: a frame allocates nothing of its own. */
+    private final Phaser frameStart;
     private final Phaser frameDone;
+    /** Why a render thread ended, once one has on an error: every frame from then on fails with it. */
+    private final AtomicReference<Throwable> threadEnded = new AtomicReference<>();
+    private volatile boolean closed;
     /** Light the bidirectional integrator's paths bring to other pixels than their own, per frame. */
     private final Splats splats = new Splats();
     /** The light subpaths of a bidirectional pass that camera paths merge with. */
@@ -72,22 +77,18 @@ public final class Tracer implements AutoCloseable {
         for (int i = 0; i < threads; i++) {
             workers[i] = new TracerWorker();
         }
-        AtomicInteger count = new AtomicInteger();
-        ThreadFactory factory = r -> {
-            Thread t = new Thread(r, "glint-tracer-" + count.incrementAndGet());
-            t.setDaemon(true);
-            return t;
-        };
-        this.pool = Executors.newFixedThreadPool(threads, factory);
+        this.frameStart = new Phaser(threads + 1);
         this.frameDone = new Phaser(threads + 1);
-        this.tasks = new Runnable[threads];
         this.workerCpuNanos = new long[threads];
-        for (int i = 0; i < threads; i++) {
-            int index = i;
-            tasks[i] = () -> runWorker(index);
-        }
         ThreadMXBean bean = ManagementFactory.getThreadMXBean();
         this.cpuClock = bean.isCurrentThreadCpuTimeSupported() && bean.isThreadCpuTimeEnabled() ? bean : null;
+        this.renderThreads = new Thread[threads];
+        for (int i = 0; i < threads; i++) {
+            int index = i;
+            renderThreads[i] = new Thread(() -> serve(index), "glint-tracer-" + (i + 1));
+            renderThreads[i].setDaemon(true);
+            renderThreads[i].start();
+        }
     }
 
     /** Rays cast by all workers so far (camera, reflected, refracted and shadow rays). */
@@ -201,16 +202,42 @@ public final class Tracer implements AutoCloseable {
         if (cancelled) {
             throw new CancellationException("the render was cancelled");
         }
-        for (Runnable task : tasks) {
-            pool.execute(task);
+        if (closed) {
+            throw new IllegalStateException("the tracer is closed");
         }
-        frameDone.arriveAndAwaitAdvance();
+        boolean started = frameStart.arrive() >= 0;
+        boolean done = started && frameDone.arriveAndAwaitAdvance() >= 0;
+        if (!done) {
+            Throwable ended = threadEnded.get();
+            if (ended == null) {
+                throw new CancellationException("the tracer was closed");
+            }
+            throw new RenderException("a render thread ended: " + ended, ended);
+        }
         if (cancelled) {
             throw new CancellationException("the render was cancelled");
         }
         Throwable error = failure.get();
         if (error != null) {
             throw new RenderException("a render worker failed: " + error, error);
+        }
+    }
+
+    /** A render thread's life: a share of every frame, until the tracer closes or the thread meets an error. */
+    private void serve(int index) {
+        Throwable end = null;
+        try {
+            while (frameStart.arriveAndAwaitAdvance() >= 0 && !closed) {
+                runWorker(index);
+            }
+        } catch (Throwable t) {
+            end = t;
+        } finally { // allocates nothing: memory may have run out
+            if (end != null) {
+                threadEnded.compareAndSet(null, end);
+            }
+            frameStart.forceTermination();
+            frameDone.forceTermination();
         }
     }
 
@@ -341,8 +368,11 @@ public final class Tracer implements AutoCloseable {
         cancelled = true;
     }
 
+    /** Ends the render threads once they are idle; a frame after this throws. */
     @Override
     public void close() {
-        pool.shutdownNow();
+        closed = true;
+        frameStart.forceTermination();
+        frameDone.forceTermination();
     }
 }

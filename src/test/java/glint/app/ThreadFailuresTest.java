@@ -127,4 +127,34 @@ class ThreadFailuresTest {
             assertFalse(Files.exists(dir.resolve("m.png")));
         }
     }
+
+    /**
+     * Memory running out in a render thread between its tasks, as a bidirectional still far too large for
+     * the heap makes it do, ends the run like any other: one line, status 1, no image. The shell's
+     * {@code timeout} only turns a hang into a failed status.
+     */
+    @Test
+    void aBidirectionalStillTooLargeForTheHeapEndsAndNeverHangs() throws Exception {
+        Path scene = Path.of("scenes/caustics.yaml").toAbsolutePath();
+        Path config = Files.writeString(dir.resolve("empty.properties"), "");
+        List<String> command = new ArrayList<>(List.of("timeout", "-s", "KILL", "300"));
+        command.addAll(Child.java("-Xmx48m"));
+        command.addAll(List.of("--config", config.toString(), "--scene", scene.toString(), "--integrator", "bdpt",
+                "--width", "800", "--height", "600", "--spp", "4", "--output", dir.resolve("b.png").toString()));
+        for (int run = 1; run <= 3; run++) {
+            Child.Result r = Child.sh(dir, Child.line(command) + "\n", java.util.Map.of());
+            String all = r.err() + r.out();
+            assertEquals(Main.FAILURE, r.status(), "run " + run + ":\n" + all);
+            assertFalse(all.contains("Exception") || all.contains("\tat "), "run " + run + ":\n" + all);
+            List<String> lines = r.err().lines().toList();
+            assertEquals(1, lines.stream().filter(l -> l.startsWith("glint: out of memory (")).count(), all);
+            for (String line : lines) {
+                assertTrue(line.startsWith("glint: out of memory (")
+                        || line.matches("(reading|preparing) the scene\\.\\.\\.( [0-9]+ s so far)?|rendering: .*")
+                        || line.equals("glint: the program ended before the image was written; nothing written, its "
+                                + "hidden temporary file removed"), all);
+            }
+            assertFalse(Files.exists(dir.resolve("b.png")));
+        }
+    }
 }
