@@ -586,9 +586,12 @@ final class BdptIntegrator extends Integrator {
             double radius2 = lv.radius() * lv.radius();
             for (int k = 0, n = lv.bucketsNear(a.px, a.py, a.pz, near); k < n; k++) {
                 for (int i = lv.bucketFrom(near[k]), end = lv.bucketTo(near[k]); i < end; i++) {
+                    if (lv.distance2At(i, a.px, a.py, a.pz) >= radius2) {
+                        continue;
+                    }
                     int v = lv.vertexAt(i);
                     int s = lv.indexOnPath(v) + 1;
-                    if (s + tv - 3 > hitsLeft || lv.distance2(v, a.px, a.py, a.pz) >= radius2) {
+                    if (s + tv - 3 > hitsLeft) {
                         continue;
                     }
                     lv.loadPath(v, mergedPath);

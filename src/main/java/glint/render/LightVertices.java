@@ -100,6 +100,11 @@ final class LightVertices {
     /** The vertices a camera vertex can merge with, in order, and the grid's buckets of them. */
     private int[] mergeable = new int[0];
     private int[] bucketStart = new int[1], bucketed = new int[0];
+    /**
+     * The gridded vertices' positions, x y z, in the grid's order: a lookup reads the candidates of a bucket
+     * from one run of memory rather than from their paths all over {@link #d}.
+     */
+    private double[] bucketedPoint = new double[0];
     /** Scratch: where the next vertex of each bucket goes while the grid is filled. */
     private int[] fill = new int[0];
     private int buckets = 1;
@@ -157,6 +162,7 @@ final class LightVertices {
             pathStart = new int[vertices];
             mergeable = new int[vertices];
             bucketed = new int[vertices];
+            bucketedPoint = new double[3 * vertices];
         }
         if (firstVertex.length < paths + 1) {
             firstVertex = new int[paths + 1];
@@ -201,7 +207,9 @@ final class LightVertices {
         int[] next = bucketFill(size);
         for (int k = 0; k < count; k++) {
             int v = mergeable[k];
-            bucketed[next[bucketOf(v)]++] = v;
+            int at = next[bucketOf(v)]++;
+            bucketed[at] = v;
+            System.arraycopy(d, v * DOUBLES + PX, bucketedPoint, 3 * at, 3);
         }
     }
 
@@ -264,10 +272,10 @@ final class LightVertices {
         return bucketed[k];
     }
 
-    /** The squared distance from vertex v to (x, y, z). */
-    double distance2(int v, double x, double y, double z) {
-        int o = v * DOUBLES;
-        double dx = d[o + PX] - x, dy = d[o + PX + 1] - y, dz = d[o + PX + 2] - z;
+    /** The squared distance from the k-th vertex of the grid's order to (x, y, z). */
+    double distance2At(int k, double x, double y, double z) {
+        int o = 3 * k;
+        double dx = bucketedPoint[o] - x, dy = bucketedPoint[o + 1] - y, dz = bucketedPoint[o + 2] - z;
         return dx * dx + dy * dy + dz * dz;
     }
 

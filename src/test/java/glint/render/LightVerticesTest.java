@@ -38,7 +38,7 @@ class LightVerticesTest {
                     for (int i = vertices.bucketFrom(near[b]); i < vertices.bucketTo(near[b]); i++) {
                         int v = vertices.vertexAt(i);
                         assertTrue(vertices.indexOnPath(v) > 0, "never the light's own point");
-                        seen += vertices.distance2(v, x, y, z) < radius * radius ? 1 : 0;
+                        seen += vertices.distance2At(i, x, y, z) < radius * radius ? 1 : 0;
                     }
                 }
                 assertEquals(expected, seen, "query " + query + " of round " + round);
