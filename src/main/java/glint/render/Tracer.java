@@ -14,23 +14,23 @@ import java.util.concurrent.atomic.AtomicReference;
  * divider x divider tiles that the workers take in turn, spread over the frame ({@link TileOrder}); every
  * pixel is computed from its own coordinates alone, so the image does not depend on the thread or tile count.
  * <p>
- * Each render thread loops: it waits at {@code frameStart}, does its share of the frame and arrives at
- * {@code frameDone}. A thread that ends for any reason, even an error between frames (memory running out
- * while it waits), terminates both barriers on its way out, so the frame under way and every later one fail
- * with its error instead of waiting forever for a thread that is gone.
+ * Each render thread loops: it waits at its {@link Crew}'s start barrier, does its share of the frame and
+ * arrives at the crew's end barrier. A thread that ends for any reason, even an error between frames
+ * (memory running out while it waits), terminates both barriers on its way out: the frame under way fails
+ * with its error instead of waiting forever for a thread that is gone, and the next frame has a new crew.
  */
 public final class Tracer implements AutoCloseable {
 
     private final int threads;
     private final TracerWorker[] workers;
-    private final Thread[] renderThreads;
     private final AtomicInteger nextTile = new AtomicInteger();
     private final AtomicReference<Throwable> failure = new AtomicReference<>();
-    /** The barriers a frame starts and ends at, made once: a frame allocates nothing of its own. */
-    private final Phaser frameStart;
-    private final Phaser frameDone;
-    /** Why a render thread ended, once one has on an error: every frame from then on fails with it. */
+    /** The render threads and the barriers a frame starts and ends at: a frame allocates nothing of its own. */
+    private volatile Crew crew;
+    /** Why a render thread of the crew ended, once one has on an error. */
     private final AtomicReference<Throwable> threadEnded = new AtomicReference<>();
+    /** For tests: the error a render thread meets between frames, as memory running out in its wait would. */
+    private final AtomicReference<Error> betweenFrames = new AtomicReference<>();
     private volatile boolean closed;
     /** Light the bidirectional integrator's paths bring to other pixels than their own, per frame. */
     private final Splats splats = new Splats();
@@ -77,17 +77,55 @@ public final class Tracer implements AutoCloseable {
         for (int i = 0; i < threads; i++) {
             workers[i] = new TracerWorker();
         }
-        this.frameStart = new Phaser(threads + 1);
-        this.frameDone = new Phaser(threads + 1);
         this.workerCpuNanos = new long[threads];
         ThreadMXBean bean = ManagementFactory.getThreadMXBean();
         this.cpuClock = bean.isCurrentThreadCpuTimeSupported() && bean.isThreadCpuTimeEnabled() ? bean : null;
-        this.renderThreads = new Thread[threads];
-        for (int i = 0; i < threads; i++) {
-            int index = i;
-            renderThreads[i] = new Thread(() -> serve(index), "glint-tracer-" + (i + 1));
-            renderThreads[i].setDaemon(true);
-            renderThreads[i].start();
+        this.crew = new Crew();
+    }
+
+    /** The render threads, one a worker, and the two barriers they meet at each frame; made again whole. */
+    private final class Crew {
+        final Phaser start = new Phaser(threads + 1), done = new Phaser(threads + 1);
+        final Thread[] members = new Thread[threads];
+
+        Crew() {
+            for (int i = 0; i < threads; i++) {
+                int index = i;
+                members[i] = new Thread(() -> serve(index, this), "glint-tracer-" + (i + 1));
+                members[i].setDaemon(true);
+            }
+            try {
+                for (Thread member : members) {
+                    member.start();
+                }
+            } catch (Throwable t) { // memory running out: the members started leave, and frames fail on t
+                threadEnded.compareAndSet(null, t);
+                end();
+                throw t;
+            }
+        }
+
+        /** Ends the crew: its members leave once their share of the frame under way is done. Allocates nothing. */
+        void end() {
+            start.forceTermination();
+            done.forceTermination();
+        }
+
+        /** Waits for every member to have left; keeps an interrupt for the caller. */
+        void awaitLeft() {
+            boolean interrupted = false;
+            for (Thread member : members) {
+                while (member.isAlive()) {
+                    try {
+                        member.join();
+                    } catch (InterruptedException e) {
+                        interrupted = true;
+                    }
+                }
+            }
+            if (interrupted) {
+                Thread.currentThread().interrupt();
+            }
         }
     }
 
@@ -205,13 +243,14 @@ public final class Tracer implements AutoCloseable {
         if (closed) {
             throw new IllegalStateException("the tracer is closed");
         }
-        boolean started = frameStart.arrive() >= 0;
-        boolean done = started && frameDone.arriveAndAwaitAdvance() >= 0;
+        Crew c = crew;
+        boolean done = c.start.arrive() >= 0 && c.done.arriveAndAwaitAdvance() >= 0;
         if (!done) {
             Throwable ended = threadEnded.get();
             if (ended == null) {
                 throw new CancellationException("the tracer was closed");
             }
+            replaceCrew(c);
             throw new RenderException("a render thread ended: " + ended, ended);
         }
         if (cancelled) {
@@ -223,12 +262,30 @@ public final class Tracer implements AutoCloseable {
         }
     }
 
-    /** A render thread's life: a share of every frame, until the tracer closes or the thread meets an error. */
-    private void serve(int index) {
+    /**
+     * After a member of crew {@code c} ended on an error: waits for the others to leave (they finish their
+     * share of the frame first, so no two threads ever use one worker), then starts a new crew for the frames
+     * to come.
+     */
+    private void replaceCrew(Crew c) {
+        c.awaitLeft();
+        threadEnded.set(null);
+        crew = new Crew();
+        if (closed) { // closed meanwhile, from another thread
+            crew.end();
+        }
+    }
+
+    /** A render thread's life: a share of every frame, until its crew ends or it meets an error. */
+    private void serve(int index, Crew c) {
         Throwable end = null;
         try {
-            while (frameStart.arriveAndAwaitAdvance() >= 0 && !closed) {
-                runWorker(index);
+            while (c.start.arriveAndAwaitAdvance() >= 0 && !closed) {
+                runWorker(index, c.done);
+                Error injected = betweenFrames.getAndSet(null);
+                if (injected != null) {
+                    throw injected;
+                }
             }
         } catch (Throwable t) {
             end = t;
@@ -236,9 +293,13 @@ public final class Tracer implements AutoCloseable {
             if (end != null) {
                 threadEnded.compareAndSet(null, end);
             }
-            frameStart.forceTermination();
-            frameDone.forceTermination();
+            c.end();
         }
+    }
+
+    /** For tests: one render thread meets {@code e} after its share of the next frame, outside the frame's work. */
+    void failBetweenFrames(Error e) {
+        betweenFrames.set(e);
     }
 
     /**
@@ -312,7 +373,7 @@ public final class Tracer implements AutoCloseable {
         return traced;
     }
 
-    private void runWorker(int index) {
+    private void runWorker(int index, Phaser frameDone) {
         TracerWorker worker = workers[index];
         long cpuStart = cpuClock == null ? 0 : cpuClock.getCurrentThreadCpuTime();
         try {
@@ -372,7 +433,6 @@ public final class Tracer implements AutoCloseable {
     @Override
     public void close() {
         closed = true;
-        frameStart.forceTermination();
-        frameDone.forceTermination();
+        crew.end();
     }
 }
