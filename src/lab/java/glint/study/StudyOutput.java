@@ -8,8 +8,8 @@ import java.util.List;
 /**
  * Writes what the speed/accuracy study found into an output folder: one chart per scene against
  * physics (images/accuracy-SCENE.png: relMSE, 1 - SSIM and FLIP), one chart of Whitted against its
- * own converged image (images/accuracy-whitted.png), and the generated sections of accuracy.md:
- * the verdict, the check of the reference, the tables.
+ * own converged image (images/accuracy-whitted.png), the generated sections of accuracy.md (the
+ * verdict, the check of the reference, Whitted's table) and every method's table, in accuracy-tables.md.
  */
 final class StudyOutput {
 
@@ -50,10 +50,11 @@ final class StudyOutput {
         if (validation.length() > 0) {
             GeneratedSection.write(doc, "accuracy-validation", PhysicsValidation.HEADER + validation);
         }
-        GeneratedSection.write(doc, "accuracy-tables", tables.toString());
+        GeneratedSection.write(out.resolve("accuracy-tables.md"), "accuracy-tables", tables.toString());
         GeneratedSection.write(doc, "accuracy-whitted-tables",
                 "Geometric mean over the scenes (SSIM: arithmetic mean):\n\n"
                         + AccuracyReport.whittedTable(AccuracyReport.geometricMean(whitted)));
-        System.out.println("wrote " + images.resolve("accuracy-*.png") + " and " + doc);
+        System.out.println("wrote " + images.resolve("accuracy-*.png") + ", " + doc + " and "
+                + out.resolve("accuracy-tables.md"));
     }
 }

@@ -1,6 +1,7 @@
 package glint.study;
 
 import static org.junit.jupiter.api.Assertions.assertEquals;
+import static org.junit.jupiter.api.Assertions.assertFalse;
 import static org.junit.jupiter.api.Assertions.assertNull;
 import static org.junit.jupiter.api.Assertions.assertSame;
 import static org.junit.jupiter.api.Assertions.assertTrue;
@@ -133,10 +134,13 @@ class SpeedAccuracyTest {
         assertEquals(1800, chart.getWidth());
         assertTrue(Files.isRegularFile(dir.resolve("images/accuracy-whitted.png")));
         String doc = Files.readString(dir.resolve("accuracy.md"));
-        for (String section : List.of("accuracy-verdict", "accuracy-validation", "accuracy-tables",
-                "accuracy-whitted-tables")) {
+        for (String section : List.of("accuracy-verdict", "accuracy-validation", "accuracy-whitted-tables")) {
             assertTrue(doc.contains("<!-- generated:" + section + " -->"), section);
         }
+        String tables = Files.readString(dir.resolve("accuracy-tables.md"));
+        assertTrue(tables.contains("<!-- generated:accuracy-tables -->"), tables);
+        assertFalse(doc.contains("<!-- generated:accuracy-tables -->"), "the tables have a page of their own");
+        doc += tables;
         for (StudyConfig config : plan.configs()) {
             if (StudyConfigs.methods().contains(config)) {
                 assertTrue(doc.contains("| " + config.methodLabel() + " |") || doc.contains("**" + config.methodLabel()),
