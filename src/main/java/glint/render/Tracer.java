@@ -36,6 +36,12 @@ public final class Tracer implements AutoCloseable {
     private final Splats splats = new Splats();
     /** The light subpaths of a bidirectional pass that camera paths merge with. */
     private final LightVertices lightVertices = new LightVertices();
+    /**
+     * Heap bytes a pixel of a bidirectional frame takes besides the frame itself: a pass's own image (3
+     * floats), the sum of the passes (3 doubles) and the splats (3 longs). The light subpaths' vertices come
+     * on top, at most {@link BdptIntegrator#MOST_LIGHT_PATHS} subpaths of them, as many as the scene makes.
+     */
+    public static final long BIDIRECTIONAL_BYTES_PER_PIXEL = 3 * 4 + 3 * 8 + 3 * 8;
     /** A bidirectional pass's own image and the sum of a frame's passes, per pixel and channel. */
     private FrameBuffer passFrame;
     private double[] passSum = new double[0];

@@ -1,11 +1,14 @@
 package glint.still;
 
 import glint.config.Config;
+import glint.render.LightTransport;
+import glint.render.Tracer;
 import java.util.Locale;
 
 /**
  * Refuses, before any memory is taken, a render the Java heap cannot hold: the frame (and the image made
- * from it) and every render thread's row buffers, which grow with the tile width times the samples.
+ * from it), the bidirectional integrator's buffers a pixel, and every render thread's row buffers, which
+ * grow with the tile width times the samples.
  */
 public final class MemoryCheck {
 
@@ -58,13 +61,17 @@ public final class MemoryCheck {
         }
     }
 
-    /** Heap bytes a render of this config needs, computed in long (no overflow). */
+    /**
+     * Heap bytes a render of this config needs, computed in long (no overflow): {@code bytesPerPixel} and
+     * what the integrator keeps a pixel of its own (bdpt: {@link Tracer#BIDIRECTIONAL_BYTES_PER_PIXEL}).
+     */
     static long memoryNeeded(Config config, long bytesPerPixel) {
         long w = config.displayWidth(), h = config.displayHeight();
         long divider = Math.max(1, Math.min(config.screenDivider(), Math.min(w, h)));
         long tileWidth = (w + divider - 1) / divider;
         long rowRays = tileWidth * config.samples();
-        return w * h * bytesPerPixel + config.effectiveThreads() * rowRays * ROW_BYTES_PER_RAY;
+        long integrator = config.transport() == LightTransport.BDPT ? Tracer.BIDIRECTIONAL_BYTES_PER_PIXEL : 0;
+        return w * h * (bytesPerPixel + integrator) + config.effectiveThreads() * rowRays * ROW_BYTES_PER_RAY;
     }
 
     private static String megabytes(long bytes) {

@@ -140,7 +140,7 @@ class ThreadFailuresTest {
         List<String> command = new ArrayList<>(List.of("timeout", "-s", "KILL", "300"));
         command.addAll(Child.java("-Xmx48m"));
         command.addAll(List.of("--config", config.toString(), "--scene", scene.toString(), "--integrator", "bdpt",
-                "--width", "800", "--height", "600", "--spp", "4", "--output", dir.resolve("b.png").toString()));
+                "--width", "320", "--height", "240", "--spp", "4", "--output", dir.resolve("b.png").toString()));
         for (int run = 1; run <= 3; run++) {
             Child.Result r = Child.sh(dir, Child.line(command) + "\n", java.util.Map.of());
             String all = r.err() + r.out();

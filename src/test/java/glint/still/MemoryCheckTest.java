@@ -5,6 +5,7 @@ import static org.junit.jupiter.api.Assertions.assertFalse;
 import static org.junit.jupiter.api.Assertions.assertThrows;
 
 import glint.config.Config;
+import glint.render.LightTransport;
 import org.junit.jupiter.api.Test;
 
 /**
@@ -55,5 +56,15 @@ class MemoryCheckTest {
     void aRefusalOfMemoryIsNotAboutTheOutputFile() {
         Config c = Config.defaults().withSize(1920, 1080).withSamples(4096).withThreads(2);
         assertFalse(assertThrows(StillRefused.class, () -> MemoryCheck.check(c, 16, 0)).aboutOutput());
+    }
+
+    @Test
+    void aBidirectionalRenderAlsoNeedsItsPassImagesAndSplatsAPixel() {
+        Config whitted = Config.defaults().withSize(800, 600).withSamples(4).withThreads(2);
+        Config bdpt = whitted.withTransport(LightTransport.BDPT);
+        // a pass's own image (3 floats), the sum of the passes (3 doubles), the splats (3 longs)
+        assertEquals(800L * 600 * (12 + 24 + 24), MemoryCheck.memoryNeeded(bdpt, 16) - MemoryCheck.memoryNeeded(whitted, 16));
+        assertEquals(MemoryCheck.memoryNeeded(whitted, 16),
+                MemoryCheck.memoryNeeded(whitted.withTransport(LightTransport.PATH), 16));
     }
 }
