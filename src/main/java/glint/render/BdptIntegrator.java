@@ -13,11 +13,11 @@ import glint.shading.Surface;
 
 /**
  * One render thread's bidirectional path tracer (docs/conventions.md, "Light from both ends"; Veach
- * 1997, chapter 10): a pass first traces its light subpaths, one every two pixels, each from a light chosen by
- * its power ({@link #traceLightPaths}), then for each pixel a subpath from the camera ({@link #shadeCamera}),
- * each a random walk as the path integrator's; pixel p's joins light subpath p (modulo their count) every
- * way, strategy (s, t)
- * taking the light subpath's first s vertices and the camera's first t:
+ * 1997, chapter 10): a pass first traces its light subpaths, one every two pixels, each from a light
+ * chosen by its power ({@link #traceLightPaths}), then for each pixel a subpath from the camera
+ * ({@link #shadeCamera}), each a random walk as the path integrator's; pixel p's joins light subpath p
+ * (modulo their count) every way, strategy (s, t) taking the light subpath's first s vertices and the
+ * camera's first t:
  * <ul>
  * <li>s = 0: the camera subpath itself, where it meets a light's body or escapes to light at infinity;
  * <li>s = 1: a camera vertex joined to a point sampled on every light, as the path integrator's

@@ -286,19 +286,20 @@ final class LightVertices {
 
     /** Loads light subpath p's vertices into path[0 ..]; returns their count. */
     int loadPathNumber(int p, BdptVertex[] path) {
-        int first = firstVertex[p], n = firstVertex[p + 1] - first;
-        for (int k = 0; k < n; k++) {
-            load(first + k, path[k]);
-        }
-        return n;
+        return loadVertices(firstVertex[p], firstVertex[p + 1], path);
     }
 
     /** Loads vertex v and the ones before it on its path into path[0 .. its index]. */
     void loadPath(int v, BdptVertex[] path) {
-        int first = pathStart[v];
-        for (int k = first; k <= v; k++) {
-            load(k, path[k - first]);
+        loadVertices(pathStart[v], v + 1, path);
+    }
+
+    /** Loads vertices [from, to) into path[0 ..]; returns their count. */
+    private int loadVertices(int from, int to, BdptVertex[] path) {
+        for (int v = from; v < to; v++) {
+            load(v, path[v - from]);
         }
+        return to - from;
     }
 
     private void load(int v, BdptVertex out) {

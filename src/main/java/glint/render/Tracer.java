@@ -228,14 +228,7 @@ public final class Tracer implements AutoCloseable {
         frameTiles = this.divider * this.divider * (splatting ? count : 1);
         tileStride = TileOrder.stride(this.divider * this.divider);
         if (splatting) {
-            splats.clear(target.width(), target.height());
-        }
-        if (splatting) {
             renderBidirectional(target, first, count, renderScene.settings.merging());
-            if (tracedPixels(target) > 0) {
-                int pixels = target.width() * target.height();
-                splats.addInto(target, 1.0 / count * ((double) pixels / BdptIntegrator.lightPaths(pixels)));
-            }
         } else {
             launch();
         }
@@ -311,13 +304,14 @@ public final class Tracer implements AutoCloseable {
     /**
      * A bidirectional frame, pass by pass: each pass's light subpaths traced, their light tracing splatted,
      * and gridded where the frame merges; then its camera paths, which join them and merge with them, into a
-     * pass image; the passes averaged into {@code target}'s traced pixels.
+     * pass image; the passes averaged into {@code target}'s traced pixels, and the frame's splats added.
      */
     private void renderBidirectional(FrameBuffer target, int first, int count, boolean merging) {
         if (tracedPixels(target) == 0) {
             return; // no path starts, so no light subpath is wanted either
         }
         int w = target.width(), h = target.height();
+        splats.clear(w, h);
         if (passFrame == null || passFrame.width() != w || passFrame.height() != h) {
             passFrame = new FrameBuffer(w, h);
             passSum = new double[3 * w * h];
@@ -365,6 +359,7 @@ public final class Tracer implements AutoCloseable {
                 rgb[i] = FrameBuffer.storable(passSum[i] / count);
             }
         }
+        splats.addInto(target, 1.0 / count * ((double) (w * h) / paths));
     }
 
     private int tracedPixels(FrameBuffer target) {
