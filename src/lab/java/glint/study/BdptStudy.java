@@ -26,7 +26,8 @@ import org.knowm.xchart.XYChart;
  * relMSE and FLIP over the path tracer's at the same render CPU (the path's interpolated on log axes);
  * <li>the caustic under caustic-lamp's glass ball: its mean radiance against the reference's;
  * <li>relMSE falling with the samples on the default and metals scenes at 100 x 75, each against bdpt's
- * own image at 4096 samples, over {@link #FALL_FRAMES} frames (no firefly plateau);
+ * own image at 4096 samples, over 16 x {@link #FALL_FRAMES} frames at 16 samples and {@link #FALL_FRAMES} at 256
+ * (no firefly plateau);
  * <li>sky-and-sun, whose reference lacks the caustic of its glass ball under the sun: by how much.
  * </ol>
  * Usage: {@code java -cp target/benchmarks.jar glint.study.BdptStudy [--docs | --caustic | --fall]}; --docs writes the
@@ -176,28 +177,32 @@ public final class BdptStudy {
     }
 
     /**
-     * Frames (seeds) the fall with samples is averaged over: one frame's relMSE is ruled by its rarest
-     * paths, which 4 frames meet or miss by luck (on metals the mean over frames 1 to 4 fell 1.6 times, over
-     * 1 to 16 2.2 times).
+     * Frames (seeds) at 256 samples the fall with samples is averaged over, and 16 times as many at 16, so
+     * that both budgets draw the same samples in all and meet a pixel's rarest paths as often: one frame's
+     * relMSE is ruled by them (on metals, 16 frames at 16 samples and 16 at 256 gave a mean fall of 7.6;
+     * 256 at 16 and 16 at 256, 188, one frame at 16 holding a sample 30 000 times its pixel's value).
      */
     static final int FALL_FRAMES = 16;
 
     /**
      * bdpt's and path's relMSE at 16 and 256 samples against bdpt's own image at 4096, at 100 x 75, over
-     * {@link #FALL_FRAMES} frames (seeds): how far the mean and the median fall.
+     * 16 x {@link #FALL_FRAMES} and {@link #FALL_FRAMES} frames (seeds): how far the mean and the median fall.
      */
     static String fallsWithSamples(String name) {
         Scene scene = load(Path.of("scenes", name + ".yaml"));
         FrameBuffer own = render(scene, Method.BDPT, 100, 75, 4096, 0).frame;
         StringBuilder out = new StringBuilder();
         for (Method m : List.of(Method.BDPT, Method.PATH)) {
-            double[] at16 = new double[FALL_FRAMES], at256 = new double[FALL_FRAMES];
-            for (int f = 0; f < FALL_FRAMES; f++) {
+            double[] at16 = new double[16 * FALL_FRAMES], at256 = new double[FALL_FRAMES];
+            for (int f = 0; f < at16.length; f++) {
                 at16[f] = RelativeMse.of(render(scene, m, 100, 75, 16, f + 1).frame, own);
+            }
+            for (int f = 0; f < at256.length; f++) {
                 at256[f] = RelativeMse.of(render(scene, m, 100, 75, 256, f + 1).frame, own);
             }
-            out.append(String.format("%s at 100 x 75 against bdpt at 4096, %s, %d frames: relMSE at 16 %s, at 256 %s; "
-                            + "mean falls %.1fx, median %.1fx%n", name, m.label, FALL_FRAMES, list(at16), list(at256),
+            out.append(String.format("%s at 100 x 75 against bdpt at 4096, %s, %d frames at 16 samples, %d at 256: "
+                            + "relMSE at 16 mean %.2e, median %.2e, largest %.2e; at 256 %s; mean falls %.1fx, median %.1fx%n",
+                    name, m.label, at16.length, at256.length, mean(at16), median(at16), max(at16), list(at256),
                     mean(at16) / mean(at256), median(at16) / median(at256)));
         }
         return out.toString();
@@ -209,6 +214,10 @@ public final class BdptStudy {
             s.append(s.length() == 0 ? "" : ", ").append(String.format("%.2e", v));
         }
         return s.toString();
+    }
+
+    private static double max(double[] values) {
+        return java.util.Arrays.stream(values).max().orElse(Double.NaN);
     }
 
     private static double mean(double[] values) {
