@@ -256,16 +256,17 @@ final class BdptIntegrator extends Integrator {
      */
     private int lightSubpath(int most, int dimensions) {
         Lights all = scene.lightsAndSky;
-        int k = weights.choose(random.single(dimensions));
+        LightChoice choice = weights.choice;
+        int k = choice.choose(random.single(dimensions));
         if (k < 0) {
             return 0;
         }
-        double chance = weights.chance(k);
+        double chance = choice.chance(k);
         random.pair(dimensions + 1);
         double u1 = random.u1, u2 = random.u2;
         random.pair(dimensions + 2);
         double u3 = random.u1, u4 = random.u2;
-        all.leaving(k, weights.centreX, weights.centreY, weights.centreZ, weights.radius, u1, u2, u3, u4, lightRay);
+        all.leaving(k, choice.centreX, choice.centreY, choice.centreZ, choice.radius, u1, u2, u3, u4, lightRay);
         LightRay ray = lightRay;
         boolean far = all.infinitelyFar(k);
         int target = weights.targets.choose(random.single(dimensions + 3));
@@ -281,7 +282,7 @@ final class BdptIntegrator extends Integrator {
         origin.deltaLight = all.isDelta(k);
         origin.delta = false;
         origin.connectible = false;
-        origin.pdfFwd = far ? weights.farDensity(-ray.dirX, -ray.dirY, -ray.dirZ) : chance * ray.pdfOrigin;
+        origin.pdfFwd = far ? choice.farDensity(-ray.dirX, -ray.dirY, -ray.dirZ) : chance * ray.pdfOrigin;
         if (!(ray.pdfOrigin > 0 && ray.pdfDirection > 0)) {
             return 1;
         }
@@ -303,17 +304,17 @@ final class BdptIntegrator extends Integrator {
      */
     private double aimed(int k, boolean far, int target, double u1, double u2, LightRay ray) {
         LightTargets targets = weights.targets;
+        LightChoice around = weights.choice;
         if (far) {
             if (target >= 0) {
-                targets.aimAcross(target, weights.centreX, weights.centreY, weights.centreZ, weights.radius, u1, u2,
-                        ray);
+                targets.aimAcross(target, around.centreX, around.centreY, around.centreZ, around.radius, u1, u2, ray);
             }
             return targets.pdfAcross(ray.originX, ray.originY, ray.originZ, ray.dirX, ray.dirY, ray.dirZ,
                     ray.pdfOrigin);
         }
         if (target >= 0 && targets.aim(target, ray.originX, ray.originY, ray.originZ, u1, u2, ray)) {
             scene.lightsAndSky.leavingPdf(k, ray.originX, ray.originY, ray.originZ, ray.dirX, ray.dirY, ray.dirZ,
-                    weights.radius, ray);
+                    around.radius, ray);
         }
         return targets.pdf(ray.originX, ray.originY, ray.originZ, ray.dirX, ray.dirY, ray.dirZ, ray.pdfDirection);
     }

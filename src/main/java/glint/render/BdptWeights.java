@@ -1,6 +1,5 @@
 package glint.render;
 
-import glint.geometry.Primitives;
 import glint.shading.Bsdf;
 import glint.shading.LightRay;
 import glint.shading.LightSample;
@@ -11,16 +10,13 @@ import glint.shading.Rgb;
 import glint.shading.Surface;
 
 /**
- * What a bidirectional path is weighed by ({@link BdptIntegrator}): which light a path starts from
- * (chosen by power), the sphere around the scene that light from infinity crosses, the densities with
- * which either end reaches a vertex, and the multiple importance sampling weight of a strategy: the
- * power heuristic over every strategy that makes the same path, worked out as a chain of density
- * ratios along it (Veach 1997, 10.2; pbrt's BDPT computes it the same way). Next-event estimation (s = 1)
- * samples every light at every camera point, as the path integrator does, while a light subpath starts from
- * one light chosen by power: the light end of a path is denser under s = 1 by {@link #nextEventFactor}. A
- * strategy the integrator
- * has not got (a light point seen by the camera directly, s = t = 1; a light path ending on the lens,
- * t = 0) never counts. One per render thread.
+ * What a bidirectional path is weighed by ({@link BdptIntegrator}): the densities with which either end
+ * reaches a vertex, and the multiple importance sampling weight of a strategy: the power heuristic over
+ * every strategy that makes the same path, worked out as a chain of density ratios along it (Veach 1997,
+ * 10.2; pbrt's BDPT computes it the same way). Where light subpaths start, and how much denser next-event
+ * estimation makes a path's light end, is {@link LightChoice}'s. A strategy the integrator has not got (a
+ * light point seen by the camera directly, s = t = 1; a light path ending on the lens, t = 0) never
+ * counts. One per render thread.
  */
 final class BdptWeights {
 
@@ -32,8 +28,8 @@ final class BdptWeights {
      */
     static final double PAST_DELTA = 1;
 
-    /** The centre and radius of a sphere holding every bounded primitive and the camera. */
-    double centreX, centreY, centreZ, radius;
+    /** Which light a light subpath starts from, and the sphere around the scene. */
+    final LightChoice choice = new LightChoice();
 
     private RenderScene scene;
     private Lights lights;
@@ -41,8 +37,6 @@ final class BdptWeights {
     /** What light subpaths from a light with a position aim at ({@link LightTargets}). */
     LightTargets targets = LightTargets.none();
     private int width, height;
-    /** Per light of {@link RenderScene#lightsAndSky}: the chance it is chosen, and the sums of the chances. */
-    private double[] chance = new double[0], cumulative = new double[0];
     /** The strategy a test or study renders alone, and whether weighted; -1: every strategy. */
     private int onlyS = -1, onlyT = -1;
     private boolean weighted = true;
@@ -57,7 +51,6 @@ final class BdptWeights {
 
     private final LightRay leaving = new LightRay();
     private final Surface turned = new Surface();
-    private final double[] box = new double[6];
     private final double[] w = new double[3];
 
     /** Reads what the weights need of a scene being prepared for {@code integrator}. */
@@ -69,30 +62,7 @@ final class BdptWeights {
         onlyS = renderScene.strategyS;
         onlyT = renderScene.strategyT;
         weighted = renderScene.strategyWeighted;
-        bound(renderScene.primitives, renderScene.camera);
-        chances();
-    }
-
-    /**
-     * The width of a pixel of a width x height image at the scene's centre, as the camera sees it: the
-     * angle between the rays through two neighbouring pixels at the image's centre, times the centre's
-     * distance from the eye (half the scene's radius at the least, for a camera inside the scene).
-     */
-    double pixelWidthAtCentre(int width, int height) {
-        double[] ox = new double[2], oy = new double[2], oz = new double[2];
-        double[] dx = new double[2], dy = new double[2], dz = new double[2];
-        CameraModel camera = scene.camera;
-        camera.ray(width / 2.0, height / 2.0, 0.5, 0.5, width, height, ox, oy, oz, dx, dy, dz, 0);
-        camera.ray(width / 2.0 + 1, height / 2.0, 0.5, 0.5, width, height, ox, oy, oz, dx, dy, dz, 1);
-        double cos = dx[0] * dx[1] + dy[0] * dy[1] + dz[0] * dz[1];
-        double angle = Math.acos(Math.min(1, cos));
-        double ex = centreX - camera.eye().x(), ey = centreY - camera.eye().y(), ez = centreZ - camera.eye().z();
-        return angle * Math.max(Math.sqrt(ex * ex + ey * ey + ez * ez), radius / 2);
-    }
-
-    /** The radius of the sphere around every bounded primitive and the camera. */
-    double sceneRadius() {
-        return radius;
+        choice.prepare(renderScene);
     }
 
     /** Merging with {@code paths} light subpaths within {@code radius}; 0 paths: none. */
@@ -112,75 +82,6 @@ final class BdptWeights {
     void film(int frameWidth, int frameHeight) {
         width = frameWidth;
         height = frameHeight;
-    }
-
-    private void bound(Primitives primitives, CameraModel camera) {
-        double x0 = camera.eye().x(), y0 = camera.eye().y(), z0 = camera.eye().z();
-        double x1 = x0, y1 = y0, z1 = z0;
-        for (int p = 0; p < primitives.count(); p++) {
-            if (primitives.bounded(p)) {
-                primitives.bounds(p, box, 0);
-                x0 = Math.min(x0, box[0]);
-                y0 = Math.min(y0, box[1]);
-                z0 = Math.min(z0, box[2]);
-                x1 = Math.max(x1, box[3]);
-                y1 = Math.max(y1, box[4]);
-                z1 = Math.max(z1, box[5]);
-            }
-        }
-        centreX = (x0 + x1) / 2;
-        centreY = (y0 + y1) / 2;
-        centreZ = (z0 + z1) / 2;
-        double dx = x1 - x0, dy = y1 - y0, dz = z1 - z0;
-        radius = Math.max(1, Math.sqrt(dx * dx + dy * dy + dz * dz) / 2);
-    }
-
-    /** Each light's chance by its power; every light the same where the powers do not sum to a finite positive. */
-    private void chances() {
-        int n = lights.count();
-        if (chance.length != n) {
-            chance = new double[n];
-            cumulative = new double[n];
-        }
-        double total = 0;
-        for (int k = 0; k < n; k++) {
-            chance[k] = Math.max(0, lights.power(k, radius));
-            total += chance[k];
-        }
-        boolean even = !(total > 0 && total < Double.POSITIVE_INFINITY);
-        double sum = 0;
-        for (int k = 0; k < n; k++) {
-            chance[k] = even ? 1.0 / n : chance[k] / total;
-            sum += chance[k];
-            cumulative[k] = sum;
-        }
-    }
-
-    /** The light that uniform number u chooses, by power; -1 where the scene has none. */
-    int choose(double u) {
-        int n = cumulative.length;
-        if (n == 0) {
-            return -1;
-        }
-        double target = u * cumulative[n - 1];
-        int lo = 0, hi = n - 1;
-        while (lo < hi) {
-            int mid = (lo + hi) >>> 1;
-            if (cumulative[mid] > target) {
-                hi = mid;
-            } else {
-                lo = mid + 1;
-            }
-        }
-        while (chance[lo] == 0 && lo > 0) { // u at the very end of a run of lights that have no chance
-            lo--;
-        }
-        return lo;
-    }
-
-    /** The chance light k is chosen. */
-    double chance(int k) {
-        return chance[k];
     }
 
     /** Whether strategy (s, t) is rendered: all are, unless the scene asks for one alone. */
@@ -335,9 +236,9 @@ final class BdptWeights {
         switch (v.kind) {
             case BdptVertex.FAR:
                 Surface n = next.surface;
-                return targets.pdfAcross(n.px, n.py, n.pz, wx, wy, wz, 1 / (Math.PI * radius * radius));
+                return targets.pdfAcross(n.px, n.py, n.pz, wx, wy, wz, 1 / (Math.PI * choice.radius * choice.radius));
             case BdptVertex.LIGHT:
-                lights.leavingPdf(v.light, c.px, c.py, c.pz, wx, wy, wz, radius, leaving);
+                lights.leavingPdf(v.light, c.px, c.py, c.pz, wx, wy, wz, choice.radius, leaving);
                 return targets.pdf(c.px, c.py, c.pz, wx, wy, wz, leaving.pdfDirection);
             case BdptVertex.CAMERA:
                 return scene.camera.directionPdf(c.px, c.py, c.pz, wx, wy, wz, width, height);
@@ -349,7 +250,8 @@ final class BdptWeights {
 
     /** The density with which a light subpath from light vertex v reaches {@code to} first. */
     double pdfLight(BdptVertex v, BdptVertex to) {
-        if (v.kind == BdptVertex.FAR && !crossesDisc(to, v)) {
+        if (v.kind == BdptVertex.FAR
+                && !choice.crossesDisc(to.surface.px, to.surface.py, to.surface.pz, v.farX, v.farY, v.farZ)) {
             return 0;
         }
         direction(v, to);
@@ -381,33 +283,11 @@ final class BdptWeights {
     /** The density with which a light subpath starts at light vertex v: its light's chance times its point's. */
     double pdfLightOrigin(BdptVertex v) {
         if (v.kind == BdptVertex.FAR) {
-            return farDensity(v.farX, v.farY, v.farZ);
+            return choice.farDensity(v.farX, v.farY, v.farZ);
         }
         Surface a = v.surface;
-        lights.leavingPdf(v.light, a.px, a.py, a.pz, 0, 0, 1, radius, leaving);
-        return chance[v.light] * leaving.pdfOrigin;
-    }
-
-    /**
-     * The density per solid angle with which a light subpath starts at infinity towards unit direction d
-     * (from the scene towards the light): over every light at infinity, its chance times its density.
-     */
-    double farDensity(double dx, double dy, double dz) {
-        double sum = 0;
-        for (int k = 0, n = lights.countAtInfinity(); k < n; k++) {
-            int i = lights.atInfinity(k);
-            sum += chance[i] * lights.pdf(i, 0, 0, 0, dx, dy, dz);
-        }
-        return sum;
-    }
-
-    /** Whether light from far vertex v, leaving its disc across the scene's sphere, may reach point {@code to}. */
-    private boolean crossesDisc(BdptVertex to, BdptVertex v) {
-        Surface b = to.surface;
-        double qx = b.px - centreX, qy = b.py - centreY, qz = b.pz - centreZ;
-        double along = qx * v.farX + qy * v.farY + qz * v.farZ;
-        double across2 = qx * qx + qy * qy + qz * qz - along * along;
-        return along <= radius && across2 <= radius * radius;
+        lights.leavingPdf(v.light, a.px, a.py, a.pz, 0, 0, 1, choice.radius, leaving);
+        return choice.chance(v.light) * leaving.pdfOrigin;
     }
 
     /**
@@ -422,16 +302,16 @@ final class BdptWeights {
         if (lights.infinitelyFar(k)) {
             out.kind = BdptVertex.FAR;
             out.setFar(ls.dirX, ls.dirY, ls.dirZ);
-            out.pdfFwd = farDensity(ls.dirX, ls.dirY, ls.dirZ);
+            out.pdfFwd = choice.farDensity(ls.dirX, ls.dirY, ls.dirZ);
             return;
         }
         out.kind = BdptVertex.LIGHT;
         double ox = near ? s.nearX() : s.farX(), oy = near ? s.nearY() : s.farY(), oz = near ? s.nearZ() : s.farZ();
         out.setPoint(ox + ls.dirX * ls.distance, oy + ls.dirY * ls.distance, oz + ls.dirZ * ls.distance);
         Surface a = out.surface;
-        lights.leavingPdf(k, a.px, a.py, a.pz, -ls.dirX, -ls.dirY, -ls.dirZ, radius, leaving);
+        lights.leavingPdf(k, a.px, a.py, a.pz, -ls.dirX, -ls.dirY, -ls.dirZ, choice.radius, leaving);
         out.setNormal(leaving.normalX, leaving.normalY, leaving.normalZ);
-        out.pdfFwd = chance[k] * leaving.pdfOrigin;
+        out.pdfFwd = choice.chance(k) * leaving.pdfOrigin;
     }
 
     // ---------------------------------------------------------------- the weight
@@ -474,7 +354,7 @@ final class BdptWeights {
         }
         pt.delta = false;
         double sum = otherStrategies(s, t, camera, light, qs,
-                nextEventFactor(s == 0 ? pt : s == 1 ? sampledLight : light[0]));
+                choice.nextEventFactor(s == 0 ? pt : s == 1 ? sampledLight : light[0]));
         restore();
         pt.delta = ptDelta;
         if (qs != null) {
@@ -512,7 +392,7 @@ final class BdptWeights {
             backFromJoin(pt, ptMinus, qs, light, b - 1, true);
         }
         pt.delta = false;
-        double q = nextEventFactor(light[0]);
+        double q = choice.nextEventFactor(light[0]);
         double sum = otherStrategies(b, t, camera, light, qs, q);
         double merge = pt.pdfRev * eta;
         restore();
@@ -603,26 +483,6 @@ final class BdptWeights {
      */
     static boolean merges(BdptVertex v) {
         return v.kind == BdptVertex.SURFACE && v.diffuse && !v.delta;
-    }
-
-    /**
-     * How much denser next-event estimation, which samples every light at every camera point, makes the light
-     * end of a path than a light subpath does, which starts from a light chosen by power: 1 / its chance for a
-     * light's point (or a delta light's direction); for a direction to light at infinity, the sum of the
-     * lights' densities of that direction over the sum weighted by their chances.
-     */
-    double nextEventFactor(BdptVertex end) {
-        if (end.kind == BdptVertex.FAR && !end.deltaLight) {
-            double every = 0, chosen = 0;
-            for (int k = 0, n = lights.countAtInfinity(); k < n; k++) {
-                int i = lights.atInfinity(k);
-                double pdf = lights.pdf(i, 0, 0, 0, end.farX, end.farY, end.farZ);
-                every += pdf;
-                chosen += chance[i] * pdf;
-            }
-            return chosen > 0 ? every / chosen : 1;
-        }
-        return end.light >= 0 && chance[end.light] > 0 ? 1 / chance[end.light] : 1;
     }
 
     /**

@@ -76,8 +76,8 @@ final class TracerWorker {
     /** The first pass's merge radius for a width x height image of {@code scene}. */
     double firstMergeRadius(RenderScene scene, int width, int height) {
         bdpt.prepare(scene);
-        return BdptIntegrator.firstMergeRadius(bdpt.weights.pixelWidthAtCentre(width, height),
-                bdpt.weights.sceneRadius());
+        LightChoice choice = bdpt.weights.choice;
+        return BdptIntegrator.firstMergeRadius(choice.pixelWidthAtCentre(width, height), choice.radius);
     }
 
     /**
