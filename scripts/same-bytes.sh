@@ -4,6 +4,8 @@
 # twice, with 1 thread and 5 x 5 tiles and with 3 threads and 13 x 13 tiles, each compared with cmp.
 # The config's min_weight (0.01 shipped) prunes by the roulette, so paths that draw numbers are checked
 # too; SPP samples a pixel (default 4) number the samples of lights with a size.
+# INTEGRATORS (default whitted) names the integrators to check, e.g. INTEGRATORS="whitted path bdpt";
+# the path and bdpt integrators are checked under cook-torrance, the model they render with.
 # Usage, from anywhere:
 #   scripts/same-bytes.sh A.jar B.jar [WIDTH HEIGHT [SPP [DEPTH [CONFIG]]]]   (default 160 120 4 8 ./config.properties)
 # Prints a line a difference and a summary; exits 1 when any pair differs.
@@ -23,17 +25,21 @@ sed -e 's/^threads=.*/threads=3/' -e 's/^screen_divider=.*/screen_divider=13/' "
 same=0
 differ=0
 for scene in scenes/*.yaml scenes/bench/*.yaml src/test/resources/reference/*.yaml src/test/resources/reference-pt/*.yaml; do
-    for model in cook-torrance phong; do
-        flags="--scene $scene --integrator whitted --shading $model --width $w --height $h --spp $spp --depth $depth"
-        java -jar "$a" --config "$config" --threads 2 $flags --output "$out/a.pfm" > /dev/null 2>&1
-        for variant in one three; do
-            java -jar "$b" --config "$out/$variant.properties" $flags --output "$out/b.pfm" > /dev/null 2>&1
-            if cmp -s "$out/a.pfm" "$out/b.pfm"; then
-                same=$((same + 1))
-            else
-                differ=$((differ + 1))
-                echo "differ: $scene $model ($variant)"
-            fi
+    for integrator in ${INTEGRATORS:-whitted}; do
+        models="cook-torrance phong"
+        [ "$integrator" = whitted ] || models=cook-torrance
+        for model in $models; do
+            flags="--scene $scene --integrator $integrator --shading $model --width $w --height $h --spp $spp --depth $depth"
+            java -jar "$a" --config "$config" --threads 2 $flags --output "$out/a.pfm" > /dev/null 2>&1
+            for variant in one three; do
+                java -jar "$b" --config "$out/$variant.properties" $flags --output "$out/b.pfm" > /dev/null 2>&1
+                if cmp -s "$out/a.pfm" "$out/b.pfm"; then
+                    same=$((same + 1))
+                else
+                    differ=$((differ + 1))
+                    echo "differ: $scene $integrator $model ($variant)"
+                fi
+            done
         done
     done
 done
