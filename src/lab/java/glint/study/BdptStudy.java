@@ -185,14 +185,17 @@ public final class BdptStudy {
     static final int FALL_FRAMES = 16;
 
     /**
-     * bdpt's and path's relMSE at 16 and 256 samples against bdpt's own image at 4096, at 100 x 75, over
-     * 16 x {@link #FALL_FRAMES} and {@link #FALL_FRAMES} frames (seeds): how far the mean and the median fall.
+     * relMSE at 16 and 256 samples at 100 x 75, over 16 x {@link #FALL_FRAMES} and {@link #FALL_FRAMES} frames
+     * (seeds): bdpt's and the path's against bdpt's image at 4096, bdpt's with joins only against its own
+     * at 4096 (what merging adds); how far the mean and the median fall.
      */
     static String fallsWithSamples(String name) {
         Scene scene = load(Path.of("scenes", name + ".yaml"));
-        FrameBuffer own = render(scene, Method.BDPT, 100, 75, 4096, 0).frame;
+        FrameBuffer bdpt = render(scene, Method.BDPT, 100, 75, 4096, 0).frame;
+        FrameBuffer joins = render(scene, Method.JOINS_ONLY, 100, 75, 4096, 0).frame;
         StringBuilder out = new StringBuilder();
-        for (Method m : List.of(Method.BDPT, Method.PATH)) {
+        for (Method m : List.of(Method.BDPT, Method.JOINS_ONLY, Method.PATH)) {
+            FrameBuffer own = m == Method.JOINS_ONLY ? joins : bdpt;
             double[] at16 = new double[16 * FALL_FRAMES], at256 = new double[FALL_FRAMES];
             for (int f = 0; f < at16.length; f++) {
                 at16[f] = RelativeMse.of(render(scene, m, 100, 75, 16, f + 1).frame, own);
@@ -200,9 +203,9 @@ public final class BdptStudy {
             for (int f = 0; f < at256.length; f++) {
                 at256[f] = RelativeMse.of(render(scene, m, 100, 75, 256, f + 1).frame, own);
             }
-            out.append(String.format("%s at 100 x 75 against bdpt at 4096, %s, %d frames at 16 samples, %d at 256: "
+            out.append(String.format("%s at 100 x 75 against %s at 4096, %s, %d frames at 16 samples, %d at 256: "
                             + "relMSE at 16 mean %.2e, median %.2e, largest %.2e; at 256 %s; mean falls %.1fx, median %.1fx%n",
-                    name, m.label, at16.length, at256.length, mean(at16), median(at16), max(at16), list(at256),
+                    name, m == Method.JOINS_ONLY ? m.label : "bdpt", m.label, at16.length, at256.length, mean(at16), median(at16), max(at16), list(at256),
                     mean(at16) / mean(at256), median(at16) / median(at256)));
         }
         return out.toString();
