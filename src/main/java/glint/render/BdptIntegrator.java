@@ -304,17 +304,17 @@ final class BdptIntegrator extends Integrator {
      */
     private double aimed(int k, boolean far, int target, double u1, double u2, LightRay ray) {
         LightTargets targets = weights.targets;
-        LightChoice around = weights.choice;
+        LightChoice choice = weights.choice;
         if (far) {
             if (target >= 0) {
-                targets.aimAcross(target, around.centreX, around.centreY, around.centreZ, around.radius, u1, u2, ray);
+                targets.aimAcross(target, choice.centreX, choice.centreY, choice.centreZ, choice.radius, u1, u2, ray);
             }
             return targets.pdfAcross(ray.originX, ray.originY, ray.originZ, ray.dirX, ray.dirY, ray.dirZ,
                     ray.pdfOrigin);
         }
         if (target >= 0 && targets.aim(target, ray.originX, ray.originY, ray.originZ, u1, u2, ray)) {
             scene.lightsAndSky.leavingPdf(k, ray.originX, ray.originY, ray.originZ, ray.dirX, ray.dirY, ray.dirZ,
-                    around.radius, ray);
+                    choice.radius, ray);
         }
         return targets.pdf(ray.originX, ray.originY, ray.originZ, ray.dirX, ray.dirY, ray.dirZ, ray.pdfDirection);
     }
