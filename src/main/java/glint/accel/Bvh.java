@@ -173,12 +173,15 @@ public final class Bvh implements Aggregate {
     private double boxEntry(int node, double ox, double oy, double oz, double ix, double iy, double iz) {
         double[] box = nodeBox;
         int b = 6 * node;
+        double tx0 = (box[b] - ox) * ix, tx1 = (box[b + 3] - ox) * ix;
+        double ty0 = (box[b + 1] - oy) * iy, ty1 = (box[b + 4] - oy) * iy;
+        double tz0 = (box[b + 2] - oz) * iz, tz1 = (box[b + 5] - oz) * iz;
         // each axis's near plane is the one the direction's sign points away from, so no min or max picks between
-        // the two; they differ from the picked ones at most in a zero's sign, which no comparison sees
-        int nx = ix < 0 ? 3 : 0, ny = iy < 0 ? 4 : 1, nz = iz < 0 ? 5 : 2;
-        double nearX = (box[b + nx] - ox) * ix, farX = (box[b + 3 - nx] - ox) * ix;
-        double nearY = (box[b + ny] - oy) * iy, farY = (box[b + 5 - ny] - oy) * iy;
-        double nearZ = (box[b + nz] - oz) * iz, farZ = (box[b + 7 - nz] - oz) * iz;
+        // the two (they differ from the picked ones at most in a zero's sign, which no comparison sees)
+        boolean bx = ix < 0, by = iy < 0, bz = iz < 0;
+        double nearX = bx ? tx1 : tx0, farX = bx ? tx0 : tx1;
+        double nearY = by ? ty1 : ty0, farY = by ? ty0 : ty1;
+        double nearZ = bz ? tz1 : tz0, farZ = bz ? tz0 : tz1;
         double near = Math.max(Math.max(nearX, nearY), Math.max(nearZ, 0));
         double far = Math.min(Math.min(farX, farY), farZ);
         return near <= far * (1 + GRAZE) ? near : Intersect.MISS;
