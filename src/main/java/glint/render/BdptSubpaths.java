@@ -125,9 +125,10 @@ final class BdptSubpaths {
      * Extends the subpath {@code path}, of {@code n} vertices, by a random walk from its last along the ray
      * from o along d, chosen with density {@code pdfDirection} (of the point of a far light's disc, for the
      * ray leaving it), with throughput beta, to at most {@code most} vertices; returns the count. The
-     * first hit is already known where {@code known} is 0 (none) or 1 (in {@link #hit}); -1: to be found. A camera subpath that escapes ends at
-     * a {@link BdptVertex#FAR} vertex where light at infinity may meet it; one that meets a light's body
-     * ends there. Each vertex left records the density of the walk the other way at the vertex before it.
+     * first hit is already known where {@code known} is 0 (none) or 1 (in {@link #hit}); -1: to be found.
+     * A camera subpath that escapes ends at a {@link BdptVertex#FAR} vertex where light at infinity may
+     * meet it; one that meets a light's body ends there. Each vertex left records the density of the
+     * walk the other way at the vertex before it.
      */
     private int walk(BdptVertex[] path, int n, int most, double ox, double oy, double oz, double dx, double dy,
                      double dz, double pdfDirection, double betaR, double betaG, double betaB, boolean fromLight,
