@@ -205,8 +205,8 @@ public final class BdptStudy {
             }
             out.append(String.format("%s at 100 x 75 against %s at 4096, %s, %d frames at 16 samples, %d at 256: "
                             + "relMSE at 16 mean %.2e, median %.2e, largest %.2e; at 256 %s; mean falls %.1fx, median %.1fx%n",
-                    name, m == Method.JOINS_ONLY ? m.label : "bdpt", m.label, at16.length, at256.length, mean(at16), median(at16), max(at16), list(at256),
-                    mean(at16) / mean(at256), median(at16) / median(at256)));
+                    name, m == Method.JOINS_ONLY ? m.label : "bdpt", m.label, at16.length, at256.length, mean(at16),
+                    median(at16), max(at16), list(at256), mean(at16) / mean(at256), median(at16) / median(at256)));
         }
         return out.toString();
     }

@@ -199,8 +199,8 @@ final class BdptIntegrator extends Integrator {
         eye.delta = false;
         eye.connectible = true;
         double pdfDirection = scene.camera.directionPdf(ox, oy, oz, dx, dy, dz, width, height);
-        cameraVertices = subpaths.cameraSubpath(camera, hitsLeft + 2, ox, oy, oz, dx, dy, dz, pdfDirection, primitive,
-                t);
+        cameraVertices = subpaths.cameraSubpath(camera, hitsLeft + 2, ox, oy, oz, dx, dy, dz, pdfDirection,
+                primitive, t);
         lightVertices = traced.loadPathNumber(pixel % traced.paths(), light);
         double r = 0, g = 0, b = 0;
         for (int tv = 2; tv <= cameraVertices; tv++) { // tv = 1, light tracing, is the light subpath's own
